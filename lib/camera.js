@@ -1,0 +1,73 @@
+/**
+ * The eye and the image plane. The camera sits at `position` looking toward −z,
+ * turned right by `yaw` (H) and up by `pitch` (V), all angles in degrees;
+ * `fov` is the vertical field of view. Pixel (0, 0) is the top-left one, and
+ * each ray passes through its pixel's centre.
+ */
+import { toVec3, vec3, normalize } from './vec3.js';
+import { finiteNumber, numberInRange, positiveInteger } from './check.js';
+import { Ray } from './ray.js';
+
+const DEG = Math.PI / 180;
+
+export class Camera {
+  /**
+   * @param {object} options
+   * @param {number} options.width image width in pixels
+   * @param {number} options.height image height in pixels
+   * @param {number} [options.fov=30] vertical field of view, degrees, in (0, 180)
+   * @param {number[]|{x,y,z}} [options.position=[0,0,0]] the eye
+   * @param {number} [options.yaw=0] turn right, degrees
+   * @param {number} [options.pitch=0] look up, degrees, −90 to 90
+   */
+  constructor({ width, height, fov = 30, position = [0, 0, 0], yaw = 0, pitch = 0 } = {}) {
+    this.width = positiveInteger(width, 'width');
+    this.height = positiveInteger(height, 'height');
+    finiteNumber(fov, 'fov');
+    if (!(fov > 0 && fov < 180)) throw new RangeError(`fov must be between 0 and 180 degrees (not included), got ${fov}`);
+    this.fov = fov;
+    this.position = toVec3(position, 'position');
+    this.yaw = finiteNumber(yaw, 'yaw');
+    this.pitch = numberInRange(pitch, 'pitch', -90, 90);
+    this.#setBasis();
+  }
+
+  /** right, up and forward unit vectors, and the image plane's half-size at distance 1. */
+  #setBasis() {
+    const cy = Math.cos(this.yaw * DEG), sy = Math.sin(this.yaw * DEG);
+    const cp = Math.cos(this.pitch * DEG), sp = Math.sin(this.pitch * DEG);
+    this.right = vec3(cy, 0, sy);
+    this.up = vec3(-sy * sp, cp, cy * sp);
+    this.forward = vec3(sy * cp, sp, -cy * cp);
+    this.halfHeight = Math.tan((this.fov * DEG) / 2);
+    this.halfWidth = (this.halfHeight * this.width) / this.height;
+  }
+
+  /** Writes the unit direction of the ray through pixel (x, y) into `out`. */
+  directionAt(x, y, out = vec3()) {
+    const sx = (2 * (x + 0.5) / this.width - 1) * this.halfWidth;
+    const sy = (1 - 2 * (y + 0.5) / this.height) * this.halfHeight;
+    const r = this.right, u = this.up, f = this.forward;
+    out.x = sx * r.x + sy * u.x + f.x;
+    out.y = sx * r.y + sy * u.y + f.y;
+    out.z = sx * r.z + sy * u.z + f.z;
+    return normalize(out, out);
+  }
+
+  /**
+   * The primary ray through pixel (x, y) and its angles: `h` = atan2(dx, −dz)
+   * (positive to the right), `v` = asin(dy) (positive up), in degrees.
+   */
+  primaryRay(x, y) {
+    finiteNumber(x, 'x');
+    finiteNumber(y, 'y');
+    const ray = new Ray(this.position);
+    this.directionAt(x, y, ray.direction); // exactly the renderer's direction, bit for bit
+    return { ray, ...angles(ray.direction) };
+  }
+}
+
+/** The horizontal and vertical angles (degrees) of a unit direction. */
+export function angles(d) {
+  return { h: Math.atan2(d.x, -d.z) / DEG, v: Math.asin(Math.max(-1, Math.min(1, d.y))) / DEG };
+}

@@ -1,0 +1,97 @@
+/**
+ * Colours: `[r, g, b]` in 0–1 (values above 1 are allowed for lights), or a
+ * CSS-style string: '#ff5160', '#f56', 'rgb(255, 81, 96)' or a colour name.
+ */
+import { show } from './check.js';
+
+const NAMES = {
+  black: '#000000', white: '#ffffff', gray: '#808080', grey: '#808080',
+  silver: '#c0c0c0', red: '#ff0000', maroon: '#800000', orange: '#ffa500',
+  yellow: '#ffff00', gold: '#ffd700', green: '#008000', lime: '#00ff00',
+  olive: '#808000', teal: '#008080', cyan: '#00ffff', aqua: '#00ffff',
+  blue: '#0000ff', navy: '#000080', skyblue: '#87ceeb', purple: '#800080',
+  violet: '#ee82ee', magenta: '#ff00ff', fuchsia: '#ff00ff', pink: '#ffc0cb',
+  hotpink: '#ff69b4', brown: '#a52a2a', salmon: '#fa8072', coral: '#ff7f50',
+};
+
+/**
+ * `[r, g, b]` (0–1 floats) from an array or a CSS-style string, else a
+ * TypeError/RangeError naming `field`. A single number n means grey `[n, n, n]`.
+ */
+export function toColor(value, field = 'color') {
+  if (typeof value === 'number') value = [value, value, value];
+  if (Array.isArray(value) || ArrayBuffer.isView(value)) return checkArray(value, field);
+  if (typeof value === 'string') return parseString(value.trim().toLowerCase(), field);
+  throw new TypeError(`${field} must be [r, g, b] or a colour like '#ff5160', got ${show(value)}`);
+}
+
+function checkArray(value, field) {
+  if (value.length !== 3) throw new TypeError(`${field} must have 3 numbers [r, g, b], got ${show(value)}`);
+  const rgb = [0.5, 0.5, 0.5]; // a double array from the start: one shape for every colour
+  Array.from(value).forEach((c, i) => {
+    if (typeof c !== 'number' || !Number.isFinite(c)) {
+      throw new TypeError(`${field}[${i}] must be a finite number, got ${show(c)}`);
+    }
+    if (c < 0) throw new RangeError(`${field}[${i}] must not be negative, got ${c}`);
+    rgb[i] = c;
+  });
+  return rgb;
+}
+
+function parseString(text, field) {
+  if (NAMES[text]) text = NAMES[text];
+  let m = /^#([0-9a-f]{3})$/.exec(text);
+  if (m) return checkArray([...m[1]].map((h) => parseInt(h + h, 16) / 255), field);
+  m = /^#([0-9a-f]{6})$/.exec(text);
+  if (m) return checkArray([0, 2, 4].map((i) => parseInt(m[1].slice(i, i + 2), 16) / 255), field);
+  m = /^rgb\(\s*(\d+)\s*,\s*(\d+)\s*,\s*(\d+)\s*\)$/.exec(text);
+  if (m && m.slice(1).every((c) => Number(c) <= 255)) return checkArray(m.slice(1).map((c) => Number(c) / 255), field);
+  throw new TypeError(`${field} must be a colour like '#ff5160', 'rgb(255, 81, 96)' or 'pink', got ${show(text)}`);
+}
+
+/** '#rrggbb' for 0–255 channel values. */
+export function toHex([r, g, b]) {
+  return '#' + [r, g, b].map((c) => Math.round(c).toString(16).padStart(2, '0')).join('');
+}
+
+/** '#rrggbb' for 0–1 channel values (clamped). */
+export function colorToHex(rgb) {
+  return toHex(rgb.map((c) => Math.min(1, Math.max(0, c)) * 255));
+}
+
+/**
+ * The name of the nearest simple colour for 0–255 channel values, by hue,
+ * saturation and lightness: black, white, gray, red, pink, orange, brown,
+ * yellow, green, cyan, blue or purple. A light red (lightness ≥ 55 %) and a
+ * light magenta are "pink" — the lesson's pink sphere, [1, 0.32, 0.36], is one.
+ */
+export function colorName([r, g, b]) {
+  const { h, s, l } = rgbToHsl(r / 255, g / 255, b / 255);
+  if (l < 0.1) return 'black';
+  if (l > 0.93) return 'white';
+  if (s < 0.18 || (l < 0.2 && s < 0.35)) return l > 0.8 ? 'white' : 'gray';
+  if (h < 15 || h >= 345) return l >= 0.55 ? 'pink' : 'red';
+  if (h < 45) return l < 0.4 ? 'brown' : 'orange';
+  if (h < 70) return l < 0.3 ? 'brown' : 'yellow';
+  if (h < 165) return 'green';
+  if (h < 200) return 'cyan';
+  if (h < 260) return 'blue';
+  if (h < 290) return 'purple';
+  return l >= 0.45 ? 'pink' : 'purple';
+}
+
+/** Hue in degrees [0, 360), saturation and lightness in 0–1. */
+export function rgbToHsl(r, g, b) {
+  const max = Math.max(r, g, b), min = Math.min(r, g, b);
+  const l = (max + min) / 2;
+  const d = max - min;
+  if (d === 0) return { h: 0, s: 0, l };
+  const s = d / (1 - Math.abs(2 * l - 1));
+  let h;
+  if (max === r) h = ((g - b) / d) % 6;
+  else if (max === g) h = (b - r) / d + 2;
+  else h = (r - g) / d + 4;
+  h *= 60;
+  if (h < 0) h += 360;
+  return { h, s, l };
+}

@@ -1,0 +1,33 @@
+/**
+ * The full record of one pixel, built by the same functions the renderer
+ * uses: its ray and angles, both intersection routes for every sphere, the
+ * hit and how each light coloured it, and the pixel's final colour.
+ */
+import { intersectQuadratic, intersectGeometric } from './shapes/sphere.js';
+import { trace } from './trace.js';
+import { writePixel } from './render.js';
+import { pixelCoordinate } from './check.js';
+
+const _bytes = new Uint8ClampedArray(4);
+
+/**
+ * Everything about pixel (x, y):
+ * `{ x, y, h, v, ray, tests, hit, color }` — `tests` one entry per sphere
+ * `{ sphere, index, quadratic, geometric }`; `hit` the nearest hit record or
+ * null; `color` `[r, g, b]` bytes, identical to `render`'s pixel.
+ */
+export function inspectPixel(scene, camera, x, y) {
+  pixelCoordinate(x, 'x', camera.width);
+  pixelCoordinate(y, 'y', camera.height);
+  const { ray, h, v } = camera.primaryRay(x, y);
+  const tests = scene.spheres.map((sphere) => ({
+    sphere,
+    index: scene.objects.indexOf(sphere),
+    quadratic: intersectQuadratic(ray, sphere),
+    geometric: intersectGeometric(ray, sphere),
+  }));
+  const steps = {};
+  const color = trace(scene, ray, [0, 0, 0], steps);
+  writePixel(_bytes, 0, color);
+  return { x, y, h, v, ray, tests, hit: steps.hit, light: color, color: [_bytes[0], _bytes[1], _bytes[2]] };
+}

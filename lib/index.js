@@ -1,0 +1,18 @@
+/**
+ * Raytracing Sketchbook: the public API of the tracing library.
+ * Pure ES modules; runs in Node, the browser and Web Workers.
+ */
+export { Ray } from './ray.js';
+export { Camera, angles } from './camera.js';
+export { Scene } from './scene.js';
+export { Material } from './material.js';
+export { PointLight } from './lights.js';
+export { Sphere, intersectQuadratic, intersectGeometric, EPSILON } from './shapes/sphere.js';
+export { Plane } from './shapes/plane.js';
+export { Box } from './shapes/box.js';
+export { trace, nearestHit } from './trace.js';
+export { render, renderPixel, writePixel } from './render.js';
+export { inspectPixel } from './explain.js';
+export { toColor, toHex, colorToHex, colorName } from './color.js';
+export { classScene } from './scenes.js';
+export * as vec3 from './vec3.js';

@@ -1,0 +1,43 @@
+/**
+ * Lights. A point light is a position and a colour; an emissive object (a
+ * sphere whose material has an emission) is a light too, at its centre.
+ */
+import { toVec3, vec3 } from './vec3.js';
+import { toColor } from './color.js';
+import { finiteNumber } from './check.js';
+
+export class PointLight {
+  /**
+   * @param {number[]|{x,y,z}} position where the light is
+   * @param {number[]|string} [color=[1,1,1]] its colour
+   * @param {number} [intensity=1] a multiplier, ≥ 0
+   */
+  constructor(position, color = [1, 1, 1], intensity = 1) {
+    this.position = toVec3(position, 'position');
+    finiteNumber(intensity, 'intensity');
+    if (intensity < 0) throw new RangeError(`intensity must not be negative, got ${intensity}`);
+    this.color = toColor(color, 'color');
+    this.intensity = intensity;
+    /** What it gives off: colour × intensity. */
+    this.emission = this.color.map((c) => c * intensity);
+    this.name = '';
+  }
+}
+
+/**
+ * The scene's light sources as `{ position, emission, object }`: point lights
+ * (object null) and emissive objects (their centre, or for other shapes their
+ * middle; object is the shape itself, which a shadow ray may not block).
+ */
+export function lightSource(item) {
+  if (item instanceof PointLight) return { position: item.position, emission: item.emission, object: null, source: item };
+  const position = item.center ?? middle(item);
+  return { position, emission: item.material.emission, object: item, source: item };
+}
+
+function middle(item) {
+  if (item.min && item.max) {
+    return vec3((item.min.x + item.max.x) / 2, (item.min.y + item.max.y) / 2, (item.min.z + item.max.z) / 2);
+  }
+  return item.point ?? vec3();
+}

@@ -1,0 +1,24 @@
+/**
+ * A ray R(t) = Ro + Rd·t, t > 0, with Rd normalised (the lesson's slide 2).
+ */
+import { toVec3, normalize, length, scaleAndAdd, vec3 } from './vec3.js';
+
+export class Ray {
+  /**
+   * @param {number[]|{x,y,z}} origin Ro
+   * @param {number[]|{x,y,z}} direction Rd, normalised here; must not be zero-length
+   */
+  constructor(origin = [0, 0, 0], direction = [0, 0, -1]) {
+    this.origin = toVec3(origin, 'origin');
+    this.direction = toVec3(direction, 'direction');
+    if (!(length(this.direction) > 0)) {
+      throw new RangeError('direction must not be zero-length, got [0, 0, 0]');
+    }
+    normalize(this.direction, this.direction);
+  }
+
+  /** The point R(t), written into `out`. */
+  at(t, out = vec3()) {
+    return scaleAndAdd(out, this.origin, this.direction, t);
+  }
+}

@@ -1,0 +1,60 @@
+/**
+ * A scene: shapes, lights, a background colour and the switches of the
+ * lesson's lighting (ambient term, shadows, shadow-ray offset, mirror depth).
+ */
+import { toColor } from './color.js';
+import { numberInRange, bool, show } from './check.js';
+import { Sphere } from './shapes/sphere.js';
+import { Plane } from './shapes/plane.js';
+import { Box } from './shapes/box.js';
+import { PointLight, lightSource } from './lights.js';
+
+export class Scene {
+  /**
+   * @param {object} [options]
+   * @param {number[]|string} [options.background=[0,0,0]] colour of a ray that hits nothing
+   * @param {number} [options.ambient=0] light that reaches everything, 0–1
+   * @param {boolean} [options.shadows=true] cast shadow rays toward each light
+   * @param {number} [options.bias=1e-4] how far a shadow or mirror ray starts off the surface (0 shows "shadow acne")
+   * @param {number} [options.maxDepth=5] how many mirror/glass bounces a ray may take, 0–16
+   * @param {boolean} [options.specular=true] draw highlights of materials with `specular` > 0
+   */
+  constructor(options = {}) {
+    const { background = [0, 0, 0], ambient = 0, shadows = true, bias = 1e-4, maxDepth = 5, specular = true } = options;
+    this.background = toColor(background, 'background');
+    this.ambient = numberInRange(ambient, 'ambient', 0, 1);
+    this.shadows = bool(shadows, 'shadows');
+    this.bias = numberInRange(bias, 'bias', 0, 1);
+    this.maxDepth = numberInRange(maxDepth, 'maxDepth', 0, 16);
+    this.specular = bool(specular, 'specular');
+    /** Shapes a ray can hit, in the order added. */
+    this.objects = [];
+    /** Light sources `{ position, emission, object, source }`, kept in step with `objects`. */
+    this.lights = [];
+  }
+
+  /** Adds a Sphere, Plane, Box or PointLight; returns the scene (chainable). */
+  add(item) {
+    if (item instanceof PointLight) {
+      this.lights.push(lightSource(item));
+    } else if (item instanceof Sphere || item instanceof Plane || item instanceof Box) {
+      this.objects.push(item);
+      if (item.material.isEmissive) this.lights.push(lightSource(item));
+    } else {
+      throw new TypeError(`scene.add takes a Sphere, Plane, Box or PointLight, got ${show(item)}`);
+    }
+    return this;
+  }
+
+  /** Removes a shape or light added before; returns the scene. */
+  remove(item) {
+    this.objects = this.objects.filter((o) => o !== item);
+    this.lights = this.lights.filter((l) => l.source !== item);
+    return this;
+  }
+
+  /** Every sphere, in order (the inspector tests each of them). */
+  get spheres() {
+    return this.objects.filter((o) => o instanceof Sphere);
+  }
+}

@@ -1,0 +1,25 @@
+/**
+ * Ready-made scenes for sketches, tests and the benchmark.
+ */
+import { Scene } from './scene.js';
+import { Sphere } from './shapes/sphere.js';
+
+/**
+ * The class's example scene, from the original JavaScript library: a huge
+ * grey ground sphere, four coloured spheres (the big one is the PINK one of
+ * the activity) and two emissive spheres as lights, on a white background.
+ * Options: `full` adds the original's mirror and glass (reflection,
+ * transparency) for the full-shading benchmark.
+ */
+export function classScene({ full = false } = {}) {
+  const scene = new Scene({ background: [2, 2, 2] });
+  const named = (sphere, name) => Object.assign(sphere, { name });
+  scene.add(named(new Sphere([0, -10004, -20], 10000, { color: [0.2, 0.2, 0.2] }), 'ground'));
+  scene.add(named(new Sphere([0, 0, -20], 4, { color: [1, 0.32, 0.36], ...(full && { reflection: 0.5, transparency: 0.5 }) }), 'pink'));
+  scene.add(named(new Sphere([5, -1, -15], 2, { color: [0.9, 0.76, 0.46], ...(full && { reflection: 0.5 }) }), 'yellow'));
+  scene.add(named(new Sphere([5, 0, -25], 3, { color: [0.65, 0.77, 0.97], ...(full && { reflection: 0.5 }) }), 'blue'));
+  scene.add(named(new Sphere([-5.5, 0, -15], 3, { color: [0.9, 0.9, 0.9], ...(full && { reflection: 0.5, specular: 0.5 }) }), 'white'));
+  scene.add(named(new Sphere([0, 20, -30], 3, { color: [0, 0, 0], emission: 1.2 }), 'light 1'));
+  scene.add(named(new Sphere([0, 10, 10], 3, { color: [0, 0, 0], emission: 1 }), 'light 2'));
+  return scene;
+}

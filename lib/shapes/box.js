@@ -1,0 +1,59 @@
+/**
+ * An axis-aligned box between corners `min` and `max` (the slab method).
+ */
+import { toVec3, vec3, set } from '../vec3.js';
+import { Material } from '../material.js';
+import { EPSILON } from './sphere.js';
+
+const AXES = ['x', 'y', 'z'];
+
+export class Box {
+  /**
+   * @param {number[]|{x,y,z}} min the corner with the smallest x, y, z
+   * @param {number[]|{x,y,z}} max the opposite corner; larger on every axis
+   * @param {Material|object} [material]
+   */
+  constructor(min, max, material) {
+    this.min = toVec3(min, 'min');
+    this.max = toVec3(max, 'max');
+    for (const a of AXES) {
+      if (!(this.max[a] > this.min[a])) {
+        throw new RangeError(`max.${a} must be greater than min.${a}, got ${this.max[a]} ≤ ${this.min[a]}`);
+      }
+    }
+    this.material = Material.from(material);
+    this.name = '';
+  }
+
+  /** Smallest t > EPSILON where the ray meets the box, or Infinity. */
+  hit(ray) {
+    let tNear = -Infinity, tFar = Infinity;
+    for (let i = 0; i < 3; i++) {
+      const a = AXES[i];
+      const o = ray.origin[a], d = ray.direction[a];
+      if (d === 0) {
+        if (o < this.min[a] || o > this.max[a]) return Infinity; // parallel and outside this slab
+        continue;
+      }
+      let t1 = (this.min[a] - o) / d, t2 = (this.max[a] - o) / d;
+      if (t1 > t2) { const s = t1; t1 = t2; t2 = s; }
+      if (t1 > tNear) tNear = t1;
+      if (t2 < tFar) tFar = t2;
+      if (tNear > tFar) return Infinity;
+    }
+    if (tNear > EPSILON) return tNear;
+    return tFar > EPSILON ? tFar : Infinity; // the ray starts inside
+  }
+
+  /** The outward normal of the face nearest to `point`. */
+  normalAt(point, out = vec3()) {
+    let best = Infinity;
+    set(out, 0, 1, 0);
+    for (const a of AXES) {
+      const toMin = Math.abs(point[a] - this.min[a]), toMax = Math.abs(point[a] - this.max[a]);
+      if (toMin < best) { best = toMin; set(out, 0, 0, 0); out[a] = -1; }
+      if (toMax < best) { best = toMax; set(out, 0, 0, 0); out[a] = 1; }
+    }
+    return out;
+  }
+}

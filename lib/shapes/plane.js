@@ -1,0 +1,36 @@
+/**
+ * An infinite plane through `point` with unit `normal` (a floor, a wall).
+ */
+import { toVec3, vec3, copy, length, normalize } from '../vec3.js';
+import { Material } from '../material.js';
+import { EPSILON } from './sphere.js';
+
+export class Plane {
+  /**
+   * @param {number[]|{x,y,z}} point any point on the plane
+   * @param {number[]|{x,y,z}} normal the side it faces; normalised here, not zero-length
+   * @param {Material|object} [material]
+   */
+  constructor(point = [0, 0, 0], normal = [0, 1, 0], material) {
+    this.point = toVec3(point, 'point');
+    this.normal = toVec3(normal, 'normal');
+    if (!(length(this.normal) > 0)) throw new RangeError('normal must not be zero-length, got [0, 0, 0]');
+    normalize(this.normal, this.normal);
+    this.material = Material.from(material);
+    this.name = '';
+  }
+
+  /** t where the ray meets the plane (t > EPSILON), or Infinity; a ray along the plane misses. */
+  hit(ray) {
+    const n = this.normal, d = ray.direction, o = ray.origin, p = this.point;
+    const denom = n.x * d.x + n.y * d.y + n.z * d.z;
+    if (Math.abs(denom) < 1e-12) return Infinity;
+    const t = ((p.x - o.x) * n.x + (p.y - o.y) * n.y + (p.z - o.z) * n.z) / denom;
+    return t > EPSILON ? t : Infinity;
+  }
+
+  /** The plane's normal (the same everywhere). */
+  normalAt(point, out = vec3()) {
+    return copy(out, this.normal);
+  }
+}

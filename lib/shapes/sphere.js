@@ -1,0 +1,123 @@
+/**
+ * A sphere, and the lesson's two ways to intersect a ray with it:
+ * the quadratic (A, B, C, discriminant) and the geometric route (L, tca, d², thc).
+ */
+import { toVec3, vec3, sub, normalize } from '../vec3.js';
+import { finiteNumber } from '../check.js';
+import { Material } from '../material.js';
+
+/** Hits closer than this are the surface the ray starts on, not a new hit. */
+export const EPSILON = 1e-6;
+
+/** r² − d² (or discriminant / 4A) this small, relative to r², counts as tangent. */
+const TANGENT = 1e-12;
+
+export class Sphere {
+  /**
+   * @param {number[]|{x,y,z}} center Sc
+   * @param {number} radius Sr, > 0
+   * @param {Material|object} [material] a Material or its options
+   */
+  constructor(center, radius, material) {
+    this.center = toVec3(center, 'center');
+    finiteNumber(radius, 'radius');
+    if (radius <= 0) throw new RangeError(`radius must be greater than 0, got ${radius}`);
+    this.radius = radius;
+    this.material = Material.from(material);
+    this.name = '';
+  }
+
+  /**
+   * Smallest t > EPSILON where the ray meets the sphere, or Infinity: the
+   * geometric route of `intersectGeometric` in numbers only, with no record
+   * written, because the renderer calls it for every ray and every sphere.
+   */
+  hit(ray) {
+    const o = ray.origin, d = ray.direction, c = this.center, r2 = this.radius * this.radius;
+    const Lx = c.x - o.x, Ly = c.y - o.y, Lz = c.z - o.z;
+    const tca = Lx * d.x + Ly * d.y + Lz * d.z;
+    const d2 = Lx * Lx + Ly * Ly + Lz * Lz - tca * tca;
+    const gap = r2 - d2;
+    if (gap < -TANGENT * r2) return Infinity; // d > r: a miss
+    const thc = gap <= TANGENT * r2 ? 0 : Math.sqrt(gap);
+    if (tca - thc > EPSILON) return tca - thc;
+    return tca + thc > EPSILON ? tca + thc : Infinity;
+  }
+
+  /** The outward unit normal at a surface point. */
+  normalAt(point, out = vec3()) {
+    return normalize(out, sub(out, point, this.center));
+  }
+}
+
+/**
+ * The quadratic route: At² + Bt + C = 0 (slide "An implicit form describing a
+ * sphere"). Writes `{ A, B, C, discriminant, roots, t0, t1, t }` into `target`.
+ */
+export function intersectQuadratic(ray, sphere, target = {}) {
+  const o = ray.origin, d = ray.direction, c = sphere.center, r = sphere.radius;
+  const ox = o.x - c.x, oy = o.y - c.y, oz = o.z - c.z; // Ro − Sc
+  const A = d.x * d.x + d.y * d.y + d.z * d.z;
+  const B = 2 * (ox * d.x + oy * d.y + oz * d.z);
+  const C = ox * ox + oy * oy + oz * oz - r * r;
+  const discriminant = B * B - 4 * A * C;
+  target.A = A; target.B = B; target.C = C; target.discriminant = discriminant;
+  if (Math.abs(discriminant) <= TANGENT * 4 * A * r * r) {
+    target.roots = 1; // tangent: the ray grazes the sphere
+    target.t0 = target.t1 = -B / (2 * A);
+  } else if (discriminant < 0) {
+    target.roots = 0; // t would be imaginary: no intersection
+    target.t0 = target.t1 = null;
+  } else {
+    // (−B ± √disc) / 2A, written so the two terms never cancel each other out.
+    const q = -0.5 * (B + (B < 0 ? -1 : 1) * Math.sqrt(discriminant));
+    const ta = q / A, tb = C / q;
+    target.roots = 2;
+    target.t0 = Math.min(ta, tb);
+    target.t1 = Math.max(ta, tb);
+  }
+  target.t = nearestPositive(target.t0, target.t1);
+  return target;
+}
+
+/**
+ * The geometric route (slides "Geometric approach"): L = Sc − Ro, tca = L·Rd,
+ * d² = L·L − tca², thc = √(r² − d²), t = tca ∓ thc. Writes
+ * `{ L, tca, d2, thc, roots, t0, t1, t }` into `target` (`L` is a number triple
+ * `{x, y, z}`, reused). A ray starting inside the sphere is never rejected:
+ * there tca < 0 is fine, the far root is still ahead.
+ */
+export function intersectGeometric(ray, sphere, target = {}) {
+  const o = ray.origin, d = ray.direction, c = sphere.center, r = sphere.radius;
+  const L = target.L ?? (target.L = vec3());
+  L.x = c.x - o.x; L.y = c.y - o.y; L.z = c.z - o.z;
+  const tca = L.x * d.x + L.y * d.y + L.z * d.z;
+  const d2 = L.x * L.x + L.y * L.y + L.z * L.z - tca * tca;
+  const r2 = r * r;
+  target.tca = tca; target.d2 = d2;
+  if (Math.abs(r2 - d2) <= TANGENT * r2) {
+    target.roots = 1; // d = r: tangent
+    target.thc = 0;
+    target.t0 = target.t1 = tca;
+  } else if (d2 > r2) {
+    target.roots = 0; // d > r: the ray passes the sphere by
+    target.thc = target.t0 = target.t1 = null;
+  } else {
+    const thc = Math.sqrt(r2 - d2);
+    target.roots = 2;
+    target.thc = thc;
+    target.t0 = tca - thc;
+    target.t1 = tca + thc;
+  }
+  target.t = nearestPositive(target.t0, target.t1);
+  return target;
+}
+
+/** The smallest of t0 ≤ t1 greater than EPSILON (a hit in front of the eye), or null. */
+function nearestPositive(t0, t1) {
+  if (t0 === null) return null;
+  if (t0 > EPSILON) return t0;
+  if (t1 > EPSILON) return t1;
+  return null;
+}
+

@@ -1,0 +1,103 @@
+/**
+ * 3-vectors as plain `{x, y, z}` objects, gl-matrix style: every function that
+ * makes a vector writes into an `out` argument, so hot loops allocate nothing.
+ */
+import { finiteNumber, show } from './check.js';
+
+/** A new vector. */
+export function vec3(x = 0, y = 0, z = 0) {
+  return { x, y, z };
+}
+
+/** out = (x, y, z). */
+export function set(out, x, y, z) {
+  out.x = x; out.y = y; out.z = z;
+  return out;
+}
+
+/** out = a. */
+export function copy(out, a) {
+  out.x = a.x; out.y = a.y; out.z = a.z;
+  return out;
+}
+
+/** out = a + b. */
+export function add(out, a, b) {
+  out.x = a.x + b.x; out.y = a.y + b.y; out.z = a.z + b.z;
+  return out;
+}
+
+/** out = a − b. */
+export function sub(out, a, b) {
+  out.x = a.x - b.x; out.y = a.y - b.y; out.z = a.z - b.z;
+  return out;
+}
+
+/** out = a·s. */
+export function scale(out, a, s) {
+  out.x = a.x * s; out.y = a.y * s; out.z = a.z * s;
+  return out;
+}
+
+/** out = a + b·s (a point along a ray: origin + direction·t). */
+export function scaleAndAdd(out, a, b, s) {
+  out.x = a.x + b.x * s; out.y = a.y + b.y * s; out.z = a.z + b.z * s;
+  return out;
+}
+
+/** a·b. */
+export function dot(a, b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+/** out = a × b. */
+export function cross(out, a, b) {
+  const x = a.y * b.z - a.z * b.y;
+  const y = a.z * b.x - a.x * b.z;
+  const z = a.x * b.y - a.y * b.x;
+  out.x = x; out.y = y; out.z = z;
+  return out;
+}
+
+/** |a|. */
+export function length(a) {
+  return Math.sqrt(a.x * a.x + a.y * a.y + a.z * a.z);
+}
+
+/** |a − b|. */
+export function distance(a, b) {
+  const dx = a.x - b.x, dy = a.y - b.y, dz = a.z - b.z;
+  return Math.sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+/** out = a / |a|; a zero vector stays zero (callers that care check first). */
+export function normalize(out, a) {
+  const len = length(a);
+  const s = len > 0 ? 1 / len : 0;
+  out.x = a.x * s; out.y = a.y * s; out.z = a.z * s;
+  return out;
+}
+
+/** out = d − 2(d·n)n: the mirror direction of d about the unit normal n. */
+export function reflect(out, d, n) {
+  const k = 2 * dot(d, n);
+  out.x = d.x - k * n.x; out.y = d.y - k * n.y; out.z = d.z - k * n.z;
+  return out;
+}
+
+/**
+ * A vector from `[x, y, z]` or `{x, y, z}`, checked: every component must be a
+ * finite number, else a TypeError naming `field` (and the component).
+ */
+export function toVec3(value, field) {
+  let x, y, z;
+  if (Array.isArray(value) || ArrayBuffer.isView(value)) {
+    if (value.length !== 3) throw new TypeError(`${field} must have 3 numbers [x, y, z], got ${show(value)}`);
+    [x, y, z] = value;
+  } else if (value && typeof value === 'object') {
+    ({ x, y, z } = value);
+  } else {
+    throw new TypeError(`${field} must be [x, y, z] or {x, y, z}, got ${show(value)}`);
+  }
+  return vec3(finiteNumber(x, `${field}.x`), finiteNumber(y, `${field}.y`), finiteNumber(z, `${field}.z`));
+}
