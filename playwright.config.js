@@ -1,0 +1,33 @@
+import { defineConfig } from '@playwright/test';
+import { findBrowser } from './scripts/find-browser.js';
+
+const PORT = 5199;
+const executablePath = findBrowser() ?? undefined;
+
+// Screenshots are of traced canvases only, at a pinned viewport, headless.
+export default defineConfig({
+  testDir: 'tests/e2e',
+  testMatch: '**/*.spec.js',
+  snapshotPathTemplate: '{testDir}/__screenshots__/{testFilePath}/{arg}{ext}',
+  fullyParallel: true,
+  workers: process.env.CI ? 2 : undefined,
+  retries: 0,
+  forbidOnly: true,
+  reporter: [['list'], ['json', { outputFile: 'test-results/e2e.json' }]],
+  timeout: 60_000,
+  expect: { toHaveScreenshot: { maxDiffPixels: 0, animations: 'disabled', caret: 'hide' } },
+  use: {
+    baseURL: `http://localhost:${PORT}`,
+    viewport: { width: 1280, height: 900 },
+    deviceScaleFactor: 1,
+    browserName: 'chromium',
+    headless: true,
+    launchOptions: { executablePath },
+  },
+  webServer: {
+    command: `node_modules/.bin/vite --port ${PORT} --strictPort`,
+    url: `http://localhost:${PORT}/`,
+    reuseExistingServer: !process.env.CI,
+    timeout: 60_000,
+  },
+});

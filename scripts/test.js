@@ -1,0 +1,37 @@
+/**
+ * npm test: the unit tests (Vitest), then the browser tests (Playwright),
+ * then one closing line with the totals.
+ */
+import { spawnSync } from 'node:child_process';
+import { readFileSync, mkdirSync } from 'node:fs';
+import { findBrowser, HOW_TO_GET_ONE } from './find-browser.js';
+
+mkdirSync('test-results', { recursive: true });
+const run = (cmd, args) => spawnSync(cmd, args, { stdio: 'inherit', shell: false }).status;
+const bin = (name) => `node_modules/.bin/${name}`;
+
+const unitStatus = run(bin('vitest'), ['run', '--reporter=default', '--reporter=json', '--outputFile=test-results/unit.json']);
+const unit = readJSON('test-results/unit.json');
+const counts = {
+  passed: unit?.numPassedTests ?? 0,
+  failed: unit ? unit.numFailedTests : 1,
+};
+
+let e2eStatus = 1;
+if (findBrowser() === null) {
+  console.error(HOW_TO_GET_ONE);
+  counts.failed += 1;
+} else {
+  e2eStatus = run(bin('playwright'), ['test']);
+  const stats = readJSON('test-results/e2e.json')?.stats;
+  counts.passed += stats?.expected ?? 0;
+  counts.failed += stats ? stats.unexpected + stats.flaky : 1;
+}
+
+const ok = unitStatus === 0 && e2eStatus === 0 && counts.failed === 0;
+console.log(`\ntotal: ${counts.passed} passed, ${counts.failed} failed`);
+process.exit(ok ? 0 : 1);
+
+function readJSON(path) {
+  try { return JSON.parse(readFileSync(path, 'utf8')); } catch { return null; }
+}

@@ -1,0 +1,21 @@
+import { defineConfig } from 'vite';
+import { readdirSync } from 'node:fs';
+import { resolve } from 'node:path';
+
+// Every page is an entry of the static build: the gallery and each sketch.
+const sketchPages = readdirSync('sketches')
+  .filter((file) => file.endsWith('.html'))
+  .map((file) => resolve('sketches', file));
+
+export default defineConfig({
+  base: './',
+  build: {
+    target: 'es2022',
+    rollupOptions: { input: [resolve('index.html'), ...sketchPages] },
+  },
+  worker: { format: 'es' },
+  server: {
+    // Test output must not reload pages under test.
+    watch: { ignored: ['**/test-results/**', '**/playwright-report/**', '**/__screenshots__/**', '**/tests/pictures/**'] },
+  },
+});
