@@ -1,0 +1,214 @@
+/**
+ * A frame traced a little at a time, so a sketch's draw() stays smooth while
+ * the picture builds up. Three orders of work:
+ *   'coarse'   blocks of 16, 8, 4, 2, then 1 px: a rough picture at once, then
+ *              sharper; each pass traces only pixels no earlier pass traced;
+ *   'scanline' row by row, left to right, the way Appel described it;
+ *   'slow'     scanline order, a fixed number of rays per step, so a diagram
+ *              can follow the current ray.
+ * Every pixel is traced exactly once, by the same shader as `render`, so the
+ * finished buffer is byte for byte `render(scene, camera)`'s.
+ */
+import { renderPixel } from './render.js';
+import { positiveInteger, finiteNumber, show } from './check.js';
+
+/** The render orders a ProgressiveRenderer knows. */
+export const MODES = ['coarse', 'scanline', 'slow'];
+
+/** Block sizes of the coarse passes, largest first. */
+export const COARSE_PASSES = [16, 8, 4, 2, 1];
+const FULL_RESOLUTION = [1];
+
+/** Pixels traced between two looks at the clock: reading it costs more than a cheap pixel. */
+export const CHECK_EVERY = 16;
+
+export class ProgressiveRenderer {
+  #passes = COARSE_PASSES;
+  #passIndex = 0;
+  #x = 0;
+  #y = 0;
+  #traced = 0;
+  #tracingMs = 0;
+  #done = false;
+
+  /**
+   * @param {object} options
+   * @param {import('./scene.js').Scene} options.scene
+   * @param {import('./camera.js').Camera} options.camera
+   * @param {'coarse'|'scanline'|'slow'} [options.mode='coarse']
+   * @param {number} [options.budgetMs=8] tracing time per step(), milliseconds
+   * @param {Function} [options.shader=renderPixel] `(scene, camera, x, y, targetRGBA)`, writes pixel (x, y) at `(y·width + x)·4`
+   * @param {number} [options.slowRaysPerStep=1] pixels per step() in 'slow' mode
+   * @param {() => number} [options.now=performance.now] the clock, in milliseconds
+   */
+  constructor({ scene, camera, mode = 'coarse', budgetMs = 8, shader = renderPixel, slowRaysPerStep = 1, now = () => performance.now() } = {}) {
+    if (typeof now !== 'function') throw new TypeError(`now must be a function returning milliseconds, got ${show(now)}`);
+    this.now = now;
+    this.budgetMs = budget(budgetMs, 'budgetMs');
+    /** Primary rays traced by each step() in 'slow' mode. */
+    this.slowRaysPerStep = positiveInteger(slowRaysPerStep, 'slowRaysPerStep');
+    /** The traced image, RGBA, width·height·4 bytes; a new array when the camera's size changes. */
+    this.buffer = null;
+    /** In 'slow' and 'scanline' modes the pixel `{ x, y }` traced last, else null. */
+    this.current = null;
+    this.restart({ scene, camera, mode, shader });
+  }
+
+  /**
+   * Starts again from the first pass, with whatever changed. Every change is
+   * checked before any is applied, so a bad value leaves the render as it was.
+   * @param {object} [changes] `{ scene?, camera?, mode?, shader?, slowRaysPerStep? }`
+   */
+  restart(changes = {}) {
+    const scene = changes.scene ?? this.scene;
+    const camera = changes.camera ?? this.camera;
+    const mode = changes.mode ?? this.mode;
+    const shader = changes.shader ?? this.shader;
+    if (!scene || !Array.isArray(scene.objects)) throw new TypeError(`scene must be a Scene, got ${show(scene)}`);
+    if (!camera || typeof camera.directionAt !== 'function') throw new TypeError(`camera must be a Camera, got ${show(camera)}`);
+    positiveInteger(camera.width, 'camera.width');
+    positiveInteger(camera.height, 'camera.height');
+    if (!MODES.includes(mode)) throw new RangeError(`mode must be one of ${MODES.map((m) => `'${m}'`).join(', ')}, got ${show(mode)}`);
+    if (typeof shader !== 'function') throw new TypeError(`shader must be a function (scene, camera, x, y, target), got ${show(shader)}`);
+    if (changes.slowRaysPerStep !== undefined) this.slowRaysPerStep = positiveInteger(changes.slowRaysPerStep, 'slowRaysPerStep');
+
+    this.scene = scene;
+    this.camera = camera;
+    this.mode = mode;
+    this.shader = shader;
+    this.width = camera.width;
+    this.height = camera.height;
+    const size = this.width * this.height * 4;
+    if (this.buffer?.length === size) this.buffer.fill(0); // alpha 0: not traced yet
+    else this.buffer = new Uint8ClampedArray(size);
+
+    this.#passes = mode === 'coarse' ? COARSE_PASSES : FULL_RESOLUTION;
+    this.#passIndex = 0;
+    this.#y = 0;
+    this.#x = this.#rowStart(0);
+    this.#traced = 0;
+    this.#tracingMs = 0;
+    this.#done = false;
+    this.current = null;
+    this.#seek();
+    return this;
+  }
+
+  /**
+   * Traces until `budgetMs` is spent (the clock is read every CHECK_EVERY
+   * pixels, so a step may run over by a few pixels and always makes progress);
+   * in 'slow' mode traces exactly `slowRaysPerStep` pixels whatever the budget.
+   * @param {number} [budgetMs=this.budgetMs]
+   * @returns {{ changed: boolean, done: boolean }} changed: some pixel was traced
+   */
+  step(budgetMs = this.budgetMs) {
+    budget(budgetMs, 'budgetMs');
+    if (this.#done) return { changed: false, done: true };
+    const slow = this.mode === 'slow';
+    const start = this.now();
+    let count = 0, x = 0, y = 0;
+    while (!this.#done) {
+      x = this.#x; y = this.#y;
+      this.#tracePixel(x, y);
+      count++;
+      this.#advance();
+      if (slow) {
+        if (count === this.slowRaysPerStep) break;
+      } else if (count % CHECK_EVERY === 0 && this.now() - start >= budgetMs) break;
+    }
+    this.#tracingMs += this.now() - start;
+    this.#traced += count;
+    if (this.mode !== 'coarse') this.current = { x, y };
+    return { changed: true, done: this.#done };
+  }
+
+  /** True once every pixel is traced. */
+  get done() {
+    return this.#done;
+  }
+
+  /** Pixels traced so far: each pixel is traced once, whatever the pass. */
+  get traced() {
+    return this.#traced;
+  }
+
+  /**
+   * Share of the work done, 0–1: pixels traced / (width·height). A coarse
+   * pass of blocks of s px traces about 1/s² of the pixels, so the 16 px
+   * preview is honest about being under 1 % of the picture.
+   */
+  get progress() {
+    return this.#traced / (this.width * this.height);
+  }
+
+  /** Primary rays per second of time spent inside step() since the last restart (0 before any). */
+  get raysPerSecond() {
+    return this.#tracingMs > 0 ? (this.#traced * 1000) / this.#tracingMs : 0;
+  }
+
+  /**
+   * 'coarse': the block size of the pass under way (16, 8, 4, 2, 1; 1 when done).
+   * 'scanline' and 'slow': the row being traced (height when done).
+   */
+  get pass() {
+    if (this.mode === 'coarse') return this.#passes[this.#passIndex];
+    return this.#done ? this.height : this.#y;
+  }
+
+  /** Traces one pixel with the shader and, in a coarse pass, paints its whole block. */
+  #tracePixel(x, y) {
+    const buffer = this.buffer, width = this.width;
+    this.shader(this.scene, this.camera, x, y, buffer);
+    const size = this.#passes[this.#passIndex];
+    if (size === 1) return;
+    const i = (y * width + x) * 4;
+    const r = buffer[i], g = buffer[i + 1], b = buffer[i + 2], a = buffer[i + 3];
+    const right = Math.min(x + size, width), bottom = Math.min(y + size, this.height);
+    for (let by = y; by < bottom; by++) {
+      for (let j = (by * width + x) * 4, end = (by * width + right) * 4; j < end; j += 4) {
+        buffer[j] = r; buffer[j + 1] = g; buffer[j + 2] = b; buffer[j + 3] = a;
+      }
+    }
+  }
+
+  /**
+   * First x of row y in the current pass. A later pass skips the pixels an
+   * earlier one traced: on rows that are multiples of 2·size, every other one.
+   */
+  #rowStart(y) {
+    const size = this.#passes[this.#passIndex];
+    return this.#passIndex > 0 && y % (2 * size) === 0 ? size : 0;
+  }
+
+  /** Moves to the next pixel of this pass's pattern. */
+  #advance() {
+    const size = this.#passes[this.#passIndex];
+    const skipping = this.#passIndex > 0 && this.#y % (2 * size) === 0;
+    this.#x += skipping ? 2 * size : size;
+    this.#seek();
+  }
+
+  /** Moves on from a finished row, or pass, to the next pixel there is (or to done). */
+  #seek() {
+    while (this.#x >= this.width) {
+      this.#y += this.#passes[this.#passIndex];
+      if (this.#y >= this.height) {
+        if (this.#passIndex === this.#passes.length - 1) {
+          this.#done = true;
+          this.#x = 0;
+          this.#y = this.height;
+          return;
+        }
+        this.#passIndex++;
+        this.#y = 0;
+      }
+      this.#x = this.#rowStart(this.#y);
+    }
+  }
+}
+
+function budget(value, field) {
+  finiteNumber(value, field);
+  if (value < 0) throw new RangeError(`${field} must not be negative, got ${value}`);
+  return value;
+}
