@@ -1,0 +1,71 @@
+import { describe, it, expect } from 'vitest';
+import { Material, Sphere } from '../../lib/index.js';
+
+describe('Material', () => {
+  it('defaults: white, no emission, no reflection, no transparency', () => {
+    const m = new Material();
+    expect(m.color).toEqual([1, 1, 1]);
+    expect(m.emission).toEqual([0, 0, 0]);
+    expect(m.reflection).toBe(0);
+    expect(m.transparency).toBe(0);
+    expect(m.isEmissive).toBe(false);
+  });
+
+  it('takes colours as arrays or strings, emission as a number', () => {
+    const m = new Material({ color: '#ff0000', emission: 1.2, reflection: 0.5, transparency: 0.25 });
+    expect(m.color).toEqual([1, 0, 0]);
+    expect(m.emission).toEqual([1.2, 1.2, 1.2]);
+    expect(m.reflection).toBe(0.5);
+    expect(m.transparency).toBe(0.25);
+  });
+
+  it('an emission in any channel makes it emissive (a light)', () => {
+    expect(new Material({ emission: [0, 0, 0.1] }).isEmissive).toBe(true);
+    expect(new Material({ emission: 'red' }).isEmissive).toBe(true);
+    expect(new Material({ emission: 0 }).isEmissive).toBe(false);
+  });
+
+  it('Material.from keeps a Material, builds one from options or nothing', () => {
+    const m = new Material({ color: [0, 1, 0] });
+    expect(Material.from(m)).toBe(m);
+    expect(Material.from({ color: [0, 0, 1] }).color).toEqual([0, 0, 1]);
+    expect(Material.from(undefined).color).toEqual([1, 1, 1]);
+  });
+
+  it('a sphere takes a Material or a plain object', () => {
+    const m = new Material({ color: [0, 1, 0] });
+    expect(new Sphere([0, 0, 0], 1, m).material).toBe(m);
+    expect(new Sphere([0, 0, 0], 1, { reflection: 1 }).material).toBeInstanceOf(Material);
+    expect(new Sphere([0, 0, 0], 1, { reflection: 1 }).material.reflection).toBe(1);
+  });
+});
+
+describe('Material: bad input names the field', () => {
+  const cases = [
+    [{ reflection: 1.5 }, RangeError, /reflection/],
+    [{ reflection: -0.1 }, RangeError, /reflection/],
+    [{ reflection: '0.5' }, TypeError, /reflection/],
+    [{ transparency: 2 }, RangeError, /transparency/],
+    [{ transparency: NaN }, TypeError, /transparency/],
+    [{ color: 'not a colour' }, TypeError, /color/],
+    [{ color: [1, 0] }, TypeError, /color/],
+    [{ color: [1, -1, 0] }, RangeError, /color/],
+    [{ emission: [-1, 0, 0] }, RangeError, /emission/],
+    [{ emission: 'glow' }, TypeError, /emission/],
+    [{ ior: 0.5 }, RangeError, /ior/],
+    [{ specular: 3 }, RangeError, /specular/],
+    [{ shininess: 0 }, RangeError, /shininess/],
+  ];
+  for (const [options, type, field] of cases) {
+    it(`${JSON.stringify(options)} → ${type.name} ${field}`, () => {
+      expect(() => new Material(options)).toThrow(type);
+      expect(() => new Material(options)).toThrow(field);
+    });
+  }
+
+  it('a material that is not an object is a TypeError naming material', () => {
+    expect(() => new Material(null)).toThrow(TypeError);
+    expect(() => new Material('red')).toThrow(/material/);
+    expect(() => new Sphere([0, 0, 0], 1, 'red')).toThrow(/material/);
+  });
+});
