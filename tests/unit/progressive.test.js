@@ -1,0 +1,294 @@
+import { describe, it, expect } from 'vitest';
+import { ProgressiveRenderer, CHECK_EVERY, COARSE_PASSES } from '../../lib/progressive.js';
+import { render, renderPixel, Camera, Scene, Sphere, Plane, Box, PointLight, classScene } from '../../lib/index.js';
+
+const MODES = ['coarse', 'scanline', 'slow'];
+
+function floorScene() {
+  const scene = new Scene({ background: [0.2, 0.3, 0.5], ambient: 0.1 });
+  scene.add(new Plane([0, -2, 0], [0, 1, 0], { color: [0.8, 0.8, 0.8], reflection: 0.3 }));
+  scene.add(new Box([-3, -2, -14], [-1, 0, -12], { color: 'orange' }));
+  scene.add(new Sphere([1.5, -0.5, -12], 1.5, { color: 'pink', specular: 0.6, transparency: 0.4 }));
+  scene.add(new PointLight([5, 8, 0], [1, 1, 0.9], 1.2));
+  return scene;
+}
+
+const SCENES = { class: classScene(), 'class, full shading': classScene({ full: true }), 'plane, box, point light': floorScene() };
+const SIZES = [[37, 23], [16, 16], [1, 1], [40, 30], [5, 70], [33, 17]];
+
+/** A clock that moves only when told to: no test here depends on real time. */
+function fakeClock() {
+  const clock = { t: 0, reads: 0, now: () => { clock.reads++; return clock.t; } };
+  return clock;
+}
+
+/** Runs a renderer to the end, checking the step contract on the way. */
+function finish(p, budgetMs) {
+  let guard = 0;
+  while (!p.done) {
+    const { changed, done } = p.step(budgetMs);
+    expect(changed).toBe(true);
+    expect(done).toBe(p.done);
+    if (++guard > 1e6) throw new Error('never finished');
+  }
+  return p.buffer;
+}
+
+describe('ProgressiveRenderer: the finished picture is render()\'s, byte for byte', () => {
+  for (const [name, scene] of Object.entries(SCENES)) {
+    for (const [width, height] of SIZES) {
+      it(`${name} at ${width}×${height} in every mode`, () => {
+        const camera = new Camera({ width, height, fov: 40, position: [0, 1, 0], pitch: -5 });
+        const expected = render(scene, camera);
+        for (const mode of MODES) {
+          const clock = fakeClock();
+          // The shader advances the clock, so budgets end after a known number of pixels.
+          const shader = (...args) => { clock.t += 0.25; renderPixel(...args); };
+          const p = new ProgressiveRenderer({ scene, camera, mode, shader, now: clock.now, slowRaysPerStep: 5 });
+          expect(finish(p, 3)).toEqual(expected);
+        }
+      });
+    }
+  }
+});
+
+describe('coarse passes', () => {
+  const scene = classScene();
+
+  it('traces each pixel once, in the first pass whose block size divides both x and y', () => {
+    const camera = new Camera({ width: 37, height: 23 });
+    const passOf = new Map();
+    let p;
+    const shader = (s, c, x, y, target) => {
+      const key = `${x},${y}`;
+      expect(passOf.has(key)).toBe(false);
+      passOf.set(key, p.pass);
+      renderPixel(s, c, x, y, target);
+    };
+    p = new ProgressiveRenderer({ scene, camera, shader });
+    finish(p);
+    expect(passOf.size).toBe(37 * 23);
+    for (let y = 0; y < 23; y++) {
+      for (let x = 0; x < 37; x++) {
+        const first = COARSE_PASSES.find((s) => x % s === 0 && y % s === 0);
+        expect(passOf.get(`${x},${y}`)).toBe(first);
+      }
+    }
+  });
+
+  it('after the 16 px pass every pixel shows the colour of its block\'s traced corner', () => {
+    const camera = new Camera({ width: 37, height: 23 });
+    const expected = render(scene, camera);
+    let p, preview = null;
+    const shader = (s, c, x, y, target) => {
+      // The buffer as the 16 px pass left it, caught as the 8 px pass begins.
+      if (p.pass === 8 && !preview) preview = target.slice();
+      renderPixel(s, c, x, y, target);
+    };
+    p = new ProgressiveRenderer({ scene, camera, shader });
+    finish(p, 1e9);
+    expect(preview).not.toBe(null);
+    for (let y = 0; y < 23; y++) {
+      for (let x = 0; x < 37; x++) {
+        const corner = ((y - (y % 16)) * 37 + (x - (x % 16))) * 4;
+        const i = (y * 37 + x) * 4;
+        expect([...preview.subarray(i, i + 4)]).toEqual([...expected.subarray(corner, corner + 4)]);
+      }
+    }
+  });
+
+  it('has current null and pass counting down 16, 8, 4, 2, 1', () => {
+    const p = new ProgressiveRenderer({ scene, camera: new Camera({ width: 40, height: 30 }) });
+    const seen = [p.pass];
+    while (!p.step(0).done) {
+      expect(p.current).toBe(null);
+      if (seen.at(-1) !== p.pass) seen.push(p.pass);
+    }
+    expect(seen).toEqual([16, 8, 4, 2, 1]);
+  });
+});
+
+describe('scanline and slow modes', () => {
+  const scene = classScene();
+  const camera = new Camera({ width: 37, height: 23 });
+
+  it('scanline traces row by row, left to right, and leaves the rest transparent', () => {
+    const order = [];
+    const shader = (s, c, x, y, t) => { order.push(y * 37 + x); renderPixel(s, c, x, y, t); };
+    const p = new ProgressiveRenderer({ scene, camera, mode: 'scanline', shader });
+    p.step(0);
+    const n = order.length;
+    expect(order).toEqual([...Array(n).keys()]);
+    expect(p.current).toEqual({ x: (n - 1) % 37, y: Math.floor((n - 1) / 37) });
+    expect(p.pass).toBe(Math.floor(n / 37));
+    for (let i = 0; i < 37 * 23; i++) expect(p.buffer[i * 4 + 3]).toBe(i < n ? 255 : 0);
+  });
+
+  it('slow traces exactly slowRaysPerStep pixels per step, whatever the budget and the clock', () => {
+    for (const perStep of [1, 3, 50]) {
+      const clock = fakeClock();
+      let traced = 0;
+      const shader = (...args) => { traced++; clock.t += 1000; renderPixel(...args); };
+      const p = new ProgressiveRenderer({ scene, camera, mode: 'slow', shader, slowRaysPerStep: perStep, now: clock.now });
+      let before = 0, k = 0;
+      while (!p.done) {
+        p.step(k++ % 2 ? 0 : 1e6);
+        expect(traced - before).toBe(Math.min(perStep, 37 * 23 - before));
+        expect(p.current).toEqual({ x: (traced - 1) % 37, y: Math.floor((traced - 1) / 37) });
+        before = traced;
+      }
+      expect(traced).toBe(37 * 23);
+    }
+  });
+
+  it('slowRaysPerStep can change on restart', () => {
+    const p = new ProgressiveRenderer({ scene, camera, mode: 'slow' });
+    p.step();
+    expect(p.traced).toBe(1);
+    p.restart({ slowRaysPerStep: 4 });
+    p.step();
+    expect(p.traced).toBe(4);
+  });
+});
+
+describe('progress and restarts', () => {
+  const scene = classScene();
+
+  it('progress goes from 0 to 1 without going back, in every mode', () => {
+    for (const mode of MODES) {
+      const p = new ProgressiveRenderer({ scene, camera: new Camera({ width: 37, height: 23 }), mode, slowRaysPerStep: 20 });
+      expect(p.progress).toBe(0);
+      expect(p.done).toBe(false);
+      let last = 0;
+      while (!p.step(0).done) {
+        expect(p.progress).toBeGreaterThan(last);
+        expect(p.progress).toBeLessThan(1);
+        last = p.progress;
+      }
+      expect(p.progress).toBe(1);
+      expect(p.step()).toEqual({ changed: false, done: true });
+    }
+  });
+
+  it('a restart in the middle starts over and still ends with render()\'s picture', () => {
+    for (const mode of MODES) {
+      const camera = new Camera({ width: 37, height: 23 });
+      const p = new ProgressiveRenderer({ scene, camera, mode, slowRaysPerStep: 40 });
+      for (let i = 0; i < 5; i++) p.step(0);
+      p.restart();
+      expect(p.progress).toBe(0);
+      expect(p.current).toBe(null);
+      expect(p.buffer.every((b) => b === 0)).toBe(true);
+      expect(finish(p, 0)).toEqual(render(scene, camera));
+    }
+  });
+
+  it('a new camera size mid-render gives a new buffer of the new size and the new picture', () => {
+    const p = new ProgressiveRenderer({ scene, camera: new Camera({ width: 37, height: 23 }) });
+    p.step(0); p.step(0);
+    const old = p.buffer;
+    const camera = new Camera({ width: 20, height: 45, yaw: 10 });
+    p.restart({ camera });
+    expect(p.buffer).not.toBe(old);
+    expect(p.buffer.length).toBe(20 * 45 * 4);
+    expect([p.width, p.height]).toEqual([20, 45]);
+    expect(finish(p, 0)).toEqual(render(scene, camera));
+  });
+
+  it('the same size keeps the buffer; a new scene, mode or shader restarts with it', () => {
+    const camera = new Camera({ width: 24, height: 18 });
+    const p = new ProgressiveRenderer({ scene, camera, mode: 'scanline' });
+    const buffer = p.buffer;
+    p.step(0);
+    p.restart({ camera: new Camera({ width: 24, height: 18, yaw: 20 }), mode: 'coarse' });
+    expect(p.buffer).toBe(buffer);
+    expect(p.mode).toBe('coarse');
+    p.step(0);
+    const other = floorScene();
+    p.restart({ scene: other });
+    expect(p.progress).toBe(0);
+    const c2 = new Camera({ width: 24, height: 18, yaw: 20 });
+    expect(finish(p, 0)).toEqual(render(other, c2));
+
+    const red = (s, c, x, y, target) => target.set([255, 0, 0, 255], (y * c.width + x) * 4);
+    p.restart({ shader: red });
+    finish(p, 0);
+    expect(p.buffer.every((b, i) => b === [255, 0, 0, 255][i % 4])).toBe(true);
+  });
+
+  it('a bad change throws naming the field and leaves the render as it was', () => {
+    const camera = new Camera({ width: 37, height: 23 });
+    const p = new ProgressiveRenderer({ scene, camera });
+    p.step(0);
+    const progress = p.progress;
+    expect(() => p.restart({ mode: 'fast' })).toThrow(/mode must be one of 'coarse', 'scanline', 'slow', got "fast"/);
+    expect(() => p.restart({ shader: 3 })).toThrow(TypeError);
+    expect(() => p.restart({ camera: { width: 3 } })).toThrow(/camera must be a Camera/);
+    expect(() => p.restart({ slowRaysPerStep: 0 })).toThrow(/slowRaysPerStep/);
+    expect(p.mode).toBe('coarse');
+    expect(p.progress).toBe(progress);
+    expect(finish(p, 0)).toEqual(render(scene, camera));
+  });
+
+  it('checks its options', () => {
+    const camera = new Camera({ width: 4, height: 4 });
+    expect(() => new ProgressiveRenderer({ camera })).toThrow(/scene must be a Scene/);
+    expect(() => new ProgressiveRenderer({ scene })).toThrow(/camera must be a Camera/);
+    expect(() => new ProgressiveRenderer({ scene, camera, budgetMs: -1 })).toThrow(RangeError);
+    expect(() => new ProgressiveRenderer({ scene, camera, budgetMs: NaN })).toThrow(/budgetMs must be a finite number/);
+    expect(() => new ProgressiveRenderer({ scene, camera, slowRaysPerStep: 1.5 })).toThrow(/slowRaysPerStep must be a positive whole number/);
+    expect(() => new ProgressiveRenderer({ scene, camera }).step('x')).toThrow(/budgetMs/);
+  });
+});
+
+describe('the time budget (a fake clock)', () => {
+  const scene = classScene();
+  const camera = new Camera({ width: 64, height: 48 });
+
+  /** A renderer whose every pixel takes exactly `msPerPixel` on a fake clock. */
+  function timed(mode, msPerPixel) {
+    const clock = fakeClock();
+    const shader = (...args) => { clock.t += msPerPixel; renderPixel(...args); };
+    return { clock, p: new ProgressiveRenderer({ scene, camera, mode, shader, now: clock.now }) };
+  }
+
+  it('stops at the first clock check after the budget is spent', () => {
+    for (const mode of ['coarse', 'scanline']) {
+      for (const budgetMs of [0, 1, 8, 16, 17, 40]) {
+        const { p } = timed(mode, 1);
+        p.step(0); // past the small first coarse pass
+        const before = p.traced;
+        p.step(budgetMs);
+        const checks = Math.max(1, Math.ceil(budgetMs / CHECK_EVERY));
+        expect(p.traced - before).toBe(checks * CHECK_EVERY);
+      }
+    }
+  });
+
+  it('uses the default budget of 8 ms, or the one given at construction', () => {
+    const { p } = timed('scanline', 0.5);
+    p.step();
+    expect(p.traced).toBe(16); // 16 pixels × 0.5 ms reach 8 ms at the first check
+    const clock = fakeClock();
+    const q = new ProgressiveRenderer({ scene, camera, mode: 'scanline', budgetMs: 20, now: clock.now,
+      shader: (...a) => { clock.t += 0.5; renderPixel(...a); } });
+    q.step();
+    expect(q.traced).toBe(48);
+  });
+
+  it('reads the clock every few pixels, not every pixel', () => {
+    const { p, clock } = timed('scanline', 0.01);
+    p.step(5); // 500 pixels' worth
+    expect(p.traced).toBeGreaterThanOrEqual(500);
+    expect(clock.reads).toBeLessThanOrEqual(p.traced / CHECK_EVERY + 2);
+  });
+
+  it('measures rays per second over the time spent tracing', () => {
+    const { p } = timed('coarse', 0.5);
+    expect(p.raysPerSecond).toBe(0);
+    p.step(4); p.step(4);
+    expect(p.raysPerSecond).toBeCloseTo(2000, 6);
+    p.restart();
+    expect(p.raysPerSecond).toBe(0);
+  });
+});
