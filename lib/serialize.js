@@ -1,0 +1,291 @@
+/**
+ * A scene and a camera as plain JSON and back, every field checked, so a scene
+ * can travel to a Web Worker, sit in a page's URL, or be pasted by a student;
+ * and a scene as readable code that rebuilds it with the public API.
+ *
+ * Scene JSON: `{ background, ambient, shadows, bias, maxDepth, specular, objects }`,
+ * `objects` in the order they were added, each one of
+ *   `{ type: 'sphere', name, center, radius, material }`
+ *   `{ type: 'plane', name, point, normal, material }`
+ *   `{ type: 'box', name, min, max, material }`
+ *   `{ type: 'pointLight', name, position, color, intensity }`
+ * with `material` = `{ color, emission, reflection, transparency, ior, specular, shininess }`.
+ */
+import { Scene } from './scene.js';
+import { Camera } from './camera.js';
+import { Material } from './material.js';
+import { PointLight } from './lights.js';
+import { Sphere } from './shapes/sphere.js';
+import { Plane } from './shapes/plane.js';
+import { Box } from './shapes/box.js';
+import { show } from './check.js';
+
+const SCENE_FIELDS = ['background', 'ambient', 'shadows', 'bias', 'maxDepth', 'specular', 'objects'];
+const MATERIAL_FIELDS = ['color', 'emission', 'reflection', 'transparency', 'ior', 'specular', 'shininess'];
+const CAMERA_FIELDS = ['width', 'height', 'fov', 'position', 'yaw', 'pitch'];
+
+/** Each type: its JSON fields, and how to build it from them. */
+const TYPES = {
+  sphere: { fields: ['center', 'radius', 'material'], build: (o, m) => new Sphere(o.center, o.radius, m) },
+  plane: { fields: ['point', 'normal', 'material'], build: (o, m) => new Plane(o.point, o.normal, m) },
+  box: { fields: ['min', 'max', 'material'], build: (o, m) => new Box(o.min, o.max, m) },
+  pointLight: { fields: ['position', 'color', 'intensity'], build: (o) => new PointLight(o.position, o.color, o.intensity) },
+};
+
+/** The scene as plain JSON-ready data (numbers, booleans, strings, arrays). */
+export function sceneToJSON(scene) {
+  if (!(scene instanceof Scene)) throw new TypeError(`scene must be a Scene, got ${show(scene)}`);
+  return {
+    background: [...scene.background],
+    ambient: scene.ambient,
+    shadows: scene.shadows,
+    bias: scene.bias,
+    maxDepth: scene.maxDepth,
+    specular: scene.specular,
+    objects: addOrder(scene).map(objectToJSON),
+  };
+}
+
+/**
+ * A Scene from JSON data or text, checked field by field: a bad value throws
+ * a TypeError or RangeError whose message starts with its path, e.g.
+ * "objects[2].radius must be greater than 0, got -1".
+ */
+export function sceneFromJSON(json) {
+  const data = parse(json, 'scene');
+  onlyFields(data, SCENE_FIELDS, 'scene');
+  const { objects = [], ...options } = data;
+  const scene = new Scene(options);
+  if (!Array.isArray(objects)) throw new TypeError(`objects must be an array, got ${show(objects)}`);
+  objects.forEach((o, i) => scene.add(objectFromJSON(o, `objects[${i}]`)));
+  return scene;
+}
+
+/** The camera as plain JSON-ready data. */
+export function cameraToJSON(camera) {
+  if (!(camera instanceof Camera)) throw new TypeError(`camera must be a Camera, got ${show(camera)}`);
+  const { width, height, fov, position, yaw, pitch } = camera;
+  return { width, height, fov, position: vector(position), yaw, pitch };
+}
+
+/** A Camera from JSON data or text, checked; errors name the field. */
+export function cameraFromJSON(json) {
+  const data = parse(json, 'camera');
+  onlyFields(data, CAMERA_FIELDS, 'camera');
+  return new Camera(data);
+}
+
+/**
+ * JavaScript source that rebuilds the scene with the public API, for a
+ * "copy the scene as code" button: an import line, then `const scene = …`
+ * and one `scene.add(…)` per object. Colours that are whole bytes and would
+ * print long (like 0.3176470588235294) are written as '#rrggbb'.
+ * @param {Scene} scene
+ * @param {object} [options]
+ * @param {string} [options.importFrom='../lib/index.js'] where the code imports the library from
+ */
+export function sceneToCode(scene, { importFrom = '../lib/index.js' } = {}) {
+  const data = sceneToJSON(scene);
+  const used = new Set(['Scene']);
+  const names = new Set(['scene']);
+  const body = [];
+  for (const o of data.objects) {
+    const call = constructorCall(o);
+    used.add(call.slice(4, call.indexOf('(')));
+    if (!o.name) {
+      body.push(`scene.add(${call});`);
+      continue;
+    }
+    const id = identifier(o.name, names);
+    body.push(`const ${id} = ${call};`, `${id}.name = ${quote(o.name)};`, `scene.add(${id});`);
+  }
+  const order = ['Scene', 'Sphere', 'Plane', 'Box', 'PointLight'].filter((n) => used.has(n));
+  return [
+    `import { ${order.join(', ')} } from ${quote(importFrom)};`,
+    '',
+    `const scene = new Scene(${literal(sceneOptions(data))});`,
+    ...body,
+    '',
+  ].join('\n');
+}
+
+/* ---- to JSON ---- */
+
+/**
+ * Shapes and point lights in an order that rebuilds both lists exactly: the
+ * lights' order decides the order light is summed in, which a pixel's last
+ * bit can depend on. A point light goes just before the first emissive shape
+ * that comes after it among the scene's lights.
+ */
+function addOrder(scene) {
+  const items = [];
+  let next = 0; // the next of scene.lights not yet placed
+  const placePointLights = () => {
+    while (next < scene.lights.length && scene.lights[next].object === null) items.push(scene.lights[next++].source);
+  };
+  for (const shape of scene.objects) {
+    if (shape.material.isEmissive) {
+      placePointLights();
+      next++; // this shape's own light entry
+    }
+    items.push(shape);
+  }
+  placePointLights();
+  return items;
+}
+
+function objectToJSON(item) {
+  const name = item.name ?? '';
+  if (item instanceof Sphere) return { type: 'sphere', name, center: vector(item.center), radius: item.radius, material: materialToJSON(item.material) };
+  if (item instanceof Plane) return { type: 'plane', name, point: vector(item.point), normal: vector(item.normal), material: materialToJSON(item.material) };
+  if (item instanceof Box) return { type: 'box', name, min: vector(item.min), max: vector(item.max), material: materialToJSON(item.material) };
+  if (item instanceof PointLight) return { type: 'pointLight', name, position: vector(item.position), color: [...item.color], intensity: item.intensity };
+  throw new TypeError(`scene objects must be spheres, planes, boxes or point lights, got ${show(item)}`);
+}
+
+function materialToJSON(m) {
+  return {
+    color: [...m.color], emission: [...m.emission], reflection: m.reflection, transparency: m.transparency,
+    ior: m.ior, specular: m.specular, shininess: m.shininess,
+  };
+}
+
+function vector(v) {
+  return [v.x, v.y, v.z];
+}
+
+/* ---- from JSON ---- */
+
+function parse(json, what) {
+  let data = json;
+  if (typeof json === 'string') {
+    try {
+      data = JSON.parse(json);
+    } catch (error) {
+      throw new TypeError(`${what} is not valid JSON: ${error.message}`);
+    }
+  }
+  if (data === null || typeof data !== 'object' || Array.isArray(data)) {
+    throw new TypeError(`${what} must be an object, got ${show(data)}`);
+  }
+  return data;
+}
+
+/** A misspelt field would silently fall back to its default: name it instead. */
+function onlyFields(data, allowed, path) {
+  for (const key of Object.keys(data)) {
+    if (!allowed.includes(key)) {
+      throw new TypeError(`${path} has no field ${JSON.stringify(key)} (its fields: ${allowed.join(', ')})`);
+    }
+  }
+}
+
+function objectFromJSON(o, path) {
+  if (o === null || typeof o !== 'object' || Array.isArray(o)) throw new TypeError(`${path} must be an object, got ${show(o)}`);
+  if (!Object.hasOwn(TYPES, o.type)) {
+    throw new TypeError(`${path}.type must be one of ${Object.keys(TYPES).map((t) => `"${t}"`).join(', ')}, got ${show(o.type)}`);
+  }
+  const kind = TYPES[o.type];
+  onlyFields(o, ['type', 'name', ...kind.fields], path);
+  if (o.name !== undefined && typeof o.name !== 'string') throw new TypeError(`${path}.name must be a string, got ${show(o.name)}`);
+  let material;
+  if (kind.fields.includes('material') && o.material !== undefined) {
+    if (o.material === null || typeof o.material !== 'object' || Array.isArray(o.material)) {
+      throw new TypeError(`${path}.material must be an object, got ${show(o.material)}`);
+    }
+    onlyFields(o.material, MATERIAL_FIELDS, `${path}.material`);
+    material = named(() => new Material(o.material), `${path}.material.`);
+  }
+  const item = named(() => kind.build(o, material), `${path}.`);
+  item.name = o.name ?? '';
+  return item;
+}
+
+/** Runs `make`; a TypeError or RangeError it throws gets the field's path in front. */
+function named(make, prefix) {
+  try {
+    return make();
+  } catch (error) {
+    if (error instanceof TypeError) throw new TypeError(prefix + error.message);
+    if (error instanceof RangeError) throw new RangeError(prefix + error.message);
+    throw error;
+  }
+}
+
+/* ---- to code ---- */
+
+const SCENE_DEFAULTS = { background: [0, 0, 0], ambient: 0, shadows: true, bias: 1e-4, maxDepth: 5, specular: true };
+const MATERIAL_DEFAULTS = { color: [1, 1, 1], emission: [0, 0, 0], reflection: 0, transparency: 0, ior: 1.1, specular: 0, shininess: 50 };
+
+function sceneOptions(data) {
+  return withoutDefaults(data, SCENE_DEFAULTS);
+}
+
+function constructorCall(o) {
+  const args = {
+    sphere: () => [o.center, o.radius, o.material],
+    plane: () => [o.point, o.normal, o.material],
+    box: () => [o.min, o.max, o.material],
+    pointLight: () => [o.position, isWhite(o.color) && o.intensity === 1 ? undefined : o.color, o.intensity === 1 ? undefined : o.intensity],
+  }[o.type]();
+  if (o.material) {
+    const m = withoutDefaults(o.material, MATERIAL_DEFAULTS);
+    args[args.length - 1] = Object.keys(m).length ? m : undefined;
+  }
+  while (args.length && args.at(-1) === undefined) args.pop();
+  const cls = { sphere: 'Sphere', plane: 'Plane', box: 'Box', pointLight: 'PointLight' }[o.type];
+  return `new ${cls}(${args.map((a, i) => literal(a, o.type === 'pointLight' && i === 1)).join(', ')})`;
+}
+
+const isWhite = (c) => c[0] === 1 && c[1] === 1 && c[2] === 1;
+const isGrey = (c) => c[0] === c[1] && c[1] === c[2];
+
+function withoutDefaults(data, defaults) {
+  const out = {};
+  for (const [key, value] of Object.entries(defaults)) {
+    if (JSON.stringify(data[key]) !== JSON.stringify(value)) out[key] = data[key];
+  }
+  return out;
+}
+
+const COLOR_KEYS = new Set(['background', 'color', 'emission']);
+
+/** Source text for a value: numbers exact, objects on one line like `{ color: [1, 0, 0] }`. */
+function literal(value, isColor = false) {
+  if (Array.isArray(value)) return isColor ? colorLiteral(value) : `[${value.map((v) => literal(v)).join(', ')}]`;
+  if (value && typeof value === 'object') {
+    const entries = Object.entries(value).map(([k, v]) => `${k}: ${k === 'emission' && isGrey(v) ? v[0] : literal(v, COLOR_KEYS.has(k))}`);
+    return entries.length ? `{ ${entries.join(', ')} }` : '{}';
+  }
+  return typeof value === 'string' ? quote(value) : String(value);
+}
+
+/** A string literal in single quotes. */
+function quote(text) {
+  return `'${JSON.stringify(text).slice(1, -1).replace(/\\"/g, '"').replace(/'/g, "\\'")}'`;
+}
+
+/** '#rrggbb' when it says the same number more shortly, else [r, g, b]. */
+function colorLiteral(rgb) {
+  const plain = `[${rgb.join(', ')}]`;
+  const bytes = rgb.map((c) => Math.round(c * 255));
+  const exact = bytes.every((b, i) => b <= 255 && b / 255 === rgb[i]);
+  if (!exact || rgb.every((c) => String(c).length <= 5)) return plain;
+  return "'#" + bytes.map((b) => b.toString(16).padStart(2, '0')).join('') + "'";
+}
+
+/** A JavaScript name from an object's name: 'light 1' → light1; unique in `taken`. */
+function identifier(name, taken) {
+  const words = name.replace(/[^A-Za-z0-9_$ ]+/g, ' ').trim().split(/\s+/).filter(Boolean);
+  let id = words.map((w, i) => (i ? w[0].toUpperCase() + w.slice(1) : w.toLowerCase())).join('') || 'object';
+  if (/^[0-9]/.test(id) || RESERVED.has(id)) id = `_${id}`;
+  let unique = id;
+  for (let n = 2; taken.has(unique); n++) unique = `${id}${n}`;
+  taken.add(unique);
+  return unique;
+}
+
+const RESERVED = new Set(['break', 'case', 'catch', 'class', 'const', 'continue', 'debugger', 'default', 'delete', 'do',
+  'else', 'export', 'extends', 'false', 'finally', 'for', 'function', 'if', 'import', 'in', 'instanceof', 'let', 'new',
+  'null', 'return', 'static', 'super', 'switch', 'this', 'throw', 'true', 'try', 'typeof', 'var', 'void', 'while',
+  'with', 'yield', 'await', 'enum', 'Scene', 'Sphere', 'Plane', 'Box', 'PointLight', 'undefined', 'NaN', 'Infinity']);
