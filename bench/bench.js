@@ -1,0 +1,126 @@
+/**
+ * The renderer's benchmark: `npm run bench`.
+ *
+ * The class's example scene (classScene(): 640×480, fov 30, eye at the origin)
+ * rendered on one thread, two ways, frame for frame side by side:
+ *   (a) the original library's work per pixel: nearest hit, one shadow ray per
+ *       light, Lambert (diffuse only, no ambient, no mirrors or glass);
+ *   (b) full shading: mirrors, glass with Fresnel, specular, maxDepth 5.
+ * Then the same at 160×120, a teaching resolution, and the heap before and
+ * after ten frames (per-pixel work should allocate nothing).
+ *
+ * Performance (Node 20, 2 cores, medians of 15 frames):
+ *   PERFORMANCE_NOTE
+ *
+ * Timing figures are printed, never asserted: they depend on the machine.
+ * Before timing, the script checks that inspectPixel's colour equals render's
+ * pixel for every pixel of a 64×48 class scene, both ways (exit code 1 if not).
+ */
+import { performance, PerformanceObserver } from 'node:perf_hooks';
+import { Camera, classScene, render, inspectPixel } from '../lib/index.js';
+
+const FRAMES = 15;
+const WARMUP = 5;
+
+/** Median of a list of numbers. */
+function median(values) {
+  const sorted = [...values].sort((a, b) => a - b);
+  const mid = sorted.length >> 1;
+  return sorted.length % 2 ? sorted[mid] : (sorted[mid - 1] + sorted[mid]) / 2;
+}
+
+/**
+ * Times `frames` frames of each case, alternating between them so that both
+ * see the same machine state; returns the milliseconds of every frame per case.
+ */
+function timeSideBySide(cases, frames) {
+  for (const c of cases) for (let i = 0; i < WARMUP; i++) render(c.scene, c.camera, c.target);
+  const times = cases.map(() => []);
+  for (let i = 0; i < frames; i++) {
+    cases.forEach((c, k) => {
+      const start = performance.now();
+      render(c.scene, c.camera, c.target);
+      times[k].push(performance.now() - start);
+    });
+  }
+  return times;
+}
+
+function makeCase(label, full, width, height) {
+  const camera = new Camera({ width, height, fov: 30, position: [0, 0, 0] });
+  return { label, scene: classScene({ full }), camera, target: new Uint8ClampedArray(width * height * 4) };
+}
+
+/** Every pixel of a 64×48 frame: the inspector's colour must be render's pixel. */
+function inspectorMatchesRender() {
+  let mismatches = 0;
+  for (const full of [false, true]) {
+    const scene = classScene({ full });
+    const camera = new Camera({ width: 64, height: 48, fov: 30 });
+    const pixels = render(scene, camera);
+    for (let y = 0; y < camera.height; y++) {
+      for (let x = 0; x < camera.width; x++) {
+        const { color } = inspectPixel(scene, camera, x, y);
+        const i = (y * camera.width + x) * 4;
+        if (color[0] !== pixels[i] || color[1] !== pixels[i + 1] || color[2] !== pixels[i + 2]) mismatches++;
+      }
+    }
+  }
+  return mismatches;
+}
+
+/**
+ * Heap before and after `frames` frames, and how many garbage collections ran
+ * meanwhile (each young-generation collection means about 1 MB was allocated).
+ */
+async function heapAcross(c, frames) {
+  let collections = 0;
+  const observer = new PerformanceObserver((list) => { collections += list.getEntries().length; });
+  observer.observe({ entryTypes: ['gc'] });
+  globalThis.gc?.();
+  const before = process.memoryUsage().heapUsed;
+  let after = before;
+  for (let i = 0; i < frames; i++) {
+    render(c.scene, c.camera, c.target);
+    after = process.memoryUsage().heapUsed;
+    await new Promise((resolve) => setImmediate(resolve)); // GC entries arrive on a later tick
+  }
+  observer.disconnect();
+  return { before, after, collections };
+}
+
+function row(cells, widths) {
+  return cells.map((cell, i) => (i === 0 ? String(cell).padEnd(widths[i]) : String(cell).padStart(widths[i]))).join('  ');
+}
+
+function report(cases, times) {
+  const widths = [34, 12, 10, 10, 10];
+  console.log(row(['case', 'median ms', 'Mpx/s', 'min ms', 'max ms'], widths));
+  console.log('-'.repeat(widths.reduce((a, b) => a + b + 2, -2)));
+  const medians = cases.map((c, k) => {
+    const ms = median(times[k]);
+    const mpx = (c.camera.width * c.camera.height) / (ms * 1000);
+    console.log(row([c.label, ms.toFixed(2), mpx.toFixed(2), Math.min(...times[k]).toFixed(2), Math.max(...times[k]).toFixed(2)], widths));
+    return ms;
+  });
+  return medians;
+}
+
+const mismatches = inspectorMatchesRender();
+console.log(`inspectPixel vs render, 64×48, both scenes: ${mismatches === 0 ? 'identical' : `${mismatches} pixels differ`}`);
+if (mismatches) process.exitCode = 1;
+console.log(`Node ${process.version}, one thread, ${FRAMES} frames per case after ${WARMUP} warm-up frames\n`);
+
+const large = [makeCase('(a) Lambert + shadows, 640×480', false, 640, 480), makeCase('(b) full shading, 640×480', true, 640, 480)];
+const small = [makeCase('(a) Lambert + shadows, 160×120', false, 160, 120), makeCase('(b) full shading, 160×120', true, 160, 120)];
+const [a, b] = report(large, timeSideBySide(large, FRAMES));
+const [as, bs] = report(small, timeSideBySide(small, FRAMES * 4)).map((ms) => ms);
+console.log(`\nratio (a)/(b) of median times: ${(a / b).toFixed(2)} at 640×480, ${(as / bs).toFixed(2)} at 160×120` +
+  ` (full shading costs ${(b / a).toFixed(1)}× and ${(bs / as).toFixed(1)}×)`);
+
+const mb = (bytes) => `${(bytes / 1048576).toFixed(2)} MB`;
+for (const c of large) {
+  const { before, after, collections } = await heapAcross(c, 10);
+  console.log(`heap, 10 frames of ${c.label}: ${mb(before)} before, ${mb(after)} after, ${collections} collections` +
+    `${globalThis.gc ? '' : ' (run with node --expose-gc for a clean "before")'}`);
+}
