@@ -1,7 +1,8 @@
 import { defineConfig } from '@playwright/test';
 import { findBrowser } from './scripts/find-browser.js';
 
-const PORT = 5199;
+// PW_PORT lets several test runs share a machine without sharing a server.
+const PORT = Number(process.env.PW_PORT ?? 5199);
 const executablePath = findBrowser() ?? undefined;
 
 // Screenshots are of traced canvases only, at a pinned viewport, headless.
