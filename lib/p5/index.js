@@ -1,0 +1,9 @@
+/**
+ * The p5 adapter of the Raytracing Sketchbook: a tracer view for sketches,
+ * the inspector panel that explains the selected pixel, and the page contract
+ * (`document.body.dataset.render`). The only part of lib/ that imports p5.
+ */
+export { createTracerView, TracerView, pixelAt } from './tracer-view.js';
+export { createInspector, Inspector, answerLine, formatNumber, formatVector, formatAngle, pixelCSV, routesAgree } from './inspector.js';
+export { registerView, pageRenderState } from './page-state.js';
+// Diagrams (side/top view, geometric construction, parabola):

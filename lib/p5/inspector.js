@@ -1,0 +1,331 @@
+/**
+ * The inspector panel: the whole story of the selected pixel, in the
+ * lesson's words and numbers. It follows a tracer view's selection and shows
+ * what `inspectPixel` (lib/explain.js) records — the very values the renderer
+ * computed:
+ *   - the answer line `Pixel: X,Y; H: a; V: b` (the class activity's format);
+ *   - the final colour: swatch, hex and the nearest simple colour name;
+ *   - the ray R(t) = Ro + Rd·t and what it hit (t, point, normal, incidence);
+ *   - each light: facing it or not, in shadow or not, what it added;
+ *   - per sphere, both routes: A, B, C, discriminant → roots t0, t1, and
+ *     L, tca, d², thc → t0, t1, with a mark that the two routes agree.
+ * Every value sits in an element with data attributes (`data-field`, and
+ * `data-sphere`/`data-route` or `data-light` where needed) and its full
+ * precision in `data-value`, so tests and worksheets can read it.
+ */
+import { inspectPixel } from '../explain.js';
+import { toHex, colorName } from '../color.js';
+import { show } from '../check.js';
+import { useStyle, element } from './dom.js';
+
+/** Relative tolerance within which the two intersection routes "agree". */
+export const AGREE_TOLERANCE = 1e-9;
+
+/**
+ * Creates an inspector panel that follows `view`'s selected pixel.
+ * @param {object} options
+ * @param {import('./tracer-view.js').TracerView} options.view
+ * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] default: beside the view (its parent)
+ * @returns {Inspector}
+ */
+export function createInspector({ view, parent } = {}) {
+  return new Inspector({ view, parent });
+}
+
+export class Inspector {
+  /** The last `inspectPixel` record shown, or null. */
+  record = null;
+  #unsubscribe;
+
+  constructor({ view, parent }) {
+    if (!view || typeof view.onSelect !== 'function') throw new TypeError(`view must be a tracer view (createTracerView), got ${show(view)}`);
+    this.view = view;
+    useStyle();
+    this.element = element('section', { class: 'rt-inspector', 'data-inspector': '', 'aria-live': 'polite', 'aria-label': 'Pixel inspector' });
+    this.answer = element('p', { class: 'rt-answer', 'data-answer': '' });
+    this.body = element('div', { class: 'rt-inspector-body' });
+    this.element.append(this.answer, this.body, this.#csvTools());
+    resolveParent(parent, view).append(this.element);
+    this.#unsubscribe = view.onSelect((selected) => this.show(selected));
+    this.show(view.selected);
+  }
+
+  /** Shows pixel `{ x, y }` of the view's picture (null: the hint to click one). */
+  show(selected) {
+    if (!selected) {
+      this.record = null;
+      this.answer.textContent = '';
+      this.body.replaceChildren(element('p', { class: 'rt-hint' },
+        'Click a pixel of the picture, or click it once and move with the arrow keys (Shift: 10 at a time).'));
+      this.element.dataset.state = 'empty';
+      return;
+    }
+    const r = this.record = inspectPixel(this.view.scene, this.view.camera, selected.x, selected.y);
+    this.answer.textContent = answerLine(r);
+    this.element.dataset.x = String(r.x);
+    this.element.dataset.y = String(r.y);
+    this.body.replaceChildren(colorSection(r), raySection(r), hitSection(r), lightsSection(r), quadraticSection(r), geometricSection(r));
+    this.csvBox.value = pixelCSV(r);
+    this.status.textContent = '';
+    this.element.dataset.state = 'shown';
+  }
+
+  /** The shown pixel's data as CSV (one row per sphere), or '' when none. */
+  csv() {
+    return this.record ? pixelCSV(this.record) : '';
+  }
+
+  /**
+   * Copies the CSV to the clipboard when the browser allows it; the text is
+   * always in the panel's text box too, selected, ready for Ctrl+C.
+   */
+  async copyCSV() {
+    const text = this.csv();
+    this.csvBox.value = text;
+    this.csvDetails.open = true;
+    this.csvBox.select();
+    if (!text) { this.status.textContent = 'Select a pixel first.'; return false; }
+    try {
+      await navigator.clipboard.writeText(text);
+      this.status.textContent = 'Copied: paste it into a spreadsheet.';
+      return true;
+    } catch {
+      this.status.textContent = 'Select the text below and press Ctrl+C (⌘C).';
+      return false;
+    }
+  }
+
+  /** Stops following the view and removes the panel. */
+  destroy() {
+    this.#unsubscribe();
+    this.element.remove();
+  }
+
+  #csvTools() {
+    const button = element('button', { type: 'button', class: 'rt-button', 'data-copy-csv': '' }, 'Copy CSV');
+    button.addEventListener('click', () => this.copyCSV());
+    this.status = element('span', { class: 'rt-status', 'data-copy-status': '', role: 'status' });
+    this.csvBox = element('textarea', { class: 'rt-csv', 'data-csv': '', rows: '6', readonly: '', spellcheck: 'false', 'aria-label': 'This pixel as CSV' });
+    this.csvDetails = element('details', { class: 'rt-csv-details' }, element('summary', {}, 'CSV text'), this.csvBox);
+    return element('footer', { class: 'rt-inspector-tools' }, element('div', { class: 'rt-row' }, button, this.status), this.csvDetails);
+  }
+}
+
+/* ---------------- formatting ---------------- */
+
+/**
+ * A number as the panel shows it: 4 significant digits (whole numbers of
+ * 1000 and more in full), powers of ten for the very large and very small,
+ * "—" for null (no value: no root, no hit).
+ */
+export function formatNumber(n) {
+  if (n === null || n === undefined || Number.isNaN(n)) return '—';
+  if (n === Infinity) return '∞';
+  if (n === -Infinity) return '-∞';
+  if (n === 0) return '0';
+  const a = Math.abs(n);
+  if (a >= 1e7 || a < 1e-4) return n.toExponential(3).replace(/\.?0+e/, 'e').replace('e+', 'e');
+  if (a >= 1000) return String(Math.round(n));
+  return String(Number(n.toPrecision(4)));
+}
+
+/** A vector `{x, y, z}` as "(x, y, z)". */
+export function formatVector(v) {
+  return v ? `(${formatNumber(v.x)}, ${formatNumber(v.y)}, ${formatNumber(v.z)})` : '—';
+}
+
+/** An angle with one decimal, as in the answer line ("−0.0" shown as "0.0"). */
+export function formatAngle(degrees) {
+  const text = degrees.toFixed(1);
+  return text === '-0.0' ? '0.0' : text;
+}
+
+/** The lesson's answer format: `Pixel: 10,12; H: 30.0; V: -8.2`. */
+export function answerLine({ x, y, h, v }) {
+  return `Pixel: ${x},${y}; H: ${formatAngle(h)}; V: ${formatAngle(v)}`;
+}
+
+/** What a number of roots means for the ray. */
+export function rootsMeaning(roots) {
+  return ['no hit', 'tangent', 'two hits'][roots];
+}
+
+/** True when both routes found the same number of roots and the same t0, t1 (relative 1e-9). */
+export function routesAgree(quadratic, geometric) {
+  return quadratic.roots === geometric.roots && close(quadratic.t0, geometric.t0) && close(quadratic.t1, geometric.t1);
+}
+
+function close(a, b) {
+  if (a === null || b === null) return a === b;
+  return Math.abs(a - b) <= AGREE_TOLERANCE * Math.max(1, Math.abs(a), Math.abs(b));
+}
+
+/** The name a sphere (or light) goes by in the panel. */
+function nameOf(object, fallback) {
+  return object?.name || fallback;
+}
+
+/* ---------------- sections ---------------- */
+
+/** A value cell: formatted text, full precision in data-value, addressed by data attributes. */
+function value(field, n, attributes = {}, text = formatNumber(n)) {
+  return element('span', { class: 'rt-value', 'data-field': field, 'data-value': n === null ? '' : String(n), ...attributes }, text);
+}
+
+function vectorValue(field, v, attributes = {}, text = formatVector(v)) {
+  return element('span', { class: 'rt-value', 'data-field': field, 'data-value': `${v.x},${v.y},${v.z}`, ...attributes }, text);
+}
+
+function textValue(field, text, attributes = {}) {
+  return element('span', { class: 'rt-value', 'data-field': field, 'data-value': text, ...attributes }, text);
+}
+
+function section(title, ...children) {
+  return element('section', { class: 'rt-section' }, element('h3', {}, title), ...children);
+}
+
+/** A two-column list of "term: value" rows. */
+function facts(rows) {
+  const dl = element('dl', { class: 'rt-facts' });
+  for (const [term, ...values] of rows) dl.append(element('dt', {}, term), element('dd', {}, ...values));
+  return dl;
+}
+
+function colorSection(r) {
+  const hex = toHex(r.color), name = colorName(r.color);
+  return element('div', { class: 'rt-color', 'data-section': 'color' },
+    element('span', { class: 'rt-swatch', 'data-field': 'swatch', style: `background: ${hex}`, title: hex }),
+    element('div', { class: 'rt-color-text' },
+      element('div', { class: 'rt-color-name' }, textValue('color-name', name)),
+      element('div', {}, textValue('hex', hex), ' ', textValue('rgb', `rgb(${r.color.join(', ')})`, { class: 'rt-value rt-muted' }))));
+}
+
+function raySection(r) {
+  return section('Ray R(t) = Ro + Rd·t', facts([
+    ['Ro (eye)', vectorValue('ray-origin', r.ray.origin)],
+    ['Rd (direction)', vectorValue('ray-direction', r.ray.direction)],
+    ['H, V', value('h', r.h, {}, `${formatAngle(r.h)}°`), ', ', value('v', r.v, {}, `${formatAngle(r.v)}°`)],
+  ]));
+}
+
+function hitSection(r) {
+  const hit = r.hit;
+  if (!hit) {
+    return section('Hit', element('p', { 'data-field': 'hit-object', 'data-value': '' },
+      'No hit: the ray meets nothing, so the pixel takes the background colour.'));
+  }
+  const name = nameOf(hit.object, `object ${hit.index}`);
+  return section('Hit', facts([
+    ['object', textValue('hit-object', name), hit.inside ? ' (from inside)' : ''],
+    ['t', value('hit-t', hit.t)],
+    ['point', vectorValue('hit-point', hit.point)],
+    ['normal N', vectorValue('hit-normal', hit.normal)],
+    ['incidence', value('incidence', hit.incidence, {}, `${formatNumber(hit.incidence)}°`), element('span', { class: 'rt-muted' }, ' between the ray and N')],
+  ]));
+}
+
+function lightsSection(r) {
+  const hit = r.hit;
+  if (!hit || hit.lights.length === 0) return element('div', { hidden: '' });
+  const rows = hit.lights.map((l, i) => {
+    const at = { 'data-light': String(i) };
+    const status = !l.facing ? 'faces away' : l.inShadow ? (l.transmission > 0 ? 'partly shadowed' : 'in shadow') : 'lit';
+    const added = l.contribution;
+    return element('tr', { class: `rt-light-${status.replace(' ', '-')}` },
+      element('td', {}, textValue('light', nameOf(l.light, `light ${i}`), at)),
+      element('td', {}, value('cos', l.cos, at)),
+      element('td', {}, element('span', { class: 'rt-value', 'data-field': 'in-shadow', 'data-value': String(l.inShadow), ...at }, status)),
+      element('td', {},
+        element('span', { class: 'rt-swatch rt-swatch-small', style: `background: ${toHex(added.map((c) => Math.min(1, c) * 255))}` }),
+        element('span', { class: 'rt-value', 'data-field': 'contribution', 'data-value': added.join(','), ...at }, `(${added.map(formatNumber).join(', ')})`)));
+  });
+  return section('Lights (one shadow ray each)', table(['light', 'cos θ', 'shadow ray', 'adds (r, g, b)'], rows));
+}
+
+function sphereCell(test, i) {
+  return element('th', { scope: 'row' }, nameOf(test.sphere, `sphere ${i}`));
+}
+
+function rowClass(r, test) {
+  return [test.sphere === r.hit?.object ? 'rt-hit-row' : '', test.quadratic.roots === 0 ? 'rt-miss-row' : ''].join(' ').trim();
+}
+
+function quadraticSection(r) {
+  const head = ['sphere', 'A', 'B', 'C', 'B² − 4AC', 'meaning', 't0', 't1'];
+  const rows = r.tests.map((test, i) => {
+    const q = test.quadratic, at = { 'data-sphere': String(i), 'data-route': 'quadratic' };
+    return element('tr', { class: rowClass(r, test) }, sphereCell(test, i),
+      ...['A', 'B', 'C', 'discriminant'].map((f) => element('td', {}, value(f, q[f], at))),
+      element('td', {}, element('span', { class: `rt-value rt-roots-${q.roots}`, 'data-field': 'meaning', 'data-value': String(q.roots), ...at }, rootsMeaning(q.roots))),
+      element('td', {}, value('t0', q.t0, at)),
+      element('td', {}, value('t1', q.t1, at)));
+  });
+  return section('Quadratic route: At² + Bt + C = 0', table(head, rows),
+    element('p', { class: 'rt-note' }, 'Discriminant < 0: no hit; = 0: tangent; > 0: two hits, t = (−B ± √(B² − 4AC)) / 2A. The nearest hit is the smallest positive t (highlighted row).'));
+}
+
+function geometricSection(r) {
+  const head = ['sphere', 'L = C − Ro', 'tca', 'd²', 'thc', 't0', 't1', 'agree'];
+  const rows = r.tests.map((test, i) => {
+    const g = test.geometric, at = { 'data-sphere': String(i), 'data-route': 'geometric' };
+    const agree = routesAgree(test.quadratic, g);
+    return element('tr', { class: rowClass(r, test) }, sphereCell(test, i),
+      element('td', {}, vectorValue('L', g.L, at, formatVector(g.L).replaceAll(', ', ','))), // narrow: the table is wide
+      ...['tca', 'd2', 'thc', 't0', 't1'].map((f) => element('td', {}, value(f, g[f], at))),
+      element('td', {}, element('span', {
+        class: `rt-value ${agree ? 'rt-agree' : 'rt-disagree'}`, 'data-field': 'agree', 'data-value': String(agree), ...at,
+        title: agree ? 'Both routes find the same roots' : 'The two routes disagree',
+      }, agree ? '✓' : '✗')));
+  });
+  return section('Geometric route: tca = L·Rd, d² = L·L − tca², thc = √(r² − d²)', table(head, rows),
+    element('p', { class: 'rt-note' }, 'd > r: the ray passes the sphere by. Otherwise t = tca ∓ thc — the same roots as the quadratic.'));
+}
+
+function table(head, rows) {
+  return element('div', { class: 'rt-table-wrap' }, element('table', { class: 'rt-table' },
+    element('thead', {}, element('tr', {}, ...head.map((h) => element('th', { scope: 'col' }, h)))),
+    element('tbody', {}, ...rows)));
+}
+
+/* ---------------- CSV ---------------- */
+
+const CSV_HEAD = ['x', 'y', 'H', 'V', 'sphere', 'A', 'B', 'C', 'discriminant', 'roots', 'meaning', 't0', 't1',
+  'L_x', 'L_y', 'L_z', 'tca', 'd2', 'thc', 'geometric_t0', 'geometric_t1', 'routes_agree',
+  'hit_object', 'hit_t', 'color_hex', 'color_name'];
+
+/**
+ * One pixel's record as CSV for worksheets: a header and one row per sphere
+ * (the pixel's own columns repeated on each), numbers as the panel shows
+ * them, empty cells for "no value".
+ */
+export function pixelCSV(r) {
+  const n = (x) => (x === null || x === undefined ? '' : formatNumber(x));
+  const hitName = r.hit ? nameOf(r.hit.object, `object ${r.hit.index}`) : '';
+  const pixel = [r.x, r.y, formatAngle(r.h), formatAngle(r.v)];
+  const after = [hitName, r.hit ? n(r.hit.t) : '', toHex(r.color), colorName(r.color)];
+  const rows = r.tests.map((test, i) => {
+    const q = test.quadratic, g = test.geometric;
+    return [...pixel, nameOf(test.sphere, `sphere ${i}`), n(q.A), n(q.B), n(q.C), n(q.discriminant), q.roots, rootsMeaning(q.roots),
+      n(q.t0), n(q.t1), n(g.L.x), n(g.L.y), n(g.L.z), n(g.tca), n(g.d2), n(g.thc), n(g.t0), n(g.t1),
+      routesAgree(q, g), ...after];
+  });
+  if (rows.length === 0) rows.push([...pixel, ...CSV_HEAD.slice(4, -4).map(() => ''), ...after]);
+  return [CSV_HEAD, ...rows].map((row) => row.map(csvCell).join(',')).join('\n') + '\n';
+}
+
+function csvCell(cell) {
+  const text = String(cell);
+  return /[",\n]/.test(text) ? `"${text.replace(/"/g, '""')}"` : text;
+}
+
+function resolveParent(parent, view) {
+  if (parent == null) return view.figure?.parentElement ?? document.body;
+  if (typeof parent === 'string') {
+    const found = document.getElementById(parent) ?? document.querySelector(parent);
+    if (!found) throw new TypeError(`parent: no element with id or selector ${show(parent)}`);
+    return found;
+  }
+  if (parent.elt instanceof HTMLElement) return parent.elt;
+  if (parent instanceof HTMLElement) return parent;
+  throw new TypeError(`parent must be an element, its id or a p5.Element, got ${show(parent)}`);
+}

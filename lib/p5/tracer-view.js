@@ -1,0 +1,488 @@
+/**
+ * The tracer view: a traced picture inside a p5 sketch, shown big with crisp
+ * pixels so that "pixel 10,12" is something a class can point at.
+ *
+ *   new p5((p) => {
+ *     p.setup = () => {
+ *       p.noCanvas(); // the view brings its own canvas
+ *       const view = createTracerView(p, { scene: classScene(), camera: new Camera({ width: 64, height: 48 }) });
+ *       createInspector({ view });
+ *     };
+ *   });
+ *
+ * No draw() is needed: while there is work the view traces for `budgetMs` on
+ * every animation frame, blits, and goes idle once the picture is done (so it
+ * works the same whether the sketch has a draw(), animates, or calls noLoop()).
+ * A sketch that animates just calls `view.setCamera(…)` from its draw().
+ */
+import p5 from 'p5';
+import { ProgressiveRenderer, MODES as RENDER_MODES } from '../progressive.js';
+import { modeShader, modeLegend } from '../modes.js';
+import { pixelCoordinate, show } from '../check.js';
+import { registerView } from './page-state.js';
+import { useStyle, element } from './dom.js';
+
+/** On-screen pixels per traced pixel below which the grid would hide the picture. */
+const GRID_MIN_SCALE = 6;
+/** 'auto' scale: the picture fits this box (px) and the parent's width. */
+const AUTO_MAX_WIDTH = 640;
+const AUTO_MAX_HEIGHT_SHARE = 0.7;
+
+/** Every live view of each p5 instance, so `p.remove()` stops them too. */
+const viewsOf = new WeakMap();
+p5.registerAddon((p5Class, fn, lifecycles) => {
+  lifecycles.remove = function () {
+    for (const view of viewsOf.get(this) ?? []) view.destroy();
+  };
+});
+
+/**
+ * Creates a tracer view inside a p5 sketch (call it from setup()).
+ * @param {p5} p the sketch (instance mode), used for its parent node and its lifetime
+ * @param {object} options
+ * @param {import('../scene.js').Scene} options.scene
+ * @param {import('../camera.js').Camera} options.camera its width × height is the traced resolution
+ * @param {'auto'|number} [options.scale='auto'] on-screen pixels per traced pixel; 'auto' = the largest whole number that fits
+ * @param {boolean} [options.grid=false] draw the pixel grid (on an overlay, never into the picture)
+ * @param {string} [options.mode='shaded'] visual mode: 'shaded', 'discriminant', 'roots', 'h', 'v', 'normals', 'depth'
+ * @param {'coarse'|'scanline'|'slow'} [options.renderMode='coarse'] the order pixels are traced in
+ * @param {number} [options.budgetMs=8] tracing time per animation frame
+ * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where to put it (element, id or p5.Element); default the sketch's node
+ * @param {string} [options.label] a caption above the picture
+ * @param {boolean} [options.legend=true] show the mode's legend under the picture (not for 'shaded')
+ * @returns {TracerView}
+ */
+export function createTracerView(p, options = {}) {
+  return new TracerView(p, options);
+}
+
+export class TracerView {
+  #p; #renderer; #page; #imageData = null; #raf = 0; #destroyed = false;
+  #scale; #grid; #mode; #selected = null; #listeners = [];
+  #shownCurrent = null; #progressText = '';
+  #ctx; #overlayCtx; #onResize;
+
+  constructor(p, { scene, camera, scale = 'auto', grid = false, mode = 'shaded', renderMode = 'coarse', budgetMs = 8, parent, label, legend = true } = {}) {
+    this.#p = p;
+    this.#scale = checkScale(scale);
+    this.#grid = Boolean(grid);
+    this.budgetMs = checkBudget(budgetMs);
+    this.#mode = mode;
+    // The renderer checks scene, camera and renderMode; modeShader checks mode.
+    this.#renderer = new ProgressiveRenderer({ scene, camera, mode: renderMode, budgetMs: this.budgetMs, shader: modeShader(mode) });
+    this.showLegend = legend;
+
+    useStyle();
+    this.#buildDom(resolveParent(parent, p), label);
+    this.#page = registerView(this);
+    if (p) viewsOf.set(p, [...(viewsOf.get(p) ?? []), this]);
+    this.#onResize = () => this.#layout();
+    window.addEventListener('resize', this.#onResize);
+    this.#started();
+  }
+
+  /* ---------------- public API ---------------- */
+
+  /** The scene being traced. */
+  get scene() { return this.#renderer.scene; }
+  /** The camera (its width × height is the traced resolution). */
+  get camera() { return this.#renderer.camera; }
+  /** The visual mode ('shaded', 'discriminant', …). */
+  get mode() { return this.#mode; }
+  /** The render order ('coarse', 'scanline', 'slow'). */
+  get renderMode() { return this.#renderer.mode; }
+  /** The traced image's width and height in pixels. */
+  get width() { return this.#renderer.width; }
+  get height() { return this.#renderer.height; }
+  /** True once the whole picture is traced. */
+  get done() { return this.#renderer.done; }
+  /** Share of the picture traced, 0–1. */
+  get progress() { return this.#renderer.progress; }
+  /** The selected pixel `{ x, y }` in traced-image coordinates, or null. */
+  get selected() { return this.#selected && { ...this.#selected }; }
+  /** On-screen pixels per traced pixel right now. */
+  get scale() { return this.#screenScale(); }
+  /** The `<canvas data-tracer>` holding the traced image (and nothing else). */
+  get canvas() { return this.canvasElement; }
+  /** The progressive renderer doing the work (read its buffer, pass, current…). */
+  get renderer() { return this.#renderer; }
+
+  /** Traces a new scene, keeping camera, mode and selection. */
+  setScene(scene) { return this.#change({ scene }); }
+  /** Traces through a new camera (a new size changes the traced resolution). */
+  setCamera(camera) { return this.#change({ camera }); }
+  /** Shows another visual mode (see lib/modes.js). */
+  setMode(mode) {
+    const shader = modeShader(mode); // throws on an unknown mode, before anything changes
+    this.#mode = mode;
+    return this.#change({ shader });
+  }
+  /** Traces in another order: 'coarse', 'scanline' or 'slow'. */
+  setRenderMode(renderMode) {
+    if (!RENDER_MODES.includes(renderMode)) {
+      throw new RangeError(`renderMode must be one of ${RENDER_MODES.map((m) => `'${m}'`).join(', ')}, got ${show(renderMode)}`);
+    }
+    return this.#change({ mode: renderMode });
+  }
+  /** Sets the on-screen scale: 'auto' or a number of screen pixels per traced pixel. */
+  setScale(scale) {
+    this.#scale = checkScale(scale);
+    this.#layout();
+    return this;
+  }
+  /** Shows or hides the pixel grid. */
+  setGrid(on) {
+    this.#grid = Boolean(on);
+    this.#drawOverlay();
+    return this;
+  }
+  /** Traces the picture again from the start (after changing the scene in place, say). */
+  restart() { return this.#change({}); }
+
+  /**
+   * Selects pixel (x, y) of the traced image (whole numbers in range, else a
+   * RangeError); null clears the selection. Calls the onSelect listeners.
+   */
+  select(x, y) {
+    if (x === null) {
+      this.#selected = null;
+    } else {
+      pixelCoordinate(x, 'x', this.width);
+      pixelCoordinate(y, 'y', this.height);
+      this.#selected = { x, y };
+    }
+    this.#drawOverlay();
+    this.#notify();
+    return this;
+  }
+
+  /**
+   * Calls `cb({ x, y }, view)` whenever the selection changes, and again when
+   * the scene, camera or mode changes while a pixel is selected (its story
+   * changed). Returns a function that removes the listener.
+   */
+  onSelect(cb) {
+    if (typeof cb !== 'function') throw new TypeError(`onSelect needs a function, got ${show(cb)}`);
+    this.#listeners.push(cb);
+    return () => { this.#listeners = this.#listeners.filter((l) => l !== cb); };
+  }
+
+  /** The traced image (at traced resolution) as a PNG data URL. */
+  toPNG() {
+    return this.canvasElement.toDataURL('image/png');
+  }
+
+  /** Downloads the traced image as a PNG file at traced resolution. */
+  downloadPNG(filename = `trace-${this.width}x${this.height}-${this.#mode}.png`) {
+    const a = document.createElement('a');
+    a.href = this.toPNG();
+    a.download = filename;
+    a.click();
+  }
+
+  /**
+   * One frame of work: traces for `budgetMs`, blits what changed and updates
+   * the progress bar. The view calls it by itself on each animation frame
+   * while there is work; calling it by hand is harmless.
+   */
+  draw() {
+    if (this.#destroyed) return;
+    const r = this.#renderer;
+    const { changed, done } = r.step(this.budgetMs);
+    if (changed) this.#blit();
+    this.#showProgress();
+    const c = r.current;
+    if (c && (c.x !== this.#shownCurrent?.x || c.y !== this.#shownCurrent?.y)) this.#drawOverlay();
+    if (done) {
+      if (this.#shownCurrent) this.#drawOverlay(); // the "now tracing" marker goes
+      this.#page.done();
+      this.figure.dataset.state = 'done';
+    }
+  }
+
+  /** Stops tracing and removes the view from the page. */
+  destroy() {
+    if (this.#destroyed) return;
+    this.#destroyed = true;
+    cancelAnimationFrame(this.#raf);
+    window.removeEventListener('resize', this.#onResize);
+    this.#page.unregister();
+    this.figure.remove();
+  }
+
+  /* ---------------- rendering ---------------- */
+
+  #change(changes) {
+    this.#renderer.restart(changes); // checks everything before changing anything
+    const s = this.#selected;
+    if (s && (s.x >= this.width || s.y >= this.height)) {
+      this.#selected = { x: Math.min(s.x, this.width - 1), y: Math.min(s.y, this.height - 1) };
+    }
+    this.#started();
+    if (this.#selected) this.#notify();
+    return this;
+  }
+
+  /** A fresh render: resize if needed, clear, mark the page, start the frame loop. */
+  #started() {
+    const c = this.canvasElement, w = this.width, h = this.height;
+    if (c.width !== w || c.height !== h) {
+      c.width = w; c.height = h; // also clears the canvas
+      c.dataset.width = String(w);
+      c.dataset.height = String(h);
+      this.#layout();
+    }
+    this.#blit(); // the cleared buffer: the old picture must not pass for the new one
+    this.#showLegend();
+    this.figure.dataset.state = 'rendering';
+    this.#page.rendering();
+    this.#schedule();
+  }
+
+  #schedule() {
+    if (!this.#raf && !this.#destroyed) this.#raf = requestAnimationFrame(this.#frame);
+  }
+
+  #frame = () => {
+    this.#raf = 0;
+    this.draw();
+    if (!this.#renderer.done) this.#schedule();
+  };
+
+  /** Copies the renderer's buffer into the canvas; no allocation unless the buffer itself changed. */
+  #blit() {
+    const r = this.#renderer;
+    if (this.#imageData?.data !== r.buffer) this.#imageData = new ImageData(r.buffer, r.width, r.height);
+    this.#ctx.putImageData(this.#imageData, 0, 0);
+  }
+
+  #showProgress() {
+    const r = this.#renderer;
+    const percent = r.done ? 100 : Math.min(99, Math.floor(r.progress * 100));
+    const text = `${percent}% · ${formatRate(r.raysPerSecond)} rays/s`;
+    if (text === this.#progressText) return;
+    this.#progressText = text;
+    this.progressFill.style.width = `${percent}%`;
+    this.progressBar.setAttribute('aria-valuenow', String(percent));
+    this.progressText.textContent = text;
+  }
+
+  #showLegend() {
+    const box = this.legendElement;
+    box.replaceChildren();
+    box.hidden = !this.showLegend || this.#mode === 'shaded';
+    if (box.hidden) return;
+    const legend = modeLegend(this.#mode, this.scene, this.camera);
+    box.append(element('div', { class: 'rt-legend-title' }, legend.title));
+    const stops = element('div', { class: `rt-legend-stops rt-legend-${legend.kind}` });
+    if (legend.kind === 'gradient') {
+      const colors = legend.stops.map((s, i) => `${s.color} ${(100 * i) / (legend.stops.length - 1)}%`);
+      stops.append(element('div', { class: 'rt-legend-ramp', style: `background: linear-gradient(to right, ${colors.join(', ')})` }));
+      const labels = element('div', { class: 'rt-legend-labels' });
+      for (const s of legend.stops) labels.append(element('span', {}, s.label));
+      stops.append(labels);
+    } else {
+      for (const s of legend.stops) {
+        stops.append(element('span', { class: 'rt-legend-item' },
+          element('span', { class: 'rt-swatch rt-swatch-small', style: `background: ${s.color}` }), s.label));
+      }
+    }
+    box.append(stops);
+    if (legend.note) box.append(element('p', { class: 'rt-legend-note' }, legend.note));
+  }
+
+  /* ---------------- layout and overlay ---------------- */
+
+  #screenScale() {
+    if (this.#scale !== 'auto') return this.#scale;
+    const available = this.figure.parentElement?.clientWidth || AUTO_MAX_WIDTH;
+    const maxW = Math.min(available, AUTO_MAX_WIDTH);
+    const maxH = window.innerHeight * AUTO_MAX_HEIGHT_SHARE;
+    const fit = Math.min(maxW / this.width, maxH / this.height);
+    return fit >= 1 ? Math.floor(fit) : fit; // whole numbers keep every pixel the same size
+  }
+
+  /** Sizes the picture on screen and the overlay to match it. */
+  #layout() {
+    if (this.#destroyed) return;
+    const s = this.#screenScale();
+    const cssW = this.width * s, cssH = this.height * s;
+    this.canvasElement.style.width = `${cssW}px`;
+    this.canvasElement.style.height = `${cssH}px`;
+    const o = this.overlay, dpr = window.devicePixelRatio || 1;
+    o.style.width = `${cssW}px`;
+    o.style.height = `${cssH}px`;
+    o.width = Math.round(cssW * dpr);
+    o.height = Math.round(cssH * dpr);
+    this.figure.style.setProperty('--rt-picture-width', `${cssW}px`);
+    this.#drawOverlay();
+  }
+
+  /** Grid, the selected pixel's crosshair and the "now tracing" pixel, on the overlay only. */
+  #drawOverlay() {
+    const o = this.overlay, g = this.#overlayCtx;
+    const k = o.width / this.width; // overlay pixels per traced pixel
+    g.clearRect(0, 0, o.width, o.height);
+    if (this.#grid && k >= GRID_MIN_SCALE) drawGrid(g, this.width, this.height, k);
+    const current = this.#renderer.done ? null : this.#renderer.current;
+    this.#shownCurrent = current && { ...current };
+    if (current) outlinePixel(g, current.x, current.y, k, '#ffd400', 1);
+    if (this.#selected) drawCrosshair(g, this.#selected.x, this.#selected.y, k, o.width, o.height);
+  }
+
+  /* ---------------- DOM and input ---------------- */
+
+  #buildDom(parent, label) {
+    this.figure = element('figure', { class: 'rt-view', 'data-tracer-view': '' });
+    if (label) this.figure.append(element('figcaption', { class: 'rt-label' }, label));
+
+    const c = this.canvasElement = element('canvas', {
+      class: 'rt-canvas', 'data-tracer': '', tabindex: '0',
+      'aria-label': 'Traced picture: click a pixel, or use the arrow keys, to inspect it',
+    });
+    c.style.imageRendering = 'pixelated'; // inline too: crisp pixels even before the stylesheet loads
+    this.#ctx = c.getContext('2d');
+    this.overlay = element('canvas', { class: 'rt-overlay', 'data-overlay': '', 'aria-hidden': 'true' });
+    this.#overlayCtx = this.overlay.getContext('2d');
+    const stage = element('div', { class: 'rt-stage' }, c, this.overlay);
+
+    this.progressFill = element('div', { class: 'rt-progress-fill' });
+    this.progressText = element('span', { class: 'rt-progress-text', 'data-progress-text': '' });
+    this.progressBar = element('div', {
+      class: 'rt-progress', 'data-progress': '', role: 'progressbar',
+      'aria-valuemin': '0', 'aria-valuemax': '100', 'aria-label': 'Rendering progress',
+    }, this.progressFill, this.progressText);
+    const save = element('button', { type: 'button', class: 'rt-button', 'data-export': '', title: 'Download the traced image as a PNG, one pixel per traced pixel' }, 'Save PNG');
+    save.addEventListener('click', () => this.downloadPNG());
+    this.legendElement = element('div', { class: 'rt-legend', 'data-legend': '' });
+
+    this.figure.append(stage, element('div', { class: 'rt-bar' }, this.progressBar, save), this.legendElement);
+    parent.append(this.figure);
+    this.#listen(c);
+  }
+
+  #listen(c) {
+    const pick = (event) => {
+      const { x, y } = pixelAt(c, event.clientX, event.clientY, this.width, this.height);
+      if (x !== this.#selected?.x || y !== this.#selected?.y) this.select(x, y);
+    };
+    // Press, or press and drag, to scrub across pixels and watch the numbers change.
+    c.addEventListener('pointerdown', (event) => {
+      if (event.button !== 0) return;
+      c.focus({ preventScroll: true });
+      c.setPointerCapture?.(event.pointerId);
+      pick(event);
+    });
+    c.addEventListener('pointermove', (event) => {
+      if (event.buttons & 1 && c.hasPointerCapture?.(event.pointerId)) pick(event);
+    });
+    c.addEventListener('keydown', (event) => {
+      const step = ARROWS[event.key];
+      if (!step) return;
+      event.preventDefault(); // the page must not scroll
+      const n = event.shiftKey ? 10 : 1;
+      const s = this.#selected ?? { x: Math.floor(this.width / 2) - step[0] * n, y: Math.floor(this.height / 2) - step[1] * n };
+      this.select(clamp(s.x + step[0] * n, 0, this.width - 1), clamp(s.y + step[1] * n, 0, this.height - 1));
+    });
+  }
+
+  #notify() {
+    const s = this.selected;
+    for (const cb of this.#listeners) cb(s, this);
+  }
+}
+
+/* ---------------- helpers ---------------- */
+
+const ARROWS = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] };
+
+/**
+ * The traced-image pixel under a point on screen, whatever the canvas's
+ * on-screen size: client coordinates → share of the canvas's box → pixel.
+ */
+export function pixelAt(canvas, clientX, clientY, width, height) {
+  const box = canvas.getBoundingClientRect();
+  const x = Math.floor(((clientX - box.left) / box.width) * width);
+  const y = Math.floor(((clientY - box.top) / box.height) * height);
+  return { x: clamp(x, 0, width - 1), y: clamp(y, 0, height - 1) };
+}
+
+function drawGrid(g, w, h, k) {
+  g.save();
+  g.beginPath();
+  for (let x = 1; x < w; x++) { const X = Math.round(x * k) + 0.5; g.moveTo(X, 0); g.lineTo(X, h * k); }
+  for (let y = 1; y < h; y++) { const Y = Math.round(y * k) + 0.5; g.moveTo(0, Y); g.lineTo(w * k, Y); }
+  g.strokeStyle = 'rgba(0, 0, 0, 0.22)';
+  g.lineWidth = 1;
+  g.stroke();
+  g.restore();
+}
+
+/** A square around pixel (x, y): a dark and a light stroke, visible on any colour. */
+function outlinePixel(g, x, y, k, color, width) {
+  const X = Math.round(x * k), Y = Math.round(y * k), K = Math.max(1, Math.round(k));
+  g.save();
+  g.lineWidth = width + 2;
+  g.strokeStyle = 'rgba(0, 0, 0, 0.85)';
+  g.strokeRect(X - width / 2 - 0.5, Y - width / 2 - 0.5, K + width + 1, K + width + 1);
+  g.lineWidth = width;
+  g.strokeStyle = color;
+  g.strokeRect(X - width / 2 - 0.5, Y - width / 2 - 0.5, K + width + 1, K + width + 1);
+  g.restore();
+}
+
+/** Hair lines from the edges toward the selected pixel, stopping short of it, and a box around it. */
+function drawCrosshair(g, x, y, k, W, H) {
+  const cx = (x + 0.5) * k, cy = (y + 0.5) * k, gap = k / 2 + Math.max(6, k * 0.6);
+  g.save();
+  g.beginPath();
+  g.moveTo(0, cy); g.lineTo(cx - gap, cy);
+  g.moveTo(cx + gap, cy); g.lineTo(W, cy);
+  g.moveTo(cx, 0); g.lineTo(cx, cy - gap);
+  g.moveTo(cx, cy + gap); g.lineTo(cx, H);
+  g.lineWidth = 3;
+  g.strokeStyle = 'rgba(0, 0, 0, 0.45)';
+  g.stroke();
+  g.lineWidth = 1;
+  g.strokeStyle = 'rgba(255, 255, 255, 0.9)';
+  g.stroke();
+  g.restore();
+  outlinePixel(g, x, y, k, '#ffffff', Math.max(2, Math.round(k / 8)));
+}
+
+function clamp(v, lo, hi) {
+  return v < lo ? lo : v > hi ? hi : v;
+}
+
+function formatRate(n) {
+  if (n >= 1e6) return `${(n / 1e6).toFixed(1)}M`;
+  if (n >= 1e3) return `${Math.round(n / 1e3)}k`;
+  return String(Math.round(n));
+}
+
+function checkScale(scale) {
+  if (scale === 'auto') return scale;
+  if (typeof scale !== 'number' || !Number.isFinite(scale) || scale <= 0) {
+    throw new RangeError(`scale must be 'auto' or a number greater than 0, got ${show(scale)}`);
+  }
+  return scale;
+}
+
+function checkBudget(ms) {
+  if (typeof ms !== 'number' || !Number.isFinite(ms) || ms <= 0) {
+    throw new RangeError(`budgetMs must be a number of milliseconds greater than 0, got ${show(ms)}`);
+  }
+  return ms;
+}
+
+function resolveParent(parent, p) {
+  if (parent == null) return p?._userNode instanceof HTMLElement ? p._userNode : (document.querySelector('main') ?? document.body);
+  if (typeof parent === 'string') {
+    const found = document.getElementById(parent) ?? document.querySelector(parent);
+    if (!found) throw new TypeError(`parent: no element with id or selector ${show(parent)}`);
+    return found;
+  }
+  if (parent.elt instanceof HTMLElement) return parent.elt; // a p5.Element
+  if (parent instanceof HTMLElement) return parent;
+  throw new TypeError(`parent must be an element, its id or a p5.Element, got ${show(parent)}`);
+}
