@@ -1,0 +1,781 @@
+/**
+ * Diagrams a sketch places next to its tracer view, each drawn into a p5
+ * sketch `p` inside a box { x, y, w, h }, big and labelled for a projector:
+ *
+ *   drawSideView / drawTopView     the eye, the image plane, the spheres, the
+ *                                  selected ray, its normal and shadow rays
+ *   drawGeometricConstruction     L, tca, d, thc, r and t0, t1 for one sphere
+ *   drawParabola                  f(t) = At² + Bt + C and its roots
+ *   drawLegend, createLegendElement   the key of a visual mode
+ *
+ * `record` is `inspectPixel(scene, camera, x, y)`'s result; without one the
+ * diagrams draw the scene and ask for a click. Nothing here throws on a miss,
+ * a tangent ray, a ray starting inside a sphere or a huge ground sphere.
+ */
+import { intersectGeometric } from '../shapes/sphere.js';
+import { isHuge } from '../modes.js';
+import { element } from './dom.js';
+
+/* ---- the diagrams' palette and type, chosen to read from the back of a room ---- */
+const INK = '#1d2433';
+const MUTED = '#6b7280';
+const FAINT = '#d7dbe3';
+const PAPER = '#ffffff';
+const RAY = '#c2185b';
+const NORMAL = '#0b8a3e';
+const LIT = '#e0a000';
+const SHADOW = '#d62828';
+const CONSTRUCT = '#1f5fbf';
+const FONT = 'system-ui, -apple-system, "Segoe UI", Roboto, sans-serif';
+const SIZE = 14;
+
+/* ========================= side and top views ========================= */
+
+/**
+ * The side view: the scene cut along the y–z plane, seen from the right of
+ * the camera (−z, "forward", to the right; y up).
+ * @param {object} p a p5 instance
+ * @param {object} o
+ * @param {import('../scene.js').Scene} o.scene
+ * @param {import('../camera.js').Camera} o.camera
+ * @param {object|null} [o.record] inspectPixel's result, or null before a click
+ * @param {number} o.x
+ * @param {number} o.y
+ * @param {number} o.w
+ * @param {number} o.h
+ * @param {{umin:number, umax:number, vmin:number, vmax:number}} [o.bounds] world units along the view's axes (u = −z, v = y); default: fitted
+ */
+export function drawSideView(p, o) {
+  drawPlaneView(p, o, SIDE);
+}
+
+/**
+ * The top view: the scene seen from above, in the x–z plane (x to the right,
+ * −z, "forward", up the page). Same options as drawSideView, with u = x, v = −z.
+ */
+export function drawTopView(p, o) {
+  drawPlaneView(p, o, TOP);
+}
+
+const SIDE = {
+  title: 'Side view (y–z)',
+  axes: ['−z forward →', 'y up ↑'],
+  u: (q) => -q.z, v: (q) => q.y,
+  across: 'up', half: 'halfHeight', cells: 'height', cellOf: (r) => r.y, cellWord: 'row',
+  angle: (r) => ({ name: 'V', value: r.v }),
+  ahead: { u: 1, v: 0 },
+};
+const TOP = {
+  title: 'Top view (x–z)',
+  axes: ['x right →', '−z forward ↑'],
+  u: (q) => q.x, v: (q) => -q.z,
+  across: 'right', half: 'halfWidth', cells: 'width', cellOf: (r) => r.x, cellWord: 'column',
+  angle: (r) => ({ name: 'H', value: r.h }),
+  ahead: { u: 0, v: 1 },
+};
+
+function drawPlaneView(p, o, view) {
+  const { scene, camera, record = null, x, y, w, h } = o;
+  const content = panel(p, x, y, w, h, view.title + (record ? `  ·  pixel ${record.x},${record.y}` : ''));
+  if (!scene || !camera) {
+    placeholder(p, content, 'Pass a scene and a camera to draw this view.');
+    return closePanel(p);
+  }
+  const pr = (q) => ({ u: view.u(q), v: view.v(q) });
+  const eye = pr(camera.position);
+
+  // What the view must show: the eye, every ordinary sphere, the lights and
+  // the hit point (unless it lies far away on a huge sphere).
+  const box = o.bounds ? { ...o.bounds } : fitBounds(scene, camera, record, pr, eye);
+  const key = { top: content.y, height: 26 };
+  const area = { x: content.x, y: content.y, w: content.w, h: content.h - key.height };
+  const m = mapping(box, area, 0.06);
+  clip(p, area);
+
+  // Huge spheres first (the ground), then the frustum and image plane, then spheres.
+  const hugeOnes = scene.spheres.filter(isHuge);
+  for (const s of hugeOnes) hugeArc(p, m, pr(s.center), s.radius, eye, s.material.color, s === record?.hit?.object);
+
+  // Image plane at a display distance: any distance gives the same rays (similar triangles).
+  const span = Math.max(box.umax - box.umin, box.vmax - box.vmin);
+  const D = 0.14 * span;
+  const f = camera.forward, a = camera[view.across], half = camera[view.half] * D;
+  const centre = { x: camera.position.x + f.x * D, y: camera.position.y + f.y * D, z: camera.position.z + f.z * D };
+  const top = pr(offset(centre, a, half)), bottom = pr(offset(centre, a, -half));
+  const far = 4 * span;
+  for (const end of [top, bottom]) {
+    const dir = norm2(end.u - eye.u, end.v - eye.v);
+    dashed(p, m, eye, { u: eye.u + dir.u * far, v: eye.v + dir.v * far }, MUTED, 1.5, [6, 5]);
+  }
+  // straight ahead (the axis the angle is measured from)
+  dashed(p, m, eye, { u: eye.u + view.ahead.u * span * 0.3, v: eye.v + view.ahead.v * span * 0.3 }, FAINT, 1.5, [3, 4]);
+
+  for (const s of scene.spheres) if (!isHuge(s)) sphereCircle(p, m, pr(s.center), s.radius, s, s === record?.hit?.object);
+  for (const light of scene.lights) if (!light.object) lightGlyph(p, m.sx(pr(light.position).u), m.sy(pr(light.position).v), light.source?.name || 'light');
+
+  imagePlane(p, m, top, bottom, camera[view.cells], record ? view.cellOf(record) : null, record?.color, view.cellWord);
+  eyeGlyph(p, m.sx(eye.u), m.sy(eye.v));
+
+  if (record) {
+    const ray = record.ray, hit = record.hit;
+    const end = hit ? pr(hit.point) : pr(offset(ray.origin, ray.direction, far));
+    if (hit) {
+      for (const l of hit.lights) shadowRayLine(p, m, pr(hit.point), pr(l.position), l);
+      arrow(p, m, pr(hit.point), pr(offset(hit.point, hit.normal, 0.12 * span)), NORMAL, 3, 'N');
+    }
+    line(p, m, eye, end, RAY, 3.5, hit ? [] : [10, 6]);
+    if (hit) {
+      dot(p, m.sx(end.u), m.sy(end.v), 5, RAY);
+      const inView = m.sx(end.u) > area.x && m.sx(end.u) < area.x + area.w && m.sy(end.v) > area.y && m.sy(end.v) < area.y + area.h;
+      if (!inView) edgeNote(p, area, `hit at t = ${fmt(hit.t)}, off the diagram →`);
+    } else {
+      edgeNote(p, area, 'no hit: background colour');
+    }
+    angleArc(p, m, eye, view, pr(offset(ray.origin, ray.direction, 1)), view.angle(record));
+  } else {
+    message(p, area, 'Click a pixel to see its ray');
+  }
+  unclip(p);
+  axesKey(p, area, view.axes);
+  lineKey(p, { x: content.x, y: content.y + content.h - key.height + 4, w: content.w });
+  closePanel(p);
+}
+
+/** Bounds (u, v) around the eye, the ordinary spheres, point lights and a near hit. */
+function fitBounds(scene, camera, record, pr, eye) {
+  const b = { umin: eye.u, umax: eye.u, vmin: eye.v, vmax: eye.v };
+  const grow = (q, r = 0) => {
+    b.umin = Math.min(b.umin, q.u - r); b.umax = Math.max(b.umax, q.u + r);
+    b.vmin = Math.min(b.vmin, q.v - r); b.vmax = Math.max(b.vmax, q.v + r);
+  };
+  for (const s of scene.spheres) {
+    if (!isHuge(s)) grow(pr(s.center), s.radius);
+    else {
+      // the huge sphere's surface nearest the eye, so the ground line is in view
+      const c = pr(s.center), d = Math.hypot(eye.u - c.u, eye.v - c.v);
+      if (d > s.radius) grow({ u: c.u + ((eye.u - c.u) * s.radius) / d, v: c.v + ((eye.v - c.v) * s.radius) / d });
+    }
+  }
+  for (const light of scene.lights) grow(pr(light.position));
+  for (const o of scene.objects) if (!('radius' in o) && o.min && o.max) { grow(pr(o.min)); grow(pr(o.max)); }
+  const size = Math.max(b.umax - b.umin, b.vmax - b.vmin, 1);
+  if (record?.hit) {
+    const q = pr(record.hit.point);
+    // a hit far out on the ground is drawn off the edge, with a note
+    if (q.u > b.umin - size && q.u < b.umax + size && q.v > b.vmin - size && q.v < b.vmax + size) grow(q);
+  }
+  if (b.umax - b.umin < 1) { b.umin -= 1; b.umax += 1; }
+  if (b.vmax - b.vmin < 1) { b.vmin -= 1; b.vmax += 1; }
+  void camera;
+  return b;
+}
+
+function imagePlane(p, m, top, bottom, cells, selected, color, word) {
+  const x0 = m.sx(top.u), y0 = m.sy(top.v), x1 = m.sx(bottom.u), y1 = m.sy(bottom.v);
+  const len = Math.hypot(x1 - x0, y1 - y0) || 1;
+  const nx = -(y1 - y0) / len * 6, ny = (x1 - x0) / len * 6; // half the plane's drawn thickness
+  p.push();
+  p.stroke(INK); p.strokeWeight(1.5); p.fill(PAPER);
+  p.quad(x0 + nx, y0 + ny, x1 + nx, y1 + ny, x1 - nx, y1 - ny, x0 - nx, y0 - ny);
+  // a tick per pixel when there is room, else every 4th or 8th
+  const step = [1, 2, 4, 8, 16, 32, 64].find((k) => (len / cells) * k >= 4) ?? cells;
+  p.stroke(MUTED); p.strokeWeight(1);
+  for (let i = step; i < cells; i += step) {
+    const s = i / cells, cx = x0 + (x1 - x0) * s, cy = y0 + (y1 - y0) * s;
+    p.line(cx - nx, cy - ny, cx + nx, cy + ny);
+  }
+  if (selected !== null && selected >= 0 && selected < cells) {
+    const s0 = selected / cells, s1 = (selected + 1) / cells;
+    const ax = x0 + (x1 - x0) * s0, ay = y0 + (y1 - y0) * s0, bx = x0 + (x1 - x0) * s1, by = y0 + (y1 - y0) * s1;
+    p.stroke(RAY); p.strokeWeight(2);
+    p.fill(color ? p.color(color[0], color[1], color[2]) : PAPER);
+    const grow = Math.max(0, 5 - Math.hypot(bx - ax, by - ay)) / 2 / len; // at least 5 px long, to be seen
+    const gx = (x1 - x0) * grow, gy = (y1 - y0) * grow;
+    p.quad(ax - gx + nx * 1.6, ay - gy + ny * 1.6, bx + gx + nx * 1.6, by + gy + ny * 1.6, bx + gx - nx * 1.6, by + gy - ny * 1.6, ax - gx - nx * 1.6, ay - gy - ny * 1.6);
+  }
+  p.pop();
+  const lx = Math.max(x0, x1) + 10, ly = Math.min(y0, y1) - 8;
+  label(p, `image plane, ${cells} px`, lx, ly, { color: INK, align: 'left', size: 13 });
+  if (selected !== null) label(p, `${word} ${selected}`, lx, ly + 16, { color: RAY, align: 'left', size: 13, bold: true });
+}
+
+function sphereCircle(p, m, c, r, sphere, selected) {
+  const mat = sphere.material, emits = mat.isEmissive;
+  const rgb = (emits ? [1, 0.93, 0.55] : mat.color).map((v) => Math.min(1, v) * 255);
+  const cx = m.sx(c.u), cy = m.sy(c.v), d = 2 * r * m.s;
+  p.push();
+  p.fill(rgb[0], rgb[1], rgb[2], emits ? 230 : 170);
+  p.stroke(selected ? RAY : darker(rgb)); p.strokeWeight(selected ? 3 : 1.5);
+  p.circle(cx, cy, Math.max(d, 4));
+  p.pop();
+  if (emits) sunRays(p, cx, cy, Math.max(d / 2, 2));
+  if (sphere.name) label(p, sphere.name, cx, cy - Math.max(d / 2, 2) - 8, { color: INK, size: 12 });
+}
+
+/** A huge sphere (a ground) as the part of its circle inside the view. */
+function hugeArc(p, m, c, r, eye, color, selected) {
+  const vu = (m.box.umin + m.box.umax) / 2, vv = (m.box.vmin + m.box.vmax) / 2;
+  const diag = Math.hypot(m.box.umax - m.box.umin, m.box.vmax - m.box.vmin) * 3;
+  const theta = Math.atan2(vv - c.v, vu - c.u), alpha = Math.min(Math.PI, (1.5 * diag) / r);
+  const outside = Math.hypot(eye.u - c.u, eye.v - c.v) > r;
+  const rgb = color.map((v) => Math.min(1, v) * 255);
+  p.push();
+  if (outside) p.fill(rgb[0], rgb[1], rgb[2], 60); else p.noFill();
+  p.stroke(selected ? RAY : darker(rgb)); p.strokeWeight(selected ? 3 : 2);
+  p.beginShape();
+  for (let i = 0; i <= 96; i++) {
+    const a = theta - alpha + (2 * alpha * i) / 96;
+    p.vertex(m.sx(c.u + r * Math.cos(a)), m.sy(c.v + r * Math.sin(a)));
+  }
+  if (outside) {
+    const inner = Math.max(0, r - diag);
+    p.vertex(m.sx(c.u + inner * Math.cos(theta + alpha)), m.sy(c.v + inner * Math.sin(theta + alpha)));
+    p.vertex(m.sx(c.u + inner * Math.cos(theta - alpha)), m.sy(c.v + inner * Math.sin(theta - alpha)));
+    p.endShape(p.CLOSE);
+  } else p.endShape();
+  p.pop();
+  // where the arc crosses the view's middle: a label "ground, r = 10000"
+  const lx = m.sx(c.u + r * Math.cos(theta)), ly = m.sy(c.v + r * Math.sin(theta));
+  label(p, `r = ${fmt(r, 0)}`, Math.min(Math.max(lx, m.area.x + 60), m.area.x + m.area.w - 60), ly + 16, { color: MUTED, size: 12 });
+}
+
+function shadowRayLine(p, m, from, to, l) {
+  if (!l.facing) {
+    line(p, m, from, to, MUTED, 1.5, [2, 5]);
+    return;
+  }
+  line(p, m, from, to, l.inShadow ? SHADOW : LIT, l.inShadow ? 2.5 : 3, l.inShadow ? [8, 6] : []);
+}
+
+function angleArc(p, m, eye, view, along, angle) {
+  const ex = m.sx(eye.u), ey = m.sy(eye.v);
+  const a0 = Math.atan2(-view.ahead.v, view.ahead.u); // screen angle of "straight ahead"
+  const a1 = Math.atan2(-(along.v - eye.v), along.u - eye.u);
+  const r = 46;
+  p.push();
+  p.noFill(); p.stroke(RAY); p.strokeWeight(1.5);
+  let d = a1 - a0;
+  while (d > Math.PI) d -= 2 * Math.PI;
+  while (d < -Math.PI) d += 2 * Math.PI;
+  p.arc(ex, ey, 2 * r, 2 * r, Math.min(a0, a0 + d), Math.max(a0, a0 + d));
+  p.pop();
+  const mid = a0 + d / 2, lr = r + 30;
+  label(p, `${angle.name} = ${fmt(angle.value)}°`, ex + Math.cos(mid) * lr, ey + Math.sin(mid) * lr + (Math.abs(d) < 0.3 ? (d >= 0 ? -12 : 12) : 0), { color: RAY, bold: true });
+}
+
+function eyeGlyph(p, x, y) {
+  p.push();
+  p.stroke(INK); p.strokeWeight(2); p.fill(PAPER);
+  p.ellipse(x, y, 22, 13);
+  p.noStroke(); p.fill(INK); p.circle(x, y, 7);
+  p.pop();
+  label(p, 'eye (Ro)', x, y + 22, { color: INK, bold: true });
+}
+
+function lightGlyph(p, x, y, name) {
+  p.push();
+  p.fill('#ffd23f'); p.stroke('#b08000'); p.strokeWeight(1.5);
+  p.circle(x, y, 14);
+  p.pop();
+  sunRays(p, x, y, 7);
+  label(p, name, x, y - 20, { color: INK, size: 12 });
+}
+
+function sunRays(p, x, y, r) {
+  p.push();
+  p.stroke('#e0a000'); p.strokeWeight(2);
+  for (let i = 0; i < 8; i++) {
+    const a = (i * Math.PI) / 4;
+    p.line(x + Math.cos(a) * (r + 3), y + Math.sin(a) * (r + 3), x + Math.cos(a) * (r + 9), y + Math.sin(a) * (r + 9));
+  }
+  p.pop();
+}
+
+/** The key to the line styles, along the bottom of a view. */
+function lineKey(p, { x, y, w }) {
+  const items = [[RAY, [], 'ray'], [NORMAL, [], 'normal N'], [LIT, [], 'lit'], [SHADOW, [8, 6], 'in shadow'], [MUTED, [6, 5], 'field of view']];
+  let cx = x + 6;
+  const cy = y + 11;
+  p.push();
+  p.textFont(FONT); p.textSize(12);
+  const widths = items.map(([, , text]) => 34 + p.textWidth(text) + 12);
+  const total = widths.reduce((s, v) => s + v, 0);
+  cx = x + Math.max(6, (w - total) / 2);
+  items.forEach(([color, dash, text], i) => {
+    p.stroke(color); p.strokeWeight(3);
+    p.drawingContext.setLineDash(dash);
+    p.line(cx, cy, cx + 26, cy);
+    p.drawingContext.setLineDash([]);
+    p.noStroke(); p.fill(INK); p.textAlign(p.LEFT, p.CENTER);
+    p.text(text, cx + 32, cy);
+    cx += widths[i];
+  });
+  p.pop();
+}
+
+function axesKey(p, area, [across, upward]) {
+  label(p, across, area.x + area.w - 8, area.y + area.h - 12, { color: MUTED, align: 'right', size: 12 });
+  label(p, upward, area.x + 8, area.y + 14, { color: MUTED, align: 'left', size: 12 });
+}
+
+function edgeNote(p, area, text) {
+  label(p, text, area.x + area.w - 8, area.y + area.h - 30, { color: RAY, align: 'right', bold: true });
+}
+
+/* ========================= geometric construction ========================= */
+
+/**
+ * The lesson's geometric route for one ray and one sphere, drawn in the plane
+ * that holds the ray and the sphere's centre: Ro, Rd, C, L = C − Ro, tca
+ * along the ray, d from C to the ray, thc, r, and the hit points t0, t1, all
+ * with their values. A miss (d > r) and a ray starting inside (tca may be
+ * negative, t0 behind the eye) are drawn as such.
+ * @param {object} p a p5 instance
+ * @param {object} o
+ * @param {import('../shapes/sphere.js').Sphere} [o.sphere]
+ * @param {import('../ray.js').Ray} [o.ray]
+ * @param {object} [o.result] intersectGeometric(ray, sphere)'s result (computed when missing)
+ * @param {object} [o.record] instead of sphere/ray: an inspectPixel record (its focus sphere is used)
+ */
+export function drawGeometricConstruction(p, o) {
+  let { sphere, ray, result } = o;
+  const { x, y, w, h } = o;
+  if ((!sphere || !ray) && o.record) {
+    const test = focusTest(o.record);
+    sphere = test?.sphere; ray = o.record.ray; result = test?.geometric;
+  }
+  const name = sphere?.name ? ` · ${sphere.name} sphere` : '';
+  const content = panel(p, x, y, w, h, 'Geometric route' + name);
+  if (!sphere || !ray) {
+    placeholder(p, content, 'Click a pixel to see L, tca, d and thc for its ray.');
+    return closePanel(p);
+  }
+  const g = result ?? intersectGeometric(ray, sphere);
+  const r = sphere.radius, tca = g.tca, d = Math.sqrt(Math.max(0, g.d2));
+  const hit = g.roots > 0, inside = g.d2 + tca * tca < r * r; // |L| < r: the ray starts inside
+  const L = g.L ?? { x: sphere.center.x - ray.origin.x, y: sphere.center.y - ray.origin.y, z: sphere.center.z - ray.origin.z };
+
+  // the formulas with this ray's numbers
+  const lines = [
+    [`L = C − Ro = (${fmt(L.x)}, ${fmt(L.y)}, ${fmt(L.z)})`, INK],
+    [`tca = L·Rd = ${fmt(tca)}${tca < 0 ? (inside ? '  (< 0, but Ro is inside: fine)' : '  (< 0: C is behind Ro)') : ''}`, INK],
+    [`d² = L·L − tca² = ${fmt(g.d2)},  d = ${fmt(d)},  r = ${fmt(r)}`, INK],
+    hit ? [`thc = √(r² − d²) = ${fmt(g.thc)}`, INK] : ['d > r: the ray passes by, no hit', SHADOW],
+    hit ? [`t = tca ∓ thc:  t0 = ${fmt(g.t0)},  t1 = ${fmt(g.t1)}  →  ${g.t === null ? 'both behind the eye' : `t = ${fmt(g.t)}`}`, g.t === null ? SHADOW : RAY] : null,
+  ].filter(Boolean);
+  const lineHeight = 19;
+  lines.forEach(([text, color], i) => label(p, text, content.x + 8, content.y + 10 + i * lineHeight, { color, align: 'left', halo: false }));
+  const area = { x: content.x, y: content.y + lines.length * lineHeight + 10, w: content.w, h: content.h - lines.length * lineHeight - 10 };
+
+  // 2D frame: Ro at (0, 0), the ray along +u, C above it at (tca, d).
+  const t0 = hit ? g.t0 : null, t1 = hit ? g.t1 : null;
+  const box = { umin: Math.min(0, tca - r), umax: Math.max(0, tca + r), vmin: Math.min(0, d - r), vmax: d + r };
+  const m = mapping(box, area, 0.1);
+  const span = box.umax - box.umin;
+  clip(p, area);
+  const Ro = { u: 0, v: 0 }, C = { u: tca, v: d }, P = { u: tca, v: 0 };
+
+  // the sphere
+  const rgb = sphere.material.color.map((v) => Math.min(1, v) * 255);
+  p.push();
+  p.fill(rgb[0], rgb[1], rgb[2], 90); p.stroke(darker(rgb)); p.strokeWeight(2);
+  p.circle(m.sx(C.u), m.sy(C.v), 2 * r * m.s);
+  p.pop();
+
+  // the ray: solid ahead of Ro, faint behind it
+  const uEnd = box.umax + span, uStart = box.umin - span;
+  line(p, m, { u: uStart, v: 0 }, Ro, FAINT, 2, [5, 5]);
+  line(p, m, Ro, { u: uEnd, v: 0 }, RAY, 2.5, []);
+  // Rd: a unit direction, drawn a fixed 56 px long
+  screenArrow(p, m.sx(0), m.sy(0), m.sx(0) + 56, m.sy(0), RAY, 3);
+  label(p, 'Rd', m.sx(0) + 40, m.sy(0) + 16, { color: RAY, bold: true });
+
+  // L = C − Ro
+  arrow(p, m, Ro, C, CONSTRUCT, 2.5, null);
+  const Lmid = { x: (m.sx(0) + m.sx(C.u)) / 2, y: (m.sy(0) + m.sy(C.v)) / 2 };
+  label(p, 'L', Lmid.x - 10, Lmid.y - 12, { color: CONSTRUCT, bold: true, size: 16 });
+
+  // d: from C straight to the ray (meets it at P, the closest approach)
+  line(p, m, C, P, INK, 1.5, [4, 4]);
+  rightAngle(p, m.sx(P.u), m.sy(P.v), tca >= 0 ? -1 : 1);
+  label(p, `d = ${fmt(d)}`, m.sx(P.u) + 8, (m.sy(C.v) + m.sy(P.v)) / 2, { color: INK, align: 'left', bold: true });
+
+  // tca: a dimension line below the ray from Ro to P
+  dimension(p, m.sx(0), m.sx(P.u), m.sy(0) + 26, `tca = ${fmt(tca)}`, CONSTRUCT, true);
+
+  // r: from C to the near hit point, or toward the ray when it misses
+  const rEnd = hit ? { u: t0, v: 0 } : { u: tca, v: d - r };
+  line(p, m, C, rEnd, NORMAL, 2.5, []);
+  const rm = { x: (m.sx(C.u) + m.sx(rEnd.u)) / 2, y: (m.sy(C.v) + m.sy(rEnd.v)) / 2 };
+  label(p, `r = ${fmt(r)}`, rm.x - 8, rm.y, { color: NORMAL, align: 'right', bold: true });
+
+  if (hit) {
+    // thc: a dimension line above the ray from P back to t0
+    if (g.thc > 0) dimension(p, m.sx(t0), m.sx(P.u), m.sy(0) - 22, `thc = ${fmt(g.thc)}`, NORMAL, false);
+    for (const [t, name] of [[t0, 't0'], [t1, 't1']]) {
+      const behind = t <= 0, chosen = g.t !== null && t === g.t;
+      dot(p, m.sx(t), m.sy(0), chosen ? 7 : 5, behind ? MUTED : RAY);
+      if (chosen) ring(p, m.sx(t), m.sy(0), 12, RAY);
+      const text = g.roots === 1 && name === 't1' ? null : `${g.roots === 1 ? 't0 = t1' : name} = ${fmt(t)}${behind ? ' (behind)' : ''}`;
+      if (text) label(p, text, m.sx(t), m.sy(0) + (name === 't0' ? 48 : -40), { color: behind ? MUTED : RAY, bold: chosen });
+    }
+  } else {
+    label(p, 'd > r: no hit', m.sx(C.u), m.sy(d - r) + 20, { color: SHADOW, bold: true, size: 16 });
+  }
+  dot(p, m.sx(0), m.sy(0), 6, INK);
+  label(p, 'Ro', m.sx(0) - 6, m.sy(0) - 14, { color: INK, bold: true, align: 'right' });
+  dot(p, m.sx(C.u), m.sy(C.v), 6, INK);
+  label(p, 'C', m.sx(C.u) + 10, m.sy(C.v) - 10, { color: INK, bold: true, align: 'left' });
+  unclip(p);
+  closePanel(p);
+}
+
+/* ========================= the parabola ========================= */
+
+/**
+ * f(t) = At² + Bt + C, the lesson's quadratic, over a range around its roots
+ * (or its vertex when there are none): the roots marked and labelled, the
+ * vertex, and what the discriminant says (no hit, tangent, two hits).
+ * @param {object} p a p5 instance
+ * @param {object} o `{ A, B, C, t0, t1, x, y, w, h }` (t0, t1 may be null);
+ *   or `{ quadratic, … }` with intersectQuadratic's result, or `{ record, … }`
+ */
+export function drawParabola(p, o) {
+  let q = o;
+  if (o.quadratic) q = o.quadratic;
+  else if (o.A === undefined && o.record) q = focusTest(o.record)?.quadratic ?? {};
+  const { x, y, w, h } = o;
+  const content = panel(p, x, y, w, h, 'f(t) = At² + Bt + C' + (o.record ? `  ·  pixel ${o.record.x},${o.record.y}` : ''));
+  const { A, B, C } = q;
+  if (![A, B, C].every(Number.isFinite) || A === 0) {
+    placeholder(p, content, 'Click a pixel to see the quadratic of its ray.');
+    return closePanel(p);
+  }
+  const discriminant = B * B - 4 * A * C;
+  const roots = q.roots ?? (discriminant > 0 ? 2 : discriminant === 0 ? 1 : 0);
+  let t0 = q.t0 ?? null, t1 = q.t1 ?? null;
+  if (roots > 0 && (t0 === null || t1 === null)) {
+    const s = Math.sqrt(Math.max(0, discriminant));
+    t0 = (-B - s) / (2 * A); t1 = (-B + s) / (2 * A);
+  }
+  const tv = -B / (2 * A), fv = C - (B * B) / (4 * A);
+  const f = (t) => (A * t + B) * t + C;
+
+  const meaning = roots === 2 ? ['> 0: two roots, the ray goes in and out', RAY] : roots === 1 ? ['= 0: one root, the ray just touches', LIT] : ['< 0: no real root, no hit', SHADOW];
+  const lines = [
+    [`f(t) = ${fmt(A, 2)}t² ${sign(B)} ${fmt(Math.abs(B), 2)}t ${sign(C)} ${fmt(Math.abs(C), 2)}`, INK],
+    [`B² − 4AC = ${fmt(discriminant)} ${meaning[0]}`, meaning[1]],
+  ];
+  lines.forEach(([text, color], i) => label(p, text, content.x + 8, content.y + 10 + i * 19, { color, align: 'left', halo: false }));
+  const area = { x: content.x + 8, y: content.y + 2 * 19 + 14, w: content.w - 16, h: content.h - 2 * 19 - 14 - 24 };
+
+  // t range: the roots with room either side, else around the vertex
+  let lo, hi;
+  if (roots === 2) {
+    const pad = Math.max((t1 - t0) * 0.6, 1e-3 * Math.max(1, Math.abs(tv)));
+    lo = t0 - pad; hi = t1 + pad;
+  } else {
+    const halfWidth = Math.max(2 * Math.sqrt(Math.abs(fv) / Math.abs(A)), 0.05 * Math.max(1, Math.abs(tv)), 1);
+    lo = tv - halfWidth; hi = tv + halfWidth;
+  }
+  if (lo > 0 && lo < (hi - lo) * 0.5) lo = -(hi - lo) * 0.05; // t = 0 (the eye) is close: show it
+  let fmin = Math.min(0, fv), fmax = Math.max(0, f(lo), f(hi));
+  if (fmax - fmin === 0) fmax = fmin + 1;
+  const padF = (fmax - fmin) * 0.08;
+  fmin -= padF; fmax += padF;
+  const sx = (t) => area.x + ((t - lo) / (hi - lo)) * area.w;
+  const sy = (v) => area.y + area.h - ((v - fmin) / (fmax - fmin)) * area.h;
+
+  clip(p, area);
+  // f < 0 between the roots: the part of the ray inside the sphere
+  if (roots === 2) {
+    p.push(); p.noStroke(); p.fill(194, 24, 91, 28);
+    p.rect(sx(t0), sy(0), sx(t1) - sx(t0), Math.max(0, sy(fmin) - sy(0)));
+    p.pop();
+    label(p, 'f(t) < 0: inside the sphere', (sx(t0) + sx(t1)) / 2, Math.min(sy(0) + 22, area.y + area.h - 12), { color: RAY, size: 12 });
+  }
+  // axes
+  p.push();
+  p.stroke(INK); p.strokeWeight(2);
+  p.line(area.x, sy(0), area.x + area.w, sy(0));
+  if (lo < 0 && hi > 0) { p.strokeWeight(1.5); p.line(sx(0), area.y, sx(0), area.y + area.h); }
+  p.pop();
+  if (lo < 0 && hi > 0) label(p, 'eye, t = 0', sx(0) + 6, area.y + 12, { color: MUTED, align: 'left', size: 12 });
+  for (const t of niceTicks(lo, hi, 6)) {
+    p.push(); p.stroke(INK); p.strokeWeight(1); p.line(sx(t), sy(0) - 4, sx(t), sy(0) + 4); p.pop();
+    label(p, fmt(t, Math.abs(hi - lo) < 5 ? 1 : 0), sx(t), Math.min(sy(0) + 14, area.y + area.h - 6), { color: MUTED, size: 11 });
+  }
+  label(p, 't →', area.x + area.w - 6, sy(0) - 12, { color: INK, align: 'right', bold: true });
+
+  // the curve
+  p.push();
+  p.noFill(); p.stroke(CONSTRUCT); p.strokeWeight(3);
+  p.beginShape();
+  for (let i = 0; i <= 160; i++) {
+    const t = lo + ((hi - lo) * i) / 160;
+    p.vertex(sx(t), Math.max(area.y - 10, Math.min(area.y + area.h + 10, sy(f(t)))));
+  }
+  p.endShape();
+  p.pop();
+
+  // vertex and roots
+  dot(p, sx(tv), sy(fv), 5, CONSTRUCT);
+  label(p, `vertex t = −B/2A = ${fmt(tv)}`, sx(tv), sy(fv) + (roots === 0 ? 18 : -14) * (fv > 0 ? -1 : 1) * -1, { color: CONSTRUCT, size: 12 });
+  if (roots > 0) {
+    const pts = roots === 1 ? [[t0, 't0 = t1']] : [[t0, 't0'], [t1, 't1']];
+    for (const [t, name] of pts) {
+      dot(p, sx(t), sy(0), 7, t > 0 ? RAY : MUTED);
+      label(p, `${name} = ${fmt(t)}${t <= 0 ? ' (behind)' : ''}`, sx(t), sy(0) - 18, { color: t > 0 ? RAY : MUTED, bold: true });
+    }
+  }
+  unclip(p);
+  closePanel(p);
+}
+
+/* ========================= legends ========================= */
+
+/**
+ * A visual mode's legend (modeLegend's data) drawn into a p5 sketch: the title,
+ * a colour bar with its labels (or swatches), and the note.
+ */
+export function drawLegend(p, legend, { x, y, w, h }) {
+  const content = panel(p, x, y, w, h, legend?.title ?? 'Legend');
+  if (!legend?.stops?.length) {
+    placeholder(p, content, 'No legend for this mode.');
+    return closePanel(p);
+  }
+  let cy = content.y + 8;
+  if (legend.kind === 'gradient') {
+    const bx = content.x + 14, bw = content.w - 28, bh = 22;
+    const ctx = p.drawingContext;
+    const grad = ctx.createLinearGradient(bx, 0, bx + bw, 0);
+    legend.stops.forEach((s, i) => grad.addColorStop(i / (legend.stops.length - 1), s.color));
+    ctx.save(); ctx.fillStyle = grad; ctx.fillRect(bx, cy, bw, bh); ctx.strokeStyle = INK; ctx.lineWidth = 1; ctx.strokeRect(bx, cy, bw, bh); ctx.restore();
+    legend.stops.forEach((s, i) => {
+      const sx = bx + (bw * i) / (legend.stops.length - 1);
+      p.push(); p.stroke(INK); p.line(sx, cy + bh, sx, cy + bh + 5); p.pop();
+      const align = i === 0 ? 'left' : i === legend.stops.length - 1 ? 'right' : 'center';
+      label(p, s.label, sx, cy + bh + 15, { color: INK, size: 12, align, halo: false });
+    });
+    cy += bh + 34;
+  } else {
+    const cols = Math.max(1, Math.floor(content.w / 170)), colW = content.w / cols;
+    legend.stops.forEach((s, i) => {
+      const cx = content.x + 10 + (i % cols) * colW, ry = cy + Math.floor(i / cols) * 22;
+      p.push(); p.fill(s.color); p.stroke(INK); p.strokeWeight(1); p.rect(cx, ry, 16, 16); p.pop();
+      label(p, s.label, cx + 22, ry + 8, { color: INK, size: 12, align: 'left', halo: false });
+    });
+    cy += Math.ceil(legend.stops.length / cols) * 22 + 6;
+  }
+  if (legend.note) {
+    p.push();
+    p.noStroke(); p.fill(MUTED); p.textFont(FONT); p.textSize(12); p.textAlign(p.LEFT, p.TOP);
+    p.text(legend.note, content.x + 10, cy, content.w - 20, content.y + content.h - cy);
+    p.pop();
+  }
+  closePanel(p);
+}
+
+/**
+ * The same legend as a DOM element (for under a tracer view, which is its own
+ * canvas): `<div class="rt-legend" data-legend>` with the sketchbook's classes.
+ */
+export function createLegendElement(legend) {
+  const box = element('div', { class: 'rt-legend', 'data-legend': '' });
+  box.append(element('div', { class: 'rt-legend-title' }, legend?.title ?? 'Legend'));
+  const stops = element('div', { class: `rt-legend-stops rt-legend-${legend?.kind ?? 'swatches'}` });
+  const list = legend?.stops ?? [];
+  if (legend?.kind === 'gradient' && list.length > 1) {
+    const colors = list.map((s, i) => `${s.color} ${(100 * i) / (list.length - 1)}%`);
+    stops.append(element('div', { class: 'rt-legend-ramp', style: `background: linear-gradient(to right, ${colors.join(', ')})` }));
+    stops.append(element('div', { class: 'rt-legend-labels' }, ...list.map((s) => element('span', {}, s.label))));
+  } else {
+    for (const s of list) {
+      stops.append(element('span', { class: 'rt-legend-item' },
+        element('span', { class: 'rt-legend-swatch', style: `background: ${s.color}` }), s.label));
+    }
+  }
+  box.append(stops);
+  if (legend?.note) box.append(element('p', { class: 'rt-legend-note' }, legend.note));
+  return box;
+}
+
+/* ========================= which sphere to explain ========================= */
+
+/**
+ * The sphere test of a record worth explaining: the sphere the ray hits,
+ * else its closest miss (largest discriminant, skipping spheres wholly
+ * behind the eye) — the same choice as the discriminant mode. Null when the
+ * record has no sphere tests.
+ */
+export function focusTest(record) {
+  const tests = record?.tests ?? [];
+  const hit = tests.find((t) => t.sphere === record.hit?.object);
+  if (hit) return hit;
+  const ahead = tests.filter((t) => t.quadratic.roots === 0);
+  const pool = ahead.length ? ahead : tests;
+  return pool.reduce((best, t) => (!best || t.quadratic.discriminant > best.quadratic.discriminant ? t : best), null);
+}
+
+/* ========================= drawing helpers ========================= */
+
+/** A white card with a title; returns the content box under the title. */
+function panel(p, x, y, w, h, title) {
+  p.push();
+  p.drawingContext.save();
+  p.fill(PAPER); p.stroke(FAINT); p.strokeWeight(1);
+  p.rect(x + 0.5, y + 0.5, w - 1, h - 1, 6);
+  p.noStroke(); p.fill(INK); p.textFont(FONT); p.textStyle(p.BOLD); p.textSize(15);
+  p.textAlign(p.LEFT, p.TOP);
+  p.text(title, x + 10, y + 8);
+  p.textStyle(p.NORMAL);
+  return { x: x + 4, y: y + 30, w: w - 8, h: h - 34 };
+}
+
+function closePanel(p) {
+  p.drawingContext.restore();
+  p.pop();
+}
+
+function placeholder(p, content, text) {
+  message(p, content, text);
+}
+
+function message(p, area, text) {
+  p.push();
+  p.noStroke(); p.fill(255, 255, 255, 200);
+  p.rect(area.x + area.w / 2 - 150, area.y + area.h / 2 - 22, 300, 44, 8);
+  p.pop();
+  label(p, text, area.x + area.w / 2, area.y + area.h / 2, { color: INK, size: 16, bold: true });
+}
+
+/** World (u, v) → screen with one scale for both axes (v up), fitted to `area`. */
+function mapping(box, area, margin) {
+  const bw = box.umax - box.umin || 1, bh = box.vmax - box.vmin || 1;
+  const mx = area.w * margin, my = area.h * margin;
+  const s = Math.min((area.w - 2 * mx) / bw, (area.h - 2 * my) / bh);
+  const ox = area.x + area.w / 2 - ((box.umin + box.umax) / 2) * s;
+  const oy = area.y + area.h / 2 + ((box.vmin + box.vmax) / 2) * s;
+  return { s, box, area, sx: (u) => ox + u * s, sy: (v) => oy - v * s };
+}
+
+function clip(p, a) {
+  const ctx = p.drawingContext;
+  ctx.save();
+  ctx.beginPath(); ctx.rect(a.x, a.y, a.w, a.h); ctx.clip();
+}
+
+function unclip(p) {
+  p.drawingContext.restore();
+}
+
+function line(p, m, a, b, color, weight, dash) {
+  p.push();
+  p.stroke(color); p.strokeWeight(weight);
+  p.drawingContext.setLineDash(dash);
+  p.line(m.sx(a.u), m.sy(a.v), m.sx(b.u), m.sy(b.v));
+  p.drawingContext.setLineDash([]);
+  p.pop();
+}
+
+function dashed(p, m, a, b, color, weight, dash) {
+  line(p, m, a, b, color, weight, dash);
+}
+
+function arrow(p, m, a, b, color, weight, text) {
+  screenArrow(p, m.sx(a.u), m.sy(a.v), m.sx(b.u), m.sy(b.v), color, weight);
+  if (text) label(p, text, m.sx(b.u) + (m.sx(b.u) >= m.sx(a.u) ? 10 : -10), m.sy(b.v) - 8, { color, bold: true });
+}
+
+function screenArrow(p, x0, y0, x1, y1, color, weight) {
+  const a = Math.atan2(y1 - y0, x1 - x0), head = 6 + 2 * weight;
+  p.push();
+  p.stroke(color); p.strokeWeight(weight); p.fill(color);
+  p.line(x0, y0, x1 - Math.cos(a) * head * 0.6, y1 - Math.sin(a) * head * 0.6);
+  p.noStroke();
+  p.triangle(x1, y1, x1 - Math.cos(a - 0.4) * head, y1 - Math.sin(a - 0.4) * head, x1 - Math.cos(a + 0.4) * head, y1 - Math.sin(a + 0.4) * head);
+  p.pop();
+}
+
+function dot(p, x, y, r, color) {
+  p.push(); p.noStroke(); p.fill(color); p.circle(x, y, 2 * r); p.pop();
+}
+
+function ring(p, x, y, r, color) {
+  p.push(); p.noFill(); p.stroke(color); p.strokeWeight(2); p.circle(x, y, 2 * r); p.pop();
+}
+
+function rightAngle(p, x, y, dir) {
+  p.push(); p.noFill(); p.stroke(INK); p.strokeWeight(1);
+  p.line(x + dir * 9, y, x + dir * 9, y - 9); p.line(x + dir * 9, y - 9, x, y - 9);
+  p.pop();
+}
+
+/** A measurement line between two x positions at height y, with end bars and a label below or above it. */
+function dimension(p, xa, xb, y, text, color, below) {
+  p.push();
+  p.stroke(color); p.strokeWeight(1.5);
+  p.line(xa, y, xb, y);
+  p.line(xa, y - 5, xa, y + 5); p.line(xb, y - 5, xb, y + 5);
+  p.pop();
+  label(p, text, (xa + xb) / 2, y + (below ? 14 : -14), { color, bold: true });
+}
+
+/**
+ * Text with a white halo, so a label stays readable over lines and fills.
+ * Drawn on the canvas context directly: p5's text() would stroke over the fill.
+ */
+function label(p, text, x, y, { color = INK, size = SIZE, align = 'center', bold = false, halo = true } = {}) {
+  const ctx = p.drawingContext;
+  ctx.save();
+  ctx.font = `${bold ? 'bold ' : ''}${size}px ${FONT}`;
+  ctx.textAlign = align;
+  ctx.textBaseline = 'middle';
+  if (halo) {
+    ctx.lineJoin = 'round';
+    ctx.lineWidth = 4;
+    ctx.strokeStyle = 'rgba(255,255,255,0.9)';
+    ctx.strokeText(text, x, y);
+  }
+  ctx.fillStyle = color;
+  ctx.fillText(text, x, y);
+  ctx.restore();
+}
+
+function darker(rgb) {
+  return `rgb(${rgb.map((c) => Math.round(c * 0.6)).join(',')})`;
+}
+
+function offset(point, dir, s) {
+  return { x: point.x + dir.x * s, y: point.y + dir.y * s, z: point.z + dir.z * s };
+}
+
+function norm2(u, v) {
+  const len = Math.hypot(u, v) || 1;
+  return { u: u / len, v: v / len };
+}
+
+function sign(n) {
+  return n < 0 ? '−' : '+';
+}
+
+/** A number for a label: one decimal (or `digits`), '−' for minus, big ones as a×10ⁿ. */
+export function fmt(n, digits = 1) {
+  if (n === null || n === undefined || !Number.isFinite(n)) return '—';
+  const minus = n < 0 ? '−' : '';
+  const a = Math.abs(n);
+  if (a >= 1e6) {
+    const e = Math.floor(Math.log10(a));
+    return `${minus}${(a / 10 ** e).toFixed(2)}×10${[...String(e)].map((d) => '⁰¹²³⁴⁵⁶⁷⁸⁹'[d]).join('')}`;
+  }
+  const text = a.toFixed(a >= 1000 ? 0 : digits);
+  return Number(text) === 0 ? text : minus + text;
+}
+
+function niceTicks(lo, hi, count) {
+  const raw = (hi - lo) / count, mag = 10 ** Math.floor(Math.log10(raw));
+  const step = [1, 2, 5, 10].map((k) => k * mag).find((s) => s >= raw) ?? 10 * mag;
+  const ticks = [];
+  for (let t = Math.ceil(lo / step) * step; t <= hi; t += step) ticks.push(Math.abs(t) < step * 1e-9 ? 0 : t);
+  return ticks;
+}
