@@ -60,6 +60,7 @@ export class ProgressiveRenderer {
    * @param {object} [changes] `{ scene?, camera?, mode?, shader?, slowRaysPerStep? }`
    */
   restart(changes = {}) {
+    if (changes === null || typeof changes !== 'object') throw new TypeError(`changes must be an object like { camera }, got ${show(changes)}`);
     const scene = changes.scene ?? this.scene;
     const camera = changes.camera ?? this.camera;
     const mode = changes.mode ?? this.mode;

@@ -225,6 +225,7 @@ describe('progress and restarts', () => {
     expect(() => p.restart({ shader: 3 })).toThrow(TypeError);
     expect(() => p.restart({ camera: { width: 3 } })).toThrow(/camera must be a Camera/);
     expect(() => p.restart({ slowRaysPerStep: 0 })).toThrow(/slowRaysPerStep/);
+    expect(() => p.restart(null)).toThrow(/changes must be an object/);
     expect(p.mode).toBe('coarse');
     expect(p.progress).toBe(progress);
     expect(finish(p, 0)).toEqual(render(scene, camera));
