@@ -14,8 +14,14 @@ const _color = [0.5, 0.5, 0.5]; // doubles from the start (one array shape)
  * @returns {Uint8ClampedArray} RGBA, width·height·4 bytes, row by row from the top
  */
 export function render(scene, camera, target = new Uint8ClampedArray(camera.width * camera.height * 4)) {
-  for (let y = 0; y < camera.height; y++) {
-    for (let x = 0; x < camera.width; x++) renderPixel(scene, camera, x, y, target);
+  const { width, height } = camera;
+  copy(_ray.origin, camera.position); // every primary ray starts at the eye
+  for (let y = 0, i = 0; y < height; y++) {
+    for (let x = 0; x < width; x++, i += 4) {
+      camera.directionAt(x, y, _ray.direction);
+      trace(scene, _ray, _color);
+      writePixel(target, i, _color);
+    }
   }
   return target;
 }
