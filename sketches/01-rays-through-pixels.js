@@ -1,0 +1,71 @@
+/**
+ * 01 · Rays through pixels (slide "Background: Ray Tracing", Appel 1968).
+ *
+ * One ray leaves the eye through the centre of each pixel of the screen; the
+ * first thing it hits gives the pixel its colour. The picture is traced the
+ * way Appel described it: scanline by scanline, left to right, top to bottom.
+ * Point at (or click) a pixel to see its ray in the side view (its row, its
+ * vertical angle V) and the top view (its column, its horizontal angle H).
+ * Tick "slow motion" to watch one ray at a time.
+ */
+import p5 from 'p5';
+import { Camera, Scene, Sphere, PointLight, inspectPixel } from '../lib/index.js';
+import { createTracerView, createInspector, pixelAt } from '../lib/p5/index.js';
+import { drawSideView, drawTopView } from '../lib/p5/diagrams.js';
+
+// Try other numbers: the screen's size in pixels, how wide the eye sees, the spheres.
+const WIDTH = 32;
+const HEIGHT = 24;
+const FOV = 30; // vertical field of view, degrees
+const SPHERES = [
+  { name: 'pink', center: [0, 0, -20], radius: 4, color: [1, 0.32, 0.36] },
+  { name: 'blue', center: [7, 1, -30], radius: 3, color: [0.45, 0.6, 0.95] },
+  { name: 'ground', center: [0, -10004, -20], radius: 10000, color: [0.55, 0.55, 0.55] },
+];
+const LIGHT = [-10, 20, 8];
+const SLOW_RAYS_PER_FRAME = 2;
+
+function makeScene() {
+  const scene = new Scene({ background: [0.85, 0.92, 1], ambient: 0.2 });
+  for (const s of SPHERES) scene.add(Object.assign(new Sphere(s.center, s.radius, { color: s.color }), { name: s.name }));
+  return scene.add(new PointLight(LIGHT));
+}
+
+new p5((p) => {
+  let view, hovered = null, shown = '';
+
+  p.setup = () => {
+    p.createCanvas(600, 640).parent('diagram');
+    p.pixelDensity(1);
+    const camera = new Camera({ width: WIDTH, height: HEIGHT, fov: FOV });
+    view = createTracerView(p, { scene: makeScene(), camera, parent: 'picture', scale: 16, grid: true, renderMode: 'scanline', label: `The screen: ${WIDTH} × ${HEIGHT} pixels` });
+    view.renderer.slowRaysPerStep = SLOW_RAYS_PER_FRAME;
+    createInspector({ view, parent: 'picture' });
+
+    const slow = p.createCheckbox(' Slow motion: one ray at a time', false);
+    const again = p.createButton('Trace again');
+    again.class('rt-button');
+    const controls = p.createDiv().class('controls').parent('picture');
+    slow.parent(controls); again.parent(controls);
+    view.figure.after(controls.elt);
+    slow.changed(() => view.setRenderMode(slow.checked() ? 'slow' : 'scanline'));
+    again.mousePressed(() => view.restart());
+
+    // Pointing at a pixel shows its ray; leaving the picture shows the selected one again.
+    view.canvas.addEventListener('pointermove', (e) => { hovered = pixelAt(view.canvas, e.clientX, e.clientY, WIDTH, HEIGHT); });
+    view.canvas.addEventListener('pointerleave', () => { hovered = null; });
+  };
+
+  p.draw = () => {
+    // Which ray to draw: the one being traced (slow motion), else the pixel pointed at, else the selected one.
+    const tracing = view.renderMode === 'slow' && !view.done ? view.renderer.current : null;
+    const pixel = tracing ?? hovered ?? view.selected;
+    const key = pixel ? `${pixel.x},${pixel.y}` : 'none';
+    if (key === shown) return; // nothing new to draw
+    shown = key;
+    const record = pixel ? inspectPixel(view.scene, view.camera, pixel.x, pixel.y) : null;
+    p.background('#f6f7f9');
+    drawSideView(p, { scene: view.scene, camera: view.camera, record, x: 0, y: 0, w: 600, h: 315 });
+    drawTopView(p, { scene: view.scene, camera: view.camera, record, x: 0, y: 325, w: 600, h: 315 });
+  };
+}, document.getElementById('sketch'));
