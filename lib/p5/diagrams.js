@@ -84,52 +84,65 @@ function drawPlaneView(p, o, view) {
   const pr = (q) => ({ u: view.u(q), v: view.v(q) });
   const eye = pr(camera.position);
 
-  // What the view must show: the eye, every ordinary sphere, the lights and
-  // the hit point (unless it lies far away on a huge sphere).
-  const box = o.bounds ? { ...o.bounds } : fitBounds(scene, camera, record, pr, eye);
-  const key = { top: content.y, height: 26 };
-  const area = { x: content.x, y: content.y, w: content.w, h: content.h - key.height };
-  const m = mapping(box, area, 0.06);
+  const box = o.bounds ? { ...o.bounds } : fitBounds(scene, record, pr, eye, view.ahead);
+  const keyHeight = 26;
+  const area = { x: content.x, y: content.y, w: content.w, h: content.h - keyHeight };
+  const m = mapping(box, area, 0.05);
+  const span = Math.max(box.umax - box.umin, box.vmax - box.vmin);
+  const inArea = (q) => m.sx(q.u) > area.x + 4 && m.sx(q.u) < area.x + area.w - 4 && m.sy(q.v) > area.y + 4 && m.sy(q.v) < area.y + area.h - 4;
   clip(p, area);
 
   // Huge spheres first (the ground), then the frustum and image plane, then spheres.
-  const hugeOnes = scene.spheres.filter(isHuge);
-  for (const s of hugeOnes) hugeArc(p, m, pr(s.center), s.radius, eye, s.material.color, s === record?.hit?.object);
+  for (const s of scene.spheres) if (isHuge(s)) hugeArc(p, m, pr(s.center), s.radius, eye, s, s === record?.hit?.object);
 
-  // Image plane at a display distance: any distance gives the same rays (similar triangles).
-  const span = Math.max(box.umax - box.umin, box.vmax - box.vmin);
-  const D = 0.14 * span;
+  // The image plane at a display distance: any distance gives the same rays
+  // (similar triangles), so put it between the eye and the nearest sphere.
+  const D = imagePlaneDistance(scene, pr, eye, span);
   const f = camera.forward, a = camera[view.across], half = camera[view.half] * D;
-  const centre = { x: camera.position.x + f.x * D, y: camera.position.y + f.y * D, z: camera.position.z + f.z * D };
+  const centre = offset(camera.position, f, D);
   const top = pr(offset(centre, a, half)), bottom = pr(offset(centre, a, -half));
   const far = 4 * span;
   for (const end of [top, bottom]) {
     const dir = norm2(end.u - eye.u, end.v - eye.v);
-    dashed(p, m, eye, { u: eye.u + dir.u * far, v: eye.v + dir.v * far }, MUTED, 1.5, [6, 5]);
+    line(p, m, eye, { u: eye.u + dir.u * far, v: eye.v + dir.v * far }, MUTED, 1.5, [6, 5]);
   }
-  // straight ahead (the axis the angle is measured from)
-  dashed(p, m, eye, { u: eye.u + view.ahead.u * span * 0.3, v: eye.v + view.ahead.v * span * 0.3 }, FAINT, 1.5, [3, 4]);
+  // straight ahead: the axis the angle is measured from
+  line(p, m, eye, { u: eye.u + view.ahead.u * span * 0.35, v: eye.v + view.ahead.v * span * 0.35 }, MUTED, 1, [2, 4]);
 
-  for (const s of scene.spheres) if (!isHuge(s)) sphereCircle(p, m, pr(s.center), s.radius, s, s === record?.hit?.object);
-  for (const light of scene.lights) if (!light.object) lightGlyph(p, m.sx(pr(light.position).u), m.sy(pr(light.position).v), light.source?.name || 'light');
+  for (const s of scene.spheres) {
+    if (!isHuge(s) && !s.material.isEmissive) sphereCircle(p, m, pr(s.center), s.radius, s, s === record?.hit?.object);
+  }
+  // Lights: drawn where they are, or, when far off the view, as a marker on
+  // its edge in their direction (the shadow rays still point at them).
+  const hitAt = record?.hit ? pr(record.hit.point) : null;
+  for (const light of scene.lights) {
+    const at = pr(light.position), name = light.source?.name || 'light';
+    if (inArea(at)) {
+      if (light.object && !isHuge(light.object)) sphereCircle(p, m, at, light.object.radius, light.object, false);
+      else lightGlyph(p, m.sx(at.u), m.sy(at.v), name);
+    } else {
+      const from = hitAt ?? { u: (box.umin + box.umax) / 2, v: (box.vmin + box.vmax) / 2 };
+      const edge = toEdge(m.sx(from.u), m.sy(from.v), m.sx(at.u), m.sy(at.v), area, 16);
+      lightGlyph(p, edge.x, edge.y, `${name} (off view)`, area);
+    }
+  }
 
-  imagePlane(p, m, top, bottom, camera[view.cells], record ? view.cellOf(record) : null, record?.color, view.cellWord);
+  imagePlane(p, m, top, bottom, camera[view.cells], record ? view.cellOf(record) : null, record?.color, view);
   eyeGlyph(p, m.sx(eye.u), m.sy(eye.v));
 
   if (record) {
     const ray = record.ray, hit = record.hit;
-    const end = hit ? pr(hit.point) : pr(offset(ray.origin, ray.direction, far));
+    const end = hit ? hitAt : pr(offset(ray.origin, ray.direction, far));
     if (hit) {
-      for (const l of hit.lights) shadowRayLine(p, m, pr(hit.point), pr(l.position), l);
-      arrow(p, m, pr(hit.point), pr(offset(hit.point, hit.normal, 0.12 * span)), NORMAL, 3, 'N');
+      for (const l of hit.lights) shadowRayLine(p, m, hitAt, pr(l.position), l);
+      arrow(p, m, hitAt, pr(offset(hit.point, hit.normal, 0.1 * span)), NORMAL, 3, 'N');
     }
     line(p, m, eye, end, RAY, 3.5, hit ? [] : [10, 6]);
     if (hit) {
       dot(p, m.sx(end.u), m.sy(end.v), 5, RAY);
-      const inView = m.sx(end.u) > area.x && m.sx(end.u) < area.x + area.w && m.sy(end.v) > area.y && m.sy(end.v) < area.y + area.h;
-      if (!inView) edgeNote(p, area, `hit at t = ${fmt(hit.t)}, off the diagram →`);
+      if (!inArea(end)) edgeNote(p, area, `hit at t = ${fmt(hit.t)}, off the view →`);
     } else {
-      edgeNote(p, area, 'no hit: background colour');
+      edgeNote(p, area, 'no hit: the background colour');
     }
     angleArc(p, m, eye, view, pr(offset(ray.origin, ray.direction, 1)), view.angle(record));
   } else {
@@ -137,40 +150,76 @@ function drawPlaneView(p, o, view) {
   }
   unclip(p);
   axesKey(p, area, view.axes);
-  lineKey(p, { x: content.x, y: content.y + content.h - key.height + 4, w: content.w });
+  lineKey(p, { x: content.x, y: content.y + content.h - keyHeight + 4, w: content.w });
   closePanel(p);
 }
 
-/** Bounds (u, v) around the eye, the ordinary spheres, point lights and a near hit. */
-function fitBounds(scene, camera, record, pr, eye) {
+/**
+ * Bounds (u, v) around what matters: the eye (with room behind it for its
+ * labels), the ordinary spheres, boxes and a hit point. Lights count only
+ * when near; far ones become markers on the edge. A huge sphere adds just
+ * its surface nearest the eye, so the ground line shows.
+ */
+function fitBounds(scene, record, pr, eye, ahead) {
   const b = { umin: eye.u, umax: eye.u, vmin: eye.v, vmax: eye.v };
   const grow = (q, r = 0) => {
     b.umin = Math.min(b.umin, q.u - r); b.umax = Math.max(b.umax, q.u + r);
     b.vmin = Math.min(b.vmin, q.v - r); b.vmax = Math.max(b.vmax, q.v + r);
   };
   for (const s of scene.spheres) {
+    if (s.material.isEmissive) continue;
     if (!isHuge(s)) grow(pr(s.center), s.radius);
     else {
-      // the huge sphere's surface nearest the eye, so the ground line is in view
       const c = pr(s.center), d = Math.hypot(eye.u - c.u, eye.v - c.v);
       if (d > s.radius) grow({ u: c.u + ((eye.u - c.u) * s.radius) / d, v: c.v + ((eye.v - c.v) * s.radius) / d });
     }
   }
-  for (const light of scene.lights) grow(pr(light.position));
-  for (const o of scene.objects) if (!('radius' in o) && o.min && o.max) { grow(pr(o.min)); grow(pr(o.max)); }
-  const size = Math.max(b.umax - b.umin, b.vmax - b.vmin, 1);
+  for (const o of scene.objects) if (o.min && o.max) { grow(pr(o.min)); grow(pr(o.max)); }
+  let size = Math.max(b.umax - b.umin, b.vmax - b.vmin, 2);
   if (record?.hit) {
     const q = pr(record.hit.point);
     // a hit far out on the ground is drawn off the edge, with a note
     if (q.u > b.umin - size && q.u < b.umax + size && q.v > b.vmin - size && q.v < b.vmax + size) grow(q);
   }
-  if (b.umax - b.umin < 1) { b.umin -= 1; b.umax += 1; }
-  if (b.vmax - b.vmin < 1) { b.vmin -= 1; b.vmax += 1; }
-  void camera;
+  size = Math.max(b.umax - b.umin, b.vmax - b.vmin, 2);
+  const near = { umin: b.umin - 0.3 * size, umax: b.umax + 0.3 * size, vmin: b.vmin - 0.3 * size, vmax: b.vmax + 0.3 * size };
+  for (const light of scene.lights) {
+    const q = pr(light.position), r = light.object?.radius ?? 0;
+    if (q.u >= near.umin && q.u <= near.umax && q.v >= near.vmin && q.v <= near.vmax) grow(q, r < 100 ? r : 0);
+  }
+  // room behind the eye for its label and the angle's
+  grow({ u: eye.u - ahead.u * 0.18 * size, v: eye.v - ahead.v * 0.18 * size });
+  if (b.umax - b.umin < 2) { b.umin -= 1; b.umax += 1; }
+  if (b.vmax - b.vmin < 2) { b.vmin -= 1; b.vmax += 1; }
   return b;
 }
 
-function imagePlane(p, m, top, bottom, cells, selected, color, word) {
+/** Where to draw the image plane: 40% of the way to the nearest sphere, within limits. */
+function imagePlaneDistance(scene, pr, eye, span) {
+  let nearest = Infinity;
+  for (const s of scene.spheres) {
+    if (isHuge(s) || s.material.isEmissive) continue;
+    const c = pr(s.center);
+    nearest = Math.min(nearest, Math.hypot(c.u - eye.u, c.v - eye.v) - s.radius);
+  }
+  const D = Number.isFinite(nearest) && nearest > 0 ? 0.4 * nearest : 0.15 * span;
+  return Math.min(0.25 * span, Math.max(0.08 * span, D));
+}
+
+/** The point where the segment from (x0, y0) toward (x1, y1) leaves `area` shrunk by `inset`. */
+function toEdge(x0, y0, x1, y1, area, inset) {
+  const left = area.x + inset, right = area.x + area.w - inset, top = area.y + inset, bottom = area.y + area.h - inset;
+  x0 = Math.min(right, Math.max(left, x0)); y0 = Math.min(bottom, Math.max(top, y0));
+  const dx = x1 - x0, dy = y1 - y0;
+  let s = 1;
+  if (dx > 0) s = Math.min(s, (right - x0) / dx);
+  if (dx < 0) s = Math.min(s, (left - x0) / dx);
+  if (dy > 0) s = Math.min(s, (bottom - y0) / dy);
+  if (dy < 0) s = Math.min(s, (top - y0) / dy);
+  return { x: x0 + dx * s, y: y0 + dy * s };
+}
+
+function imagePlane(p, m, top, bottom, cells, selected, color, view) {
   const x0 = m.sx(top.u), y0 = m.sy(top.v), x1 = m.sx(bottom.u), y1 = m.sy(bottom.v);
   const len = Math.hypot(x1 - x0, y1 - y0) || 1;
   const nx = -(y1 - y0) / len * 6, ny = (x1 - x0) / len * 6; // half the plane's drawn thickness
@@ -194,9 +243,11 @@ function imagePlane(p, m, top, bottom, cells, selected, color, word) {
     p.quad(ax - gx + nx * 1.6, ay - gy + ny * 1.6, bx + gx + nx * 1.6, by + gy + ny * 1.6, bx + gx - nx * 1.6, by + gy - ny * 1.6, ax - gx - nx * 1.6, ay - gy - ny * 1.6);
   }
   p.pop();
-  const lx = Math.max(x0, x1) + 10, ly = Math.min(y0, y1) - 8;
-  label(p, `image plane, ${cells} px`, lx, ly, { color: INK, align: 'left', size: 13 });
-  if (selected !== null) label(p, `${word} ${selected}`, lx, ly + 16, { color: RAY, align: 'left', size: 13, bold: true });
+  const side = view === SIDE;
+  const lx = side ? (x0 + x1) / 2 : Math.max(x0, x1) + 12, ly = side ? Math.max(y0, y1) + 18 : (y0 + y1) / 2 - 8;
+  const align = side ? 'center' : 'left';
+  label(p, `image plane, ${cells} px`, lx, ly, { color: INK, align, size: 13 });
+  if (selected !== null) label(p, `${view.cellWord} ${selected}`, lx, ly + 16, { color: RAY, align, size: 13, bold: true });
 }
 
 function sphereCircle(p, m, c, r, sphere, selected) {
@@ -213,7 +264,8 @@ function sphereCircle(p, m, c, r, sphere, selected) {
 }
 
 /** A huge sphere (a ground) as the part of its circle inside the view. */
-function hugeArc(p, m, c, r, eye, color, selected) {
+function hugeArc(p, m, c, r, eye, sphere, selected) {
+  const color = sphere.material.color;
   const vu = (m.box.umin + m.box.umax) / 2, vv = (m.box.vmin + m.box.vmax) / 2;
   const diag = Math.hypot(m.box.umax - m.box.umin, m.box.vmax - m.box.vmin) * 3;
   const theta = Math.atan2(vv - c.v, vu - c.u), alpha = Math.min(Math.PI, (1.5 * diag) / r);
@@ -236,7 +288,7 @@ function hugeArc(p, m, c, r, eye, color, selected) {
   p.pop();
   // where the arc crosses the view's middle: a label "ground, r = 10000"
   const lx = m.sx(c.u + r * Math.cos(theta)), ly = m.sy(c.v + r * Math.sin(theta));
-  label(p, `r = ${fmt(r, 0)}`, Math.min(Math.max(lx, m.area.x + 60), m.area.x + m.area.w - 60), ly + 16, { color: MUTED, size: 12 });
+  label(p, `${sphere.name || 'sphere'}, r = ${fmt(r, 0)}`, Math.min(Math.max(lx, m.area.x + 80), m.area.x + m.area.w - 80), ly + 14, { color: MUTED, size: 12 });
 }
 
 function shadowRayLine(p, m, from, to, l) {
@@ -251,7 +303,7 @@ function angleArc(p, m, eye, view, along, angle) {
   const ex = m.sx(eye.u), ey = m.sy(eye.v);
   const a0 = Math.atan2(-view.ahead.v, view.ahead.u); // screen angle of "straight ahead"
   const a1 = Math.atan2(-(along.v - eye.v), along.u - eye.u);
-  const r = 46;
+  const r = 40;
   p.push();
   p.noFill(); p.stroke(RAY); p.strokeWeight(1.5);
   let d = a1 - a0;
@@ -259,8 +311,7 @@ function angleArc(p, m, eye, view, along, angle) {
   while (d < -Math.PI) d += 2 * Math.PI;
   p.arc(ex, ey, 2 * r, 2 * r, Math.min(a0, a0 + d), Math.max(a0, a0 + d));
   p.pop();
-  const mid = a0 + d / 2, lr = r + 30;
-  label(p, `${angle.name} = ${fmt(angle.value)}°`, ex + Math.cos(mid) * lr, ey + Math.sin(mid) * lr + (Math.abs(d) < 0.3 ? (d >= 0 ? -12 : 12) : 0), { color: RAY, bold: true });
+  label(p, `${angle.name} = ${fmt(angle.value)}°`, ex - 16, ey - 20, { color: RAY, bold: true, align: 'right' });
 }
 
 function eyeGlyph(p, x, y) {
@@ -272,13 +323,18 @@ function eyeGlyph(p, x, y) {
   label(p, 'eye (Ro)', x, y + 22, { color: INK, bold: true });
 }
 
-function lightGlyph(p, x, y, name) {
+/** A light as a small sun; on the view's edge (`area` given) its label goes beside it, inside. */
+function lightGlyph(p, x, y, name, area) {
   p.push();
   p.fill('#ffd23f'); p.stroke('#b08000'); p.strokeWeight(1.5);
   p.circle(x, y, 14);
   p.pop();
   sunRays(p, x, y, 7);
-  label(p, name, x, y - 20, { color: INK, size: 12 });
+  if (!area) return label(p, name, x, y - 20, { color: INK, size: 12 });
+  const nearTopOrBottom = y < area.y + 24 || y > area.y + area.h - 24;
+  const nearRight = x > area.x + area.w / 2;
+  if (nearTopOrBottom) label(p, name, x + (nearRight ? -20 : 20), y, { color: INK, size: 12, align: nearRight ? 'right' : 'left' });
+  else label(p, name, x + (nearRight ? -4 : 4), y + 22, { color: INK, size: 12, align: nearRight ? 'right' : 'left' });
 }
 
 function sunRays(p, x, y, r) {
@@ -293,29 +349,28 @@ function sunRays(p, x, y, r) {
 
 /** The key to the line styles, along the bottom of a view. */
 function lineKey(p, { x, y, w }) {
-  const items = [[RAY, [], 'ray'], [NORMAL, [], 'normal N'], [LIT, [], 'lit'], [SHADOW, [8, 6], 'in shadow'], [MUTED, [6, 5], 'field of view']];
+  const items = [[RAY, [], 'ray'], [NORMAL, [], 'normal N'], [LIT, [], 'lit'], [SHADOW, [8, 6], 'in shadow'], [MUTED, [2, 5], 'faces away']];
   let cx = x + 6;
   const cy = y + 11;
   p.push();
   p.textFont(FONT); p.textSize(12);
-  const widths = items.map(([, , text]) => 34 + p.textWidth(text) + 12);
+  const widths = items.map(([, , text]) => 30 + p.textWidth(text) + 12);
   const total = widths.reduce((s, v) => s + v, 0);
   cx = x + Math.max(6, (w - total) / 2);
   items.forEach(([color, dash, text], i) => {
     p.stroke(color); p.strokeWeight(3);
     p.drawingContext.setLineDash(dash);
-    p.line(cx, cy, cx + 26, cy);
+    p.line(cx, cy, cx + 22, cy);
     p.drawingContext.setLineDash([]);
     p.noStroke(); p.fill(INK); p.textAlign(p.LEFT, p.CENTER);
-    p.text(text, cx + 32, cy);
+    p.text(text, cx + 28, cy);
     cx += widths[i];
   });
   p.pop();
 }
 
 function axesKey(p, area, [across, upward]) {
-  label(p, across, area.x + area.w - 8, area.y + area.h - 12, { color: MUTED, align: 'right', size: 12 });
-  label(p, upward, area.x + 8, area.y + 14, { color: MUTED, align: 'left', size: 12 });
+  label(p, `${across}   ${upward}`, area.x + area.w - 8, area.y + area.h - 12, { color: MUTED, align: 'right', size: 12 });
 }
 
 function edgeNote(p, area, text) {
@@ -363,17 +418,17 @@ export function drawGeometricConstruction(p, o) {
     hit ? [`thc = √(r² − d²) = ${fmt(g.thc)}`, INK] : ['d > r: the ray passes by, no hit', SHADOW],
     hit ? [`t = tca ∓ thc:  t0 = ${fmt(g.t0)},  t1 = ${fmt(g.t1)}  →  ${g.t === null ? 'both behind the eye' : `t = ${fmt(g.t)}`}`, g.t === null ? SHADOW : RAY] : null,
   ].filter(Boolean);
-  const lineHeight = 19;
-  lines.forEach(([text, color], i) => label(p, text, content.x + 8, content.y + 10 + i * lineHeight, { color, align: 'left', halo: false }));
-  const area = { x: content.x, y: content.y + lines.length * lineHeight + 10, w: content.w, h: content.h - lines.length * lineHeight - 10 };
+  const lineHeight = 18;
+  lines.forEach(([text, color], i) => label(p, text, content.x + 8, content.y + 8 + i * lineHeight, { color, align: 'left', halo: false, size: 13 }));
+  const top = content.y + lines.length * lineHeight + 4;
+  const area = { x: content.x, y: top, w: content.w, h: content.y + content.h - top };
 
   // 2D frame: Ro at (0, 0), the ray along +u, C above it at (tca, d).
   const t0 = hit ? g.t0 : null, t1 = hit ? g.t1 : null;
-  const box = { umin: Math.min(0, tca - r), umax: Math.max(0, tca + r), vmin: Math.min(0, d - r), vmax: d + r };
-  const m = mapping(box, area, 0.1);
-  const span = box.umax - box.umin;
+  const m = constructionMapping(tca, d, r, area);
   clip(p, area);
   const Ro = { u: 0, v: 0 }, C = { u: tca, v: d }, P = { u: tca, v: 0 };
+  const x0 = m.sx(0), y0 = m.sy(0);
 
   // the sphere
   const rgb = sphere.material.color.map((v) => Math.min(1, v) * 255);
@@ -383,51 +438,106 @@ export function drawGeometricConstruction(p, o) {
   p.pop();
 
   // the ray: solid ahead of Ro, faint behind it
-  const uEnd = box.umax + span, uStart = box.umin - span;
-  line(p, m, { u: uStart, v: 0 }, Ro, FAINT, 2, [5, 5]);
-  line(p, m, Ro, { u: uEnd, v: 0 }, RAY, 2.5, []);
-  // Rd: a unit direction, drawn a fixed 56 px long
-  screenArrow(p, m.sx(0), m.sy(0), m.sx(0) + 56, m.sy(0), RAY, 3);
-  label(p, 'Rd', m.sx(0) + 40, m.sy(0) + 16, { color: RAY, bold: true });
+  p.push();
+  p.strokeWeight(2); p.stroke(FAINT); p.drawingContext.setLineDash([5, 5]);
+  p.line(area.x, y0, x0, y0);
+  p.drawingContext.setLineDash([]);
+  p.stroke(RAY); p.strokeWeight(2.5);
+  p.line(x0, y0, area.x + area.w, y0);
+  p.pop();
+  if (m.breakX !== null) breakMark(p, m.breakX, y0);
+  // Rd: a unit direction, drawn a fixed 50 px long
+  screenArrow(p, x0, y0, x0 + 50, y0, RAY, 3);
+  label(p, 'Rd', x0 + 34, y0 - 14, { color: RAY, bold: true });
 
   // L = C − Ro
   arrow(p, m, Ro, C, CONSTRUCT, 2.5, null);
-  const Lmid = { x: (m.sx(0) + m.sx(C.u)) / 2, y: (m.sy(0) + m.sy(C.v)) / 2 };
-  label(p, 'L', Lmid.x - 10, Lmid.y - 12, { color: CONSTRUCT, bold: true, size: 16 });
+  const lx = x0 + (m.sx(C.u) - x0) * 0.3, ly = y0 + (m.sy(C.v) - y0) * 0.3;
+  label(p, 'L', lx - 4, ly - 14, { color: CONSTRUCT, bold: true, size: 16 });
 
-  // d: from C straight to the ray (meets it at P, the closest approach)
+  // d: from C straight down to the ray, meeting it at P, the closest approach
   line(p, m, C, P, INK, 1.5, [4, 4]);
-  rightAngle(p, m.sx(P.u), m.sy(P.v), tca >= 0 ? -1 : 1);
-  label(p, `d = ${fmt(d)}`, m.sx(P.u) + 8, (m.sy(C.v) + m.sy(P.v)) / 2, { color: INK, align: 'left', bold: true });
+  if (d * m.s > 14) rightAngle(p, m.sx(P.u), y0, tca >= 0 ? -1 : 1);
+  label(p, `d = ${fmt(d)}`, m.sx(P.u) + 8, (m.sy(C.v) + y0) / 2 - (d * m.s < 30 ? 22 : 0), { color: INK, align: 'left', bold: true });
 
-  // tca: a dimension line below the ray from Ro to P
-  dimension(p, m.sx(0), m.sx(P.u), m.sy(0) + 26, `tca = ${fmt(tca)}`, CONSTRUCT, true);
-
-  // r: from C to the near hit point, or toward the ray when it misses
-  const rEnd = hit ? { u: t0, v: 0 } : { u: tca, v: d - r };
+  // r: from C to the near hit point (the right triangle d, thc, r), or
+  // straight toward the ray when it misses
+  const rEnd = hit && d > 0.15 * r ? { u: t0, v: 0 } : hit ? { u: tca, v: d + r } : { u: tca, v: d - r };
   line(p, m, C, rEnd, NORMAL, 2.5, []);
-  const rm = { x: (m.sx(C.u) + m.sx(rEnd.u)) / 2, y: (m.sy(C.v) + m.sy(rEnd.v)) / 2 };
-  label(p, `r = ${fmt(r)}`, rm.x - 8, rm.y, { color: NORMAL, align: 'right', bold: true });
+  // its label beside the middle, on the side away from the ray
+  const ex = m.sx(rEnd.u) - m.sx(C.u), ey = m.sy(rEnd.v) - m.sy(C.v), len = Math.hypot(ex, ey) || 1;
+  let nx = -ey / len, ny = ex / len;
+  if (ny > 0) { nx = -nx; ny = -ny; }
+  label(p, `r = ${fmt(r)}`, m.sx(C.u) + ex / 2 + nx * 16, m.sy(C.v) + ey / 2 + ny * 16, { color: NORMAL, bold: true, align: nx < -0.3 ? 'right' : nx > 0.3 ? 'left' : 'center' });
+
+  // below the ray: thc (from t0 to P) and tca (from Ro to P) as dimension lines
+  if (hit && g.thc > 0) dimension(p, m.sx(t0), m.sx(P.u), y0 + 40, `thc = ${fmt(g.thc)}`, NORMAL);
+  dimension(p, x0, m.sx(P.u), y0 + 58, `tca = ${fmt(tca)}`, CONSTRUCT, true);
+  if (m.breakX !== null) breakMark(p, m.breakX, y0 + 58);
 
   if (hit) {
-    // thc: a dimension line above the ray from P back to t0
-    if (g.thc > 0) dimension(p, m.sx(t0), m.sx(P.u), m.sy(0) - 22, `thc = ${fmt(g.thc)}`, NORMAL, false);
     for (const [t, name] of [[t0, 't0'], [t1, 't1']]) {
+      if (g.roots === 1 && name === 't1') continue;
       const behind = t <= 0, chosen = g.t !== null && t === g.t;
-      dot(p, m.sx(t), m.sy(0), chosen ? 7 : 5, behind ? MUTED : RAY);
-      if (chosen) ring(p, m.sx(t), m.sy(0), 12, RAY);
-      const text = g.roots === 1 && name === 't1' ? null : `${g.roots === 1 ? 't0 = t1' : name} = ${fmt(t)}${behind ? ' (behind)' : ''}`;
-      if (text) label(p, text, m.sx(t), m.sy(0) + (name === 't0' ? 48 : -40), { color: behind ? MUTED : RAY, bold: chosen });
+      dot(p, m.sx(t), y0, chosen ? 6 : 5, behind ? MUTED : RAY);
+      if (chosen) ring(p, m.sx(t), y0, 11, RAY);
+      const text = `${g.roots === 1 ? 't0 = t1' : name} = ${fmt(t)}${behind ? ' (behind)' : ''}`;
+      const left = name === 't0';
+      label(p, text, m.sx(t) + (left ? -6 : 6), y0 + 18, { color: behind ? MUTED : RAY, bold: chosen, align: left ? 'right' : 'left' });
     }
   } else {
-    label(p, 'd > r: no hit', m.sx(C.u), m.sy(d - r) + 20, { color: SHADOW, bold: true, size: 16 });
+    label(p, 'd > r: no hit', m.sx(C.u), m.sy(d - r) + 16, { color: SHADOW, bold: true, size: 15 });
   }
-  dot(p, m.sx(0), m.sy(0), 6, INK);
-  label(p, 'Ro', m.sx(0) - 6, m.sy(0) - 14, { color: INK, bold: true, align: 'right' });
+  dot(p, x0, y0, 6, INK);
+  label(p, 'Ro', x0 - 8, y0 - 14, { color: INK, bold: true, align: 'right' });
   dot(p, m.sx(C.u), m.sy(C.v), 6, INK);
-  label(p, 'C', m.sx(C.u) + 10, m.sy(C.v) - 10, { color: INK, bold: true, align: 'left' });
+  label(p, 'C', m.sx(C.u) + 10, m.sy(C.v) - 12, { color: INK, bold: true, align: 'left' });
   unclip(p);
   closePanel(p);
+}
+
+/**
+ * Screen mapping of the construction: true scale around the sphere. When Ro
+ * is far from the sphere, the empty stretch of ray between them is squeezed
+ * into a fixed gap marked with a break (//), so the sphere stays big; lines
+ * perpendicular to the ray (d) keep their right angles.
+ */
+function constructionMapping(tca, d, r, area) {
+  const pad = { left: 40, right: 34, top: 18, bottom: 76 };
+  const uL = tca - r, uR = tca + r, vmin = Math.min(0, d - r), vmax = d + r;
+  const gapPx = 96, h = area.h - pad.top - pad.bottom, w = area.w - pad.left - pad.right;
+  const breakLeft = uL > 0.6 * (uR - uL), breakRight = uR < -0.6 * (uR - uL);
+  let s, sx, breakX = null;
+  if (breakLeft || breakRight) {
+    s = Math.min((w - gapPx) / (uR - uL), h / (vmax - vmin));
+    const x = area.x + pad.left + (w - gapPx - (uR - uL) * s) / 2; // left end of the drawing
+    if (breakLeft) {
+      // Ro at x, then the squeezed gap, then the sphere at true scale
+      sx = (u) => (u >= uL ? x + gapPx + (u - uL) * s : u >= 0 ? x + (u / uL) * gapPx : x + u * s);
+      breakX = x + gapPx * 0.72;
+    } else {
+      // the sphere (behind the eye) at true scale, the squeezed gap, then Ro
+      const xR = x + (uR - uL) * s;
+      sx = (u) => (u <= uR ? x + (u - uL) * s : u <= 0 ? xR + ((u - uR) / -uR) * gapPx : xR + gapPx + u * s);
+      breakX = xR + gapPx * 0.4;
+    }
+  } else {
+    const umin = Math.min(0, uL), umax = Math.max(0, uR);
+    s = Math.min(w / (umax - umin), h / (vmax - vmin));
+    const x = area.x + pad.left + (w - (umax - umin) * s) / 2;
+    sx = (u) => x + (u - umin) * s;
+  }
+  const yTop = area.y + pad.top + (h - (vmax - vmin) * s) / 2;
+  return { s, sx, sy: (v) => yTop + (vmax - v) * s, breakX };
+}
+
+/** "//" across a line at (x, y): this stretch is not to scale. */
+function breakMark(p, x, y) {
+  p.push();
+  p.noStroke(); p.fill(PAPER); p.rect(x - 5, y - 8, 10, 16);
+  p.stroke(INK); p.strokeWeight(1.5);
+  p.line(x - 7, y + 7, x - 1, y - 7); p.line(x + 1, y + 7, x + 7, y - 7);
+  p.pop();
 }
 
 /* ========================= the parabola ========================= */
@@ -711,27 +821,34 @@ function rightAngle(p, x, y, dir) {
   p.pop();
 }
 
-/** A measurement line between two x positions at height y, with end bars and a label below or above it. */
-function dimension(p, xa, xb, y, text, color, below) {
+/** A measurement line between two x positions at height y, with end bars and its label on it (or below). */
+function dimension(p, xa, xb, y, text, color, below = false) {
   p.push();
   p.stroke(color); p.strokeWeight(1.5);
   p.line(xa, y, xb, y);
   p.line(xa, y - 5, xa, y + 5); p.line(xb, y - 5, xb, y + 5);
   p.pop();
-  label(p, text, (xa + xb) / 2, y + (below ? 14 : -14), { color, bold: true });
+  if (below) label(p, text, (xa + xb) / 2, y + 14, { color, bold: true });
+  else label(p, text, (xa + xb) / 2, y, { color, bold: true, box: true });
 }
 
 /**
  * Text with a white halo, so a label stays readable over lines and fills.
  * Drawn on the canvas context directly: p5's text() would stroke over the fill.
  */
-function label(p, text, x, y, { color = INK, size = SIZE, align = 'center', bold = false, halo = true } = {}) {
+function label(p, text, x, y, { color = INK, size = SIZE, align = 'center', bold = false, halo = true, box = false } = {}) {
   const ctx = p.drawingContext;
   ctx.save();
   ctx.font = `${bold ? 'bold ' : ''}${size}px ${FONT}`;
   ctx.textAlign = align;
   ctx.textBaseline = 'middle';
-  if (halo) {
+  if (box) {
+    // a paper patch behind the text, for a label sitting on its own line
+    const w = ctx.measureText(text).width + 8;
+    const left = align === 'left' ? x - 4 : align === 'right' ? x - w + 4 : x - w / 2;
+    ctx.fillStyle = PAPER;
+    ctx.fillRect(left, y - size * 0.7, w, size * 1.4);
+  } else if (halo) {
     ctx.lineJoin = 'round';
     ctx.lineWidth = 4;
     ctx.strokeStyle = 'rgba(255,255,255,0.9)';
