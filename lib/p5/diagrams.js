@@ -311,7 +311,7 @@ function angleArc(p, m, eye, view, along, angle) {
   while (d < -Math.PI) d += 2 * Math.PI;
   p.arc(ex, ey, 2 * r, 2 * r, Math.min(a0, a0 + d), Math.max(a0, a0 + d));
   p.pop();
-  label(p, `${angle.name} = ${fmt(angle.value)}°`, ex - 16, ey - 20, { color: RAY, bold: true, align: 'right' });
+  label(p, `${angle.name} = ${fmt(angle.value)}°`, ex, ey + 40, { color: RAY, bold: true });
 }
 
 function eyeGlyph(p, x, y) {
@@ -594,7 +594,8 @@ export function drawParabola(p, o) {
   const padF = (fmax - fmin) * 0.08;
   fmin -= padF; fmax += padF;
   const sx = (t) => area.x + ((t - lo) / (hi - lo)) * area.w;
-  const sy = (v) => area.y + area.h - ((v - fmin) / (fmax - fmin)) * area.h;
+  const plotH = area.h - 34; // room under the curve for the vertex's label
+  const sy = (v) => area.y + plotH - ((v - fmin) / (fmax - fmin)) * plotH;
 
   clip(p, area);
   // f < 0 between the roots: the part of the ray inside the sphere
@@ -602,7 +603,7 @@ export function drawParabola(p, o) {
     p.push(); p.noStroke(); p.fill(194, 24, 91, 28);
     p.rect(sx(t0), sy(0), sx(t1) - sx(t0), Math.max(0, sy(fmin) - sy(0)));
     p.pop();
-    label(p, 'f(t) < 0: inside the sphere', (sx(t0) + sx(t1)) / 2, Math.min(sy(0) + 22, area.y + area.h - 12), { color: RAY, size: 12 });
+    label(p, 'f(t) < 0: inside', (sx(t0) + sx(t1)) / 2, sy(0) + 16, { color: RAY, size: 12 });
   }
   // axes
   p.push();
@@ -613,7 +614,7 @@ export function drawParabola(p, o) {
   if (lo < 0 && hi > 0) label(p, 'eye, t = 0', sx(0) + 6, area.y + 12, { color: MUTED, align: 'left', size: 12 });
   for (const t of niceTicks(lo, hi, 6)) {
     p.push(); p.stroke(INK); p.strokeWeight(1); p.line(sx(t), sy(0) - 4, sx(t), sy(0) + 4); p.pop();
-    label(p, fmt(t, Math.abs(hi - lo) < 5 ? 1 : 0), sx(t), Math.min(sy(0) + 14, area.y + area.h - 6), { color: MUTED, size: 11 });
+    label(p, fmt(t, Math.abs(hi - lo) < 5 ? 1 : 0), sx(t), sy(0) - 10, { color: MUTED, size: 11 });
   }
   label(p, 't →', area.x + area.w - 6, sy(0) - 12, { color: INK, align: 'right', bold: true });
 
@@ -630,7 +631,7 @@ export function drawParabola(p, o) {
 
   // vertex and roots
   dot(p, sx(tv), sy(fv), 5, CONSTRUCT);
-  label(p, `vertex t = −B/2A = ${fmt(tv)}`, sx(tv), sy(fv) + (roots === 0 ? 18 : -14) * (fv > 0 ? -1 : 1) * -1, { color: CONSTRUCT, size: 12 });
+  label(p, `vertex: t = −B/2A = ${fmt(tv)}, f = ${fmt(fv)}`, sx(tv), sy(fv) + 18, { color: CONSTRUCT, size: 12, bold: true });
   if (roots > 0) {
     const pts = roots === 1 ? [[t0, 't0 = t1']] : [[t0, 't0'], [t1, 't1']];
     for (const [t, name] of pts) {
