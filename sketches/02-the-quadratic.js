@@ -1,0 +1,91 @@
+/**
+ * 02 · The quadratic (slide "An implicit form describing a sphere").
+ *
+ * Put R(t) = Ro + Rd·t into (Xs − Xc)² + (Ys − Yc)² + (Zs − Zc)² = r² and you
+ * get At² + Bt + C = 0 with
+ *   A = Xd² + Yd² + Zd²,  B = 2[(Xo − Xc)Xd + (Yo − Yc)Yd + (Zo − Zc)Zd],
+ *   C = (Xo − Xc)² + (Yo − Yc)² + (Zo − Zc)² − r².
+ * B² − 4AC < 0: no hit; = 0: one (tangent); > 0: two, t = (−B ± √(B² − 4AC)) / 2A.
+ * Three pictures of the same sphere: shaded, the discriminant of every pixel,
+ * and how many roots it has. They share one selected pixel; the parabola
+ * f(t) = At² + Bt + C below crosses zero at the roots.
+ */
+import p5 from 'p5';
+import { Camera, Scene, Sphere, PointLight, inspectPixel } from '../lib/index.js';
+import { createTracerView, createInspector } from '../lib/p5/index.js';
+import { drawParabola } from '../lib/p5/diagrams.js';
+
+// The sphere (the worksheet's: centre (0, 0, −20), radius 4) and the screen.
+const SPHERE = { x: 0, y: 0, z: -20, r: 4 };
+const COLOR = [1, 0.32, 0.36];
+const LIGHT = [-10, 10, 10];
+const WIDTH = 64, HEIGHT = 48, SCALE = 6;
+const FIELDS = [ // [name, label, slider min, max, step]
+  ['x', 'Centre x (Xc)', -15, 15, 0.5],
+  ['y', 'Centre y (Yc)', -12, 12, 0.5],
+  ['z', 'Centre z (Zc)', -40, 10, 0.5],
+  ['r', 'Radius r', 0.5, 12, 0.5],
+];
+
+function makeScene({ x, y, z, r }) {
+  const ball = Object.assign(new Sphere([x, y, z], r, { color: COLOR }), { name: 'sphere' });
+  return new Scene({ background: [0.93, 0.95, 0.98], ambient: 0.15 }).add(ball).add(new PointLight(LIGHT));
+}
+
+new p5((p) => {
+  const good = { ...SPHERE }; // the last values that made a picture
+  let views;
+
+  p.setup = () => {
+    const camera = new Camera({ width: WIDTH, height: HEIGHT });
+    const scene = makeScene(good);
+    views = ['shaded', 'discriminant', 'roots'].map((mode) =>
+      createTracerView(p, { scene, camera, mode, scale: SCALE, parent: 'views', label: mode === 'shaded' ? 'Shaded' : mode === 'roots' ? 'Roots: 0, 1 or 2' : 'Discriminant B² − 4AC' }));
+    // One selected pixel for all three pictures.
+    for (const view of views) view.onSelect((s) => {
+      for (const other of views) if (other.selected?.x !== s?.x || other.selected?.y !== s?.y) other.select(s ? s.x : null, s?.y);
+      p.redraw();
+    });
+
+    const panel = p.createDiv('<h2>The sphere: drag a slider or type a number</h2>').class('fields').parent('left');
+    for (const [name, label, min, max, step] of FIELDS) numberField(panel, name, label, min, max, step);
+    p.createCanvas(560, 380).parent('left');
+    p.pixelDensity(1);
+    createInspector({ view: views[0], parent: 'sketch' });
+    views[0].select(WIDTH / 2, HEIGHT / 2);
+    p.noLoop();
+  };
+
+  /** A slider and a text box for one number; a bad number gets a message and the picture stays. */
+  function numberField(panel, name, label, min, max, step) {
+    const id = `field-${name}`;
+    p.createElement('label', label).attribute('for', id).parent(panel);
+    const slider = p.createSlider(min, max, good[name], step).parent(panel).attribute('aria-label', `${label} slider`);
+    const box = p.createInput(String(good[name])).parent(panel).id(id).attribute('inputmode', 'decimal');
+    const message = p.createDiv('').class('message').parent(panel).attribute('role', 'alert').attribute('data-message-for', name);
+    const use = (text) => {
+      const value = text.trim() === '' ? NaN : Number(text);
+      try {
+        if (!Number.isFinite(value)) throw new TypeError(`must be a number, got "${text}"`);
+        const scene = makeScene({ ...good, [name]: value }); // the Sphere checks the radius
+        good[name] = value;
+        for (const view of views) view.setScene(scene);
+        message.html(''); box.attribute('aria-invalid', 'false');
+        return true;
+      } catch (error) {
+        message.elt.textContent = `${label}: ${error.message.replace(/^radius /, '')}. The picture keeps the last good value.`;
+        box.attribute('aria-invalid', 'true');
+        return false;
+      }
+    };
+    slider.input(() => { box.value(String(slider.value())); use(String(slider.value())); });
+    box.input(() => { if (use(box.value())) slider.value(good[name]); });
+  }
+
+  p.draw = () => {
+    const s = views[0].selected;
+    const record = s && inspectPixel(views[0].scene, views[0].camera, s.x, s.y);
+    p.background('#f6f7f9');
+    drawParabola(p, { record, x: 0, y: 0, w: 560, h: 380 });
+  };
+}, document.getElementById('sketch'));
