@@ -1,7 +1,7 @@
 /**
  * A ray R(t) = Ro + Rd·t, t > 0, with Rd normalised (the lesson's slide 2).
  */
-import { toVec3, normalize, length, scaleAndAdd, vec3 } from './vec3.js';
+import { toVec3, toUnit, scaleAndAdd, vec3 } from './vec3.js';
 
 export class Ray {
   /**
@@ -10,11 +10,8 @@ export class Ray {
    */
   constructor(origin = [0, 0, 0], direction = [0, 0, -1]) {
     this.origin = toVec3(origin, 'origin');
-    this.direction = toVec3(direction, 'direction');
-    if (!(length(this.direction) > 0)) {
-      throw new RangeError('direction must not be zero-length, got [0, 0, 0]');
-    }
-    normalize(this.direction, this.direction);
+    const d = toVec3(direction, 'direction');
+    this.direction = toUnit(d, d, 'direction');
   }
 
   /** The point R(t), written into `out`. */

@@ -26,6 +26,7 @@ export class Scene {
     this.shadows = bool(shadows, 'shadows');
     this.bias = numberInRange(bias, 'bias', 0, 1);
     this.maxDepth = numberInRange(maxDepth, 'maxDepth', 0, 16);
+    if (!Number.isInteger(maxDepth)) throw new RangeError(`maxDepth must be a whole number, got ${maxDepth}`);
     this.specular = bool(specular, 'specular');
     /** Shapes a ray can hit, in the order added. */
     this.objects = [];

@@ -86,6 +86,17 @@ export function reflect(out, d, n) {
 }
 
 /**
+ * `out` = the unit vector along `a`, scaled by its largest component first so
+ * |a| neither overflows (1e200) nor underflows (1e-170); throws a RangeError
+ * naming `field` when `a` is zero.
+ */
+export function toUnit(out, a, field) {
+  const m = Math.max(Math.abs(a.x), Math.abs(a.y), Math.abs(a.z));
+  if (!(m > 0)) throw new RangeError(`${field} must not be zero-length, got [0, 0, 0]`);
+  return normalize(out, scale(out, a, 1 / m));
+}
+
+/**
  * A vector from `[x, y, z]` or `{x, y, z}`, checked: every component must be a
  * finite number, else a TypeError naming `field` (and the component).
  */

@@ -1,7 +1,7 @@
 /**
  * An infinite plane through `point` with unit `normal` (a floor, a wall).
  */
-import { toVec3, vec3, copy, length, normalize } from '../vec3.js';
+import { toVec3, toUnit, vec3, copy } from '../vec3.js';
 import { Material } from '../material.js';
 import { EPSILON } from './sphere.js';
 
@@ -13,9 +13,8 @@ export class Plane {
    */
   constructor(point = [0, 0, 0], normal = [0, 1, 0], material) {
     this.point = toVec3(point, 'point');
-    this.normal = toVec3(normal, 'normal');
-    if (!(length(this.normal) > 0)) throw new RangeError('normal must not be zero-length, got [0, 0, 0]');
-    normalize(this.normal, this.normal);
+    const n = toVec3(normal, 'normal');
+    this.normal = toUnit(n, n, 'normal');
     this.material = Material.from(material);
     this.name = '';
   }

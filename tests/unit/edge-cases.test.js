@@ -1,0 +1,28 @@
+// Numerical edge cases handled on purpose: directions with huge or tiny components.
+import { describe, it, expect } from 'vitest';
+import { Ray, Plane, Scene } from '../../lib/index.js';
+
+describe('numerical edge cases', () => {
+  it('a direction with huge components is normalised, not zeroed', () => {
+    const ray = new Ray([0, 0, 0], [1e200, 1e200, 0]);
+    expect(ray.direction.x).toBeCloseTo(Math.SQRT1_2, 15);
+    expect(ray.direction.y).toBeCloseTo(Math.SQRT1_2, 15);
+    expect(ray.direction.z).toBe(0);
+  });
+
+  it('a direction with tiny (non-zero) components is accepted', () => {
+    expect(new Ray([0, 0, 0], [0, 0, -1e-170]).direction).toEqual({ x: 0, y: 0, z: -1 });
+    expect(() => new Ray([0, 0, 0], [0, 0, 0])).toThrow(RangeError);
+  });
+
+  it('a plane normal with huge or tiny components is normalised', () => {
+    expect(new Plane([0, 0, 0], [0, 1e300, 0]).normal).toEqual({ x: 0, y: 1, z: 0 });
+    expect(new Plane([0, 0, 0], [0, 1e-300, 0]).normal).toEqual({ x: 0, y: 1, z: 0 });
+    expect(() => new Plane([0, 0, 0], [0, 0, 0])).toThrow(/normal/);
+  });
+
+  it('the mirror depth is a whole number of bounces', () => {
+    expect(() => new Scene({ maxDepth: 2.5 })).toThrow(/maxDepth must be a whole number/);
+    expect(new Scene({ maxDepth: 3 }).maxDepth).toBe(3);
+  });
+});
