@@ -1,0 +1,79 @@
+/**
+ * 03 · The geometric approach (slides "Geometric Approach", after scratchapixel).
+ *
+ *   L = C − Ro,  tca = L·Rd,  d² = L·L − tca²,  thc = √(r² − d²),  t = tca ∓ thc.
+ *   d > r: no hit. tca < 0: no hit — but only when the eye is outside the sphere!
+ *
+ * The construction is drawn for the selected pixel's ray, next to the same t
+ * found by the quadratic. Tick "eye inside the sphere" to move the eye into
+ * the sphere: the centre pixel then has tca < 0 and still hits, at tca + thc.
+ */
+import p5 from 'p5';
+import { Camera, Scene, Sphere, PointLight, intersectQuadratic, intersectGeometric } from '../lib/index.js';
+import { createTracerView, createInspector } from '../lib/p5/index.js';
+import { drawGeometricConstruction, fmt } from '../lib/p5/diagrams.js';
+
+// The worksheet's sphere, an eye outside it and an eye inside it (past its centre, a little high).
+const CENTER = [0, 0, -20], RADIUS = 4, COLOR = [1, 0.32, 0.36];
+const OUTSIDE = { position: [0, 0, 0], fov: 30 };
+const INSIDE = { position: [0, 1.5, -22.5], fov: 90 };
+const WIDTH = 64, HEIGHT = 48;
+const FIRST_PIXEL = [40, 16]; // selected at the start: a ray that passes off the centre
+
+function makeScene() {
+  const ball = Object.assign(new Sphere(CENTER, RADIUS, { color: COLOR }), { name: 'pink' });
+  const lamp = (position, name) => Object.assign(new PointLight(position), { name });
+  return new Scene({ background: [0.93, 0.95, 0.98], ambient: 0.15 })
+    .add(ball).add(lamp([-10, 10, 10], 'lamp outside')).add(lamp([2, 2, -19], 'lamp inside the sphere'));
+}
+
+new p5((p) => {
+  let view;
+
+  p.setup = () => {
+    view = createTracerView(p, { scene: makeScene(), camera: new Camera({ width: WIDTH, height: HEIGHT, ...OUTSIDE }), parent: 'picture', scale: 8, label: 'Click a pixel' });
+    view.figure.parentElement.prepend(view.figure);
+    p.createCanvas(620, 500).parent('diagram');
+    p.pixelDensity(1);
+    p.createElement('table').class('compare').id('compare').attribute('data-compare', '').parent('diagram');
+    createInspector({ view, parent: 'sketch' });
+    p.select('#inside').changed(function () {
+      view.setCamera(new Camera({ width: WIDTH, height: HEIGHT, ...(this.checked() ? INSIDE : OUTSIDE) }));
+    });
+    view.onSelect(() => p.redraw());
+    view.select(...FIRST_PIXEL);
+    p.noLoop();
+  };
+
+  p.draw = () => {
+    const s = view.selected;
+    if (!s) return;
+    const ray = view.camera.primaryRay(s.x, s.y).ray, ball = view.scene.spheres[0];
+    const q = intersectQuadratic(ray, ball), g = intersectGeometric(ray, ball);
+    p.background('#f6f7f9');
+    drawGeometricConstruction(p, { sphere: ball, ray, result: g, x: 0, y: 0, w: 620, h: 500 });
+    compare(q, g);
+    explain(g);
+  };
+
+  /** The two routes side by side: the same t0, t1 and t. */
+  function compare(q, g) {
+    const row = (name, a, b, cls = '') => `<tr class="${cls}"><th>${name}</th><td data-route="quadratic" data-field="${name}">${a}</td><td data-route="geometric" data-field="${name}">${b}</td></tr>`;
+    p.select('#compare').html('<caption>The same ray, both routes</caption>'
+      + '<tr><th></th><th>quadratic</th><th>geometric</th></tr>'
+      + row('hit if > 0', `B² − 4AC = ${fmt(q.discriminant, 2)}`, `r² − d² = ${fmt(RADIUS ** 2 - g.d2, 2)}`)
+      + row('t0', fmt(q.t0, 3), fmt(g.t0, 3)) + row('t1', fmt(q.t1, 3), fmt(g.t1, 3))
+      + row('t', fmt(q.t, 3), fmt(g.t, 3), 't'));
+  }
+
+  /** One sentence about this ray: which rule decides, with its numbers. */
+  function explain(g) {
+    const inside = g.d2 + g.tca * g.tca < RADIUS ** 2; // |L| < r
+    const text = inside
+      ? `The eye is inside the sphere (|L| < r). tca = ${fmt(g.tca, 2)}${g.tca < 0 ? ' < 0, yet' : ', and'} the ray hits at t = tca + thc = ${fmt(g.tca, 2)} + ${fmt(g.thc, 2)} = ${fmt(g.t, 2)}.`
+      : g.tca < 0 ? `tca = ${fmt(g.tca, 2)} < 0 and the eye is outside: the sphere is behind the eye, no intersection.`
+        : g.roots === 0 ? `d = ${fmt(Math.sqrt(g.d2), 2)} > r = ${RADIUS}: the ray passes the sphere by, no intersection.`
+          : `tca = ${fmt(g.tca, 2)} ≥ 0 and d ≤ r: the ray hits first at t = tca − thc = ${fmt(g.t, 2)}.`;
+    p.select('#now').html(text);
+  }
+}, document.getElementById('sketch'));
