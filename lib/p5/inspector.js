@@ -256,7 +256,10 @@ function quadraticSection(r) {
     const q = test.quadratic, at = { 'data-sphere': String(i), 'data-route': 'quadratic' };
     return element('tr', { class: rowClass(r, test) }, sphereCell(test, i),
       ...['A', 'B', 'C', 'discriminant'].map((f) => element('td', {}, value(f, q[f], at))),
-      element('td', {}, element('span', { class: `rt-value rt-roots-${q.roots}`, 'data-field': 'meaning', 'data-value': String(q.roots), ...at }, rootsMeaning(q.roots))),
+      element('td', {},
+        element('span', { class: `rt-value rt-roots-${q.roots}`, 'data-field': 'meaning', 'data-value': String(q.roots), ...at }, rootsMeaning(q.roots)),
+        // Real roots, all t ≤ 0: the sphere is behind the eye, so it is no hit after all.
+        q.roots > 0 && q.t === null ? element('span', { class: 'rt-behind', 'data-field': 'behind', ...at }, 'behind the eye') : null),
       element('td', {}, value('t0', q.t0, at)),
       element('td', {}, value('t1', q.t1, at)));
   });

@@ -21,6 +21,7 @@ import { modeShader, modeLegend } from '../modes.js';
 import { pixelCoordinate, show } from '../check.js';
 import { registerView } from './page-state.js';
 import { useStyle, element } from './dom.js';
+import { createLegendElement } from './diagrams.js';
 
 /** On-screen pixels per traced pixel below which the grid would hide the picture. */
 const GRID_MIN_SCALE = 6;
@@ -267,28 +268,11 @@ export class TracerView {
     this.progressText.textContent = text;
   }
 
+  /** The mode's key under the picture (none for the shaded picture itself). */
   #showLegend() {
-    const box = this.legendElement;
-    box.replaceChildren();
-    box.hidden = !this.showLegend || this.#mode === 'shaded';
-    if (box.hidden) return;
-    const legend = modeLegend(this.#mode, this.scene, this.camera);
-    box.append(element('div', { class: 'rt-legend-title' }, legend.title));
-    const stops = element('div', { class: `rt-legend-stops rt-legend-${legend.kind}` });
-    if (legend.kind === 'gradient') {
-      const colors = legend.stops.map((s, i) => `${s.color} ${(100 * i) / (legend.stops.length - 1)}%`);
-      stops.append(element('div', { class: 'rt-legend-ramp', style: `background: linear-gradient(to right, ${colors.join(', ')})` }));
-      const labels = element('div', { class: 'rt-legend-labels' });
-      for (const s of legend.stops) labels.append(element('span', {}, s.label));
-      stops.append(labels);
-    } else {
-      for (const s of legend.stops) {
-        stops.append(element('span', { class: 'rt-legend-item' },
-          element('span', { class: 'rt-swatch rt-swatch-small', style: `background: ${s.color}` }), s.label));
-      }
-    }
-    box.append(stops);
-    if (legend.note) box.append(element('p', { class: 'rt-legend-note' }, legend.note));
+    const host = this.legendHost;
+    host.hidden = !this.showLegend || this.#mode === 'shaded';
+    host.replaceChildren(...(host.hidden ? [] : [createLegendElement(modeLegend(this.#mode, this.scene, this.camera))]));
   }
 
   /* ---------------- layout and overlay ---------------- */
@@ -326,7 +310,7 @@ export class TracerView {
     if (this.#grid && k >= GRID_MIN_SCALE) drawGrid(g, this.width, this.height, k);
     const current = this.#renderer.done ? null : this.#renderer.current;
     this.#shownCurrent = current && { ...current };
-    if (current) outlinePixel(g, current.x, current.y, k, '#ffd400', 1);
+    if (current) outlinePixel(g, current.x, current.y, k, '#ffd400', Math.max(2, Math.round(k / 8)));
     if (this.#selected) drawCrosshair(g, this.#selected.x, this.#selected.y, k, o.width, o.height);
   }
 
@@ -354,9 +338,9 @@ export class TracerView {
     }, this.progressFill, this.progressText);
     const save = element('button', { type: 'button', class: 'rt-button', 'data-export': '', title: 'Download the traced image as a PNG, one pixel per traced pixel' }, 'Save PNG');
     save.addEventListener('click', () => this.downloadPNG());
-    this.legendElement = element('div', { class: 'rt-legend', 'data-legend': '' });
+    this.legendHost = element('div', { class: 'rt-legend-host' });
 
-    this.figure.append(stage, element('div', { class: 'rt-bar' }, this.progressBar, save), this.legendElement);
+    this.figure.append(stage, element('div', { class: 'rt-bar' }, this.progressBar, save), this.legendHost);
     parent.append(this.figure);
     this.#listen(c);
   }
@@ -368,8 +352,7 @@ export class TracerView {
     };
     // Press, or press and drag, to scrub across pixels and watch the numbers change.
     c.addEventListener('pointerdown', (event) => {
-      if (event.button !== 0) return;
-      c.focus({ preventScroll: true });
+      if (event.button !== 0) return; // the browser focuses the canvas itself (tabindex), for the arrow keys
       c.setPointerCapture?.(event.pointerId);
       pick(event);
     });
