@@ -1,0 +1,432 @@
+/**
+ * Value boxes: read numbers and colours a student types, checked, with a
+ * message that names the box; and a whole form of boxes for a scene (every
+ * sphere's centre, radius, colour, reflection, transparency and emission,
+ * every point light) that hands back a new Scene only when the values are good.
+ * Also: a scene in a page's URL (`?scene=<base64url JSON>`), to share it.
+ *
+ *   const form = createSceneForm({ json: sceneToJSON(scene), parent, onChange: (scene, json) => view.setScene(scene) });
+ *
+ * The pure functions (readNumber, readColor, colorText, tableColumns,
+ * withValue, compactSceneJSON, encodeScene, decodeScene) need no page.
+ */
+import { Scene } from '../scene.js';
+import { Sphere } from '../shapes/sphere.js';
+import { toColor, colorToHex } from '../color.js';
+import { sceneToJSON, sceneFromJSON } from '../serialize.js';
+import { show } from '../check.js';
+import { useStyle, element } from './dom.js';
+
+/* ---------------- reading one box ---------------- */
+
+const NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
+
+/**
+ * The number typed in a box, else a TypeError/RangeError whose message
+ * starts with the box's `label`: empty, not a number, not whole, out of range.
+ * @param {string} text what the box holds
+ * @param {string} label the box's name as the page shows it ("Pixel x", "radius")
+ * @param {object} [rule] `min`/`max` (included), `above` (excluded), `integer`
+ */
+export function readNumber(text, label, { min = -Infinity, max = Infinity, above, integer = false } = {}) {
+  const t = String(text ?? '').trim().replace(/^−/, '-'); // a typographic minus counts too
+  const wanted = integer ? 'a whole number' : 'a number';
+  const range = Number.isFinite(min) && Number.isFinite(max) ? ` from ${min} to ${max}` : '';
+  if (t === '') throw new TypeError(`${label} is empty: type ${wanted}${range}`);
+  if (!NUMBER.test(t)) throw new TypeError(`${label} must be ${wanted}, got ${show(t)}`);
+  const n = Number(t);
+  if (!Number.isFinite(n)) throw new RangeError(`${label} is too big, got ${t}`);
+  if (integer && !Number.isInteger(n)) throw new RangeError(`${label} must be a whole number, got ${n}`);
+  if (above !== undefined && !(n > above)) throw new RangeError(`${label} must be greater than ${above}, got ${n}`);
+  if (n < min || n > max) {
+    throw new RangeError(range ? `${label} must be${range}, got ${n}` : `${label} must be ${n < min ? `at least ${min}` : `at most ${max}`}, got ${n}`);
+  }
+  return n;
+}
+
+/**
+ * The colour typed in a box as `[r, g, b]` (0–1, more for lights): '#ff5160',
+ * 'pink', 'rgb(255, 81, 96)', three numbers '1, 0.3, 0.4', or one number for
+ * a grey ('1.2'). Else a TypeError/RangeError starting with `label`.
+ */
+export function readColor(text, label) {
+  const t = String(text ?? '').trim();
+  if (t === '') throw new TypeError(`${label} is empty: type a colour like #ff5160, pink, or 1, 0.3, 0.4`);
+  const parts = t.replace(/^\[|\]$/g, '').split(/\s*,\s*|\s+/);
+  if (parts.every((p) => NUMBER.test(p)) && (parts.length === 1 || parts.length === 3)) {
+    const rgb = parts.map(Number);
+    return withLabel(() => toColor(rgb.length === 1 ? rgb[0] : rgb, label), label);
+  }
+  return withLabel(() => toColor(t, label), label);
+}
+
+/** Runs `make`; the library's message gets the box's label, once, in front. */
+function withLabel(make, label) {
+  try {
+    return make();
+  } catch (error) {
+    if (String(error.message).startsWith(label)) throw error;
+    const Kind = error instanceof RangeError ? RangeError : TypeError;
+    throw new Kind(`${label}: ${error.message}`);
+  }
+}
+
+/**
+ * How a box shows a colour: '#rrggbb' when every channel is 0–1 (unless it
+ * is a grey and `grey` asks for a number), one number for other greys,
+ * else 'r, g, b'.
+ */
+export function colorText(rgb, { grey = false } = {}) {
+  const isGrey = rgb[0] === rgb[1] && rgb[1] === rgb[2];
+  if (isGrey && (grey || rgb[0] > 1)) return String(rgb[0]);
+  if (rgb.every((c) => c >= 0 && c <= 1)) return colorToHex(rgb);
+  return rgb.join(', ');
+}
+
+/* ---------------- the columns of each kind of object ---------------- */
+
+const xyz = (field, name) => ['x', 'y', 'z'].map((axis, i) => ({ path: [field, i], label: `${name} ${axis}`, head: axis, kind: 'number' }));
+const share = (field) => ({ path: ['material', field], label: field, head: field, kind: 'number', rule: { min: 0, max: 1 } });
+const surface = { path: ['material', 'color'], label: 'colour', head: 'colour', kind: 'color' };
+
+/**
+ * The boxes of each object type, in table order: `path` into the object's
+ * JSON, `label` for messages, `head` for the column, `kind` 'number' or
+ * 'color', and `rule` for readNumber.
+ */
+export const COLUMNS = {
+  sphere: [...xyz('center', 'centre'), { path: ['radius'], label: 'radius', head: 'radius', kind: 'number', rule: { above: 0 } },
+    surface, share('reflection'), share('transparency'),
+    { path: ['material', 'emission'], label: 'emission', head: 'emission', kind: 'color', grey: true }],
+  pointLight: [...xyz('position', 'position'), { path: ['color'], label: 'colour', head: 'colour', kind: 'color' },
+    { path: ['intensity'], label: 'intensity', head: 'intensity', kind: 'number', rule: { min: 0 } }],
+  plane: [...xyz('point', 'point'), ...xyz('normal', 'normal'), surface, share('reflection')],
+  box: [...xyz('min', 'min'), ...xyz('max', 'max'), surface, share('reflection')],
+};
+
+/** The columns for objects of `type` (a TypeError for an unknown one). */
+export function tableColumns(type) {
+  if (!Object.hasOwn(COLUMNS, type)) throw new TypeError(`type must be one of ${Object.keys(COLUMNS).join(', ')}, got ${show(type)}`);
+  return COLUMNS[type];
+}
+
+/** What each table is called, and what a new row holds. */
+const TABLES = [
+  { type: 'sphere', title: 'Spheres', add: 'Add sphere', what: 'Sphere' },
+  { type: 'pointLight', title: 'Point lights', add: 'Add point light', what: 'Point light' },
+  { type: 'plane', title: 'Planes', what: 'Plane' },
+  { type: 'box', title: 'Boxes', what: 'Box' },
+];
+
+/** A copy of `json` with `value` at `path` (an array of keys); `json` itself is untouched. */
+export function withValue(json, path, value) {
+  const copy = structuredClone(json);
+  let at = copy;
+  for (const key of path.slice(0, -1)) at = at[key];
+  at[path.at(-1)] = value;
+  return copy;
+}
+
+function valueAt(json, path) {
+  return path.reduce((at, key) => at?.[key], json);
+}
+
+/** The box's text for the value at `path` of an object. */
+function boxText(o, column) {
+  const v = valueAt(o, column.path);
+  return column.kind === 'color' ? colorText(v, { grey: column.grey }) : String(v);
+}
+
+/* ---------------- the scene in a URL ---------------- */
+
+let defaults = null;
+
+/** The library's own defaults, read from an empty scene and a plain sphere: nothing to keep in step. */
+function defaultValues() {
+  if (!defaults) {
+    const probe = sceneToJSON(new Scene().add(new Sphere([0, 0, 0], 1)));
+    const { objects, ...scene } = probe;
+    defaults = { scene, material: objects[0].material };
+  }
+  return defaults;
+}
+
+const same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
+
+/** Scene JSON without the fields that hold their default value (shorter links); `sceneFromJSON` reads it back the same. */
+export function compactSceneJSON(json) {
+  const { scene, material } = defaultValues();
+  const out = {};
+  for (const [key, value] of Object.entries(json)) if (key === 'objects' || !same(value, scene[key])) out[key] = value;
+  out.objects = (json.objects ?? []).map((o) => {
+    const copy = { ...o };
+    if (!copy.name) delete copy.name;
+    if (copy.material) {
+      copy.material = Object.fromEntries(Object.entries(copy.material).filter(([k, v]) => !same(v, material[k])));
+    }
+    return copy;
+  });
+  return out;
+}
+
+/** Scene JSON as URL-safe text: base64url of its compact JSON. */
+export function encodeScene(json) {
+  const bytes = new TextEncoder().encode(JSON.stringify(compactSceneJSON(json)));
+  let binary = '';
+  for (const b of bytes) binary += String.fromCharCode(b);
+  return btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
+
+/**
+ * The Scene in text made by encodeScene (or plain JSON text), checked by
+ * sceneFromJSON; a TypeError/RangeError saying what is wrong otherwise.
+ */
+export function decodeScene(text) {
+  const t = String(text ?? '').trim();
+  if (t.startsWith('{')) return sceneFromJSON(t);
+  if (!/^[A-Za-z0-9_-]+$/.test(t)) throw new TypeError('the scene in the link is not base64url text');
+  let binary;
+  try {
+    binary = atob(t.replace(/-/g, '+').replace(/_/g, '/'));
+  } catch {
+    throw new TypeError('the scene in the link is cut short or not base64url text');
+  }
+  let json;
+  try {
+    json = new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(binary, (c) => c.charCodeAt(0)));
+  } catch {
+    throw new TypeError('the scene in the link is not text');
+  }
+  return sceneFromJSON(json);
+}
+
+/* ---------------- a box with its message, for any sketch ---------------- */
+
+const FORM_STYLE = `
+.sf-box { display: inline-flex; flex-direction: column; gap: 0.2rem; vertical-align: top; }
+.sf-label { font-weight: 600; }
+.sf-hidden-label { position: absolute; width: 1px; height: 1px; overflow: hidden; clip-path: inset(50%); white-space: nowrap; }
+.sf-field { display: inline-flex; gap: 0.3rem; align-items: center; }
+.sf-box input[type="text"] { font: 1.05rem var(--rt-mono, monospace); padding: 0.25rem 0.4rem; border: 1px solid #9aa4b1; border-radius: 0.3rem; background: #fff; color: inherit; }
+.sf-box input[type="color"] { inline-size: 2.2rem; block-size: 2rem; padding: 0; border: 1px solid #9aa4b1; border-radius: 0.3rem; background: #fff; }
+.sf-box input[aria-invalid="true"] { border-color: var(--rt-bad, #c4321b); outline: 2px solid var(--rt-bad, #c4321b); background: #fff1ee; }
+.sf-message { color: var(--rt-bad, #c4321b); font-weight: 600; font-size: 0.9rem; max-width: 18rem; white-space: normal; line-height: 1.25; }
+.sf-message:empty { display: none; }
+.sf-form { font-family: var(--rt-sans, sans-serif); }
+.sf-top { display: flex; flex-wrap: wrap; gap: 0.6rem 0.8rem; align-items: flex-end; margin-bottom: 0.8rem; }
+.sf-section h3 { margin: 0.8rem 0 0.3rem; font-size: 1.05rem; }
+.sf-table-wrap { overflow-x: auto; }
+.sf-table { border-collapse: collapse; }
+.sf-table th, .sf-table td { padding: 0.2rem 0.3rem; text-align: left; vertical-align: top; border-bottom: 1px solid var(--rt-line, #d5dae1); }
+.sf-table thead th { font-size: 0.9rem; color: var(--rt-muted, #5b6470); }
+.sf-table tbody th { white-space: nowrap; padding-top: 0.45rem; }
+.sf-remove { font-size: 0.85rem; padding: 0.25rem 0.5rem; }
+`;
+
+/** Adds the sketchbook's stylesheet and the value boxes' few rules to the page, once. */
+function useFormStyle() {
+  useStyle();
+  if (typeof document === 'undefined' || document.querySelector('style[data-scene-form-style]')) return;
+  document.head.append(element('style', { 'data-scene-form-style': '' }, FORM_STYLE));
+}
+
+/**
+ * A labelled text box with a message beside it. `read()` returns the value
+ * (via `parse(text, label)`) or, when it throws, shows the message and
+ * returns undefined. Good values clear the message.
+ * @param {object} options
+ * @param {string} options.label also the name used in messages
+ * @param {string|number} [options.value]
+ * @param {(text: string, label: string) => any} [options.parse] default readNumber with `rule`
+ * @param {object} [options.rule] for readNumber
+ * @param {string} [options.name] the box's `name` (for tests and labels)
+ * @param {string} [options.size='6'] width in characters
+ */
+export function valueBox({ label, value = '', parse, rule, name, size = '6' }) {
+  useFormStyle();
+  const read = parse ?? ((text, l) => readNumber(text, l, rule));
+  const input = element('input', { type: 'text', inputmode: 'decimal', name, size, spellcheck: 'false', autocomplete: 'off', 'aria-label': label });
+  input.value = String(value);
+  const message = element('span', { class: 'sf-message', role: 'alert', 'data-message-for': name ?? label });
+  const box = {
+    element: element('label', { class: 'sf-box' }, element('span', { class: 'sf-label' }, label), element('span', { class: 'sf-field' }, input), message),
+    input,
+    message,
+    read() {
+      try {
+        const v = read(input.value, label);
+        box.clear();
+        return v;
+      } catch (error) {
+        box.fail(error.message);
+        return undefined;
+      }
+    },
+    fail(text) {
+      message.textContent = text;
+      input.setAttribute('aria-invalid', 'true');
+    },
+    clear() {
+      message.textContent = '';
+      input.removeAttribute('aria-invalid');
+    },
+  };
+  return box;
+}
+
+/* ---------------- the scene form ---------------- */
+
+/**
+ * A form of value boxes for a scene: one table per kind of object (a row per
+ * sphere, point light, plane, box), a background colour, add and remove
+ * buttons. Each change is checked box by box and then by sceneFromJSON; a bad
+ * value gets a message beside its box and changes nothing, a good one calls
+ * `onChange(scene, json)`.
+ * @param {object} options
+ * @param {object} options.json scene JSON (sceneToJSON)
+ * @param {HTMLElement} options.parent
+ * @param {(scene: Scene, json: object) => void} options.onChange
+ */
+export function createSceneForm({ json, parent, onChange }) {
+  return new SceneForm({ json, parent, onChange });
+}
+
+export class SceneForm {
+  constructor({ json, parent, onChange }) {
+    if (typeof onChange !== 'function') throw new TypeError(`onChange must be a function, got ${show(onChange)}`);
+    useFormStyle();
+    this.json = sceneToJSON(sceneFromJSON(json)); // checked, every field present
+    this.onChange = onChange;
+    this.element = element('div', { class: 'sf-form', 'data-scene-form': '' });
+    parent.append(this.element);
+    this.build();
+  }
+
+  /** The current scene (the last good one). */
+  get scene() { return sceneFromJSON(this.json); }
+
+  /** Replaces every box from `json` (after add/remove, or a new scene). */
+  build() {
+    const background = this.#colorBox(colorText(this.json.background), 'background', 'background colour',
+      (value) => this.#try(withValue(this.json, ['background'], value), ''));
+    const top = element('div', { class: 'sf-top' }, background.element, ...this.#addButtons());
+    const tables = TABLES.map((t) => this.#table(t)).filter(Boolean);
+    this.element.replaceChildren(top, ...tables);
+  }
+
+  /** Adds an object's JSON at the end and re-renders. */
+  add(object) {
+    this.#commit(sceneFromJSON({ ...this.json, objects: [...this.json.objects, object] }));
+    this.build();
+  }
+
+  /** Removes the object at `index` of `json.objects`. */
+  remove(index) {
+    this.#commit(sceneFromJSON({ ...this.json, objects: this.json.objects.filter((_, i) => i !== index) }));
+    this.build();
+  }
+
+  #addButtons() {
+    const n = () => this.json.objects.length + 1;
+    const add = (label, make) => {
+      const b = element('button', { type: 'button', class: 'rt-button', 'data-add': label }, label);
+      b.addEventListener('click', () => this.add(make()));
+      return b;
+    };
+    return [
+      add('Add sphere', () => ({ type: 'sphere', name: `sphere ${n()}`, center: [0, 3, -12], radius: 1, material: { color: [0.3, 0.8, 0.4] } })),
+      add('Add light sphere', () => ({ type: 'sphere', name: `light ${n()}`, center: [-10, 10, -10], radius: 1, material: { color: [0, 0, 0], emission: 1 } })),
+      add('Add point light', () => ({ type: 'pointLight', name: `point light ${n()}`, position: [10, 10, 0], color: [1, 1, 1], intensity: 1 })),
+    ];
+  }
+
+  #table({ type, title, what }) {
+    const rows = this.json.objects.map((o, index) => ({ o, index })).filter(({ o }) => o.type === type);
+    if (!rows.length) return null;
+    const columns = tableColumns(type);
+    const head = element('tr', {}, element('th', {}, 'name'), ...columns.map((c) => element('th', {}, c.head)), element('th', {}, ''));
+    const body = rows.map(({ o, index }, k) => this.#row(o, index, columns, `${what} ${k + 1}${o.name ? ` (${o.name})` : ''}`));
+    return element('section', { class: 'sf-section', 'data-table': type },
+      element('h3', {}, title),
+      element('div', { class: 'sf-table-wrap' }, element('table', { class: 'sf-table' }, element('thead', {}, head), element('tbody', {}, ...body))));
+  }
+
+  #row(o, index, columns, who) {
+    const isLight = o.type === 'pointLight' || o.material?.emission.some((c) => c > 0);
+    const name = element('th', { scope: 'row' }, isLight ? '☀ ' : '', o.name || who);
+    const cells = columns.map((c) => {
+      const id = `objects[${index}].${c.path.join('.')}`;
+      const label = `${who} ${c.label}`;
+      const commit = (value) => this.#try(withValue(this.json, ['objects', index, ...c.path], value), who);
+      const box = c.kind === 'color'
+        ? this.#colorBox(boxText(o, c), id, label, commit, !c.grey)
+        : this.#numberBox(boxText(o, c), id, label, c.rule, commit);
+      return element('td', {}, box.element);
+    });
+    const remove = element('button', { type: 'button', class: 'rt-button sf-remove', 'data-remove': String(index), title: `Remove ${who}` }, 'Remove');
+    remove.addEventListener('click', () => this.remove(index));
+    return element('tr', { 'data-object': String(index) }, name, ...cells, element('td', {}, remove));
+  }
+
+  #numberBox(text, id, label, rule, commit) {
+    const box = valueBox({ label, value: text, rule, name: id, size: '5' });
+    box.element.querySelector('.sf-label').classList.add('sf-hidden-label');
+    box.input.addEventListener('change', () => {
+      const v = box.read();
+      if (v !== undefined) this.#report(box, commit(v));
+    });
+    return box;
+  }
+
+  /** A colour picker and a text box for the same colour (the text box also takes lights' values above 1). */
+  #colorBox(text, id, label, commit, picker = true) {
+    const box = valueBox({ label, value: text, parse: readColor, name: id, size: '7' });
+    box.element.querySelector('.sf-label').classList.add(label === 'background colour' ? 'sf-label' : 'sf-hidden-label');
+    box.input.removeAttribute('inputmode');
+    if (!picker) {
+      box.input.addEventListener('change', () => {
+        const v = box.read();
+        if (v !== undefined) this.#report(box, commit(v));
+      });
+      return box;
+    }
+    const pick = element('input', { type: 'color', 'aria-label': `${label} (picker)`, 'data-picker-for': id });
+    const showPicker = (rgb) => { pick.value = colorToHex(rgb); };
+    box.input.addEventListener('change', () => {
+      const v = box.read();
+      if (v === undefined) return;
+      if (this.#report(box, commit(v))) showPicker(v);
+    });
+    pick.addEventListener('input', () => {
+      box.input.value = pick.value;
+      const v = box.read();
+      if (v !== undefined) this.#report(box, commit(v));
+    });
+    try { showPicker(readColor(text, label)); } catch { /* the text box shows what is wrong */ }
+    box.input.before(pick);
+    return box;
+  }
+
+  /** Checks a whole new scene and takes it; else returns the message, with the row's name for the path. */
+  #try(json, who) {
+    try {
+      this.#commit(sceneFromJSON(json));
+      return '';
+    } catch (error) {
+      // sceneFromJSON names the path: "objects[1].material.color[0] must …" → "Sphere 2: color[0] must …"
+      const field = error.message.replace(/^objects\[\d+\]\.(material\.)?/, '');
+      return who ? `${who}: ${field}` : field;
+    }
+  }
+
+  /** Shows a whole-scene problem beside the box; true when there was none. */
+  #report(box, problem) {
+    if (problem) box.fail(problem);
+    return !problem;
+  }
+
+  #commit(scene) {
+    this.json = sceneToJSON(scene);
+    this.onChange(scene, this.json);
+  }
+}
