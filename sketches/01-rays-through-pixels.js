@@ -37,8 +37,8 @@ new p5((p) => {
   p.setup = () => {
     p.createCanvas(600, 640).parent('diagram');
     p.pixelDensity(1);
-    const camera = new Camera({ width: WIDTH, height: HEIGHT, fov: FOV });
-    view = createTracerView(p, { scene: makeScene(), camera, parent: 'picture', scale: 16, grid: true, renderMode: 'scanline', label: `The screen: ${WIDTH} × ${HEIGHT} pixels` });
+    const eye = new Camera({ width: WIDTH, height: HEIGHT, fov: FOV });
+    view = createTracerView(p, { scene: makeScene(), camera: eye, parent: 'picture', scale: 16, grid: true, renderMode: 'scanline', label: `The screen: ${WIDTH} × ${HEIGHT} pixels` });
     view.renderer.slowRaysPerStep = SLOW_RAYS_PER_FRAME;
     createInspector({ view, parent: 'picture' });
 
@@ -60,9 +60,9 @@ new p5((p) => {
     // Which ray to draw: the one being traced (slow motion), else the pixel pointed at, else the selected one.
     const tracing = view.renderMode === 'slow' && !view.done ? view.renderer.current : null;
     const pixel = tracing ?? hovered ?? view.selected;
-    const key = pixel ? `${pixel.x},${pixel.y}` : 'none';
-    if (key === shown) return; // nothing new to draw
-    shown = key;
+    const shownKey = pixel ? `${pixel.x},${pixel.y}` : 'none';
+    if (shownKey === shown) return; // nothing new to draw
+    shown = shownKey;
     const record = pixel ? inspectPixel(view.scene, view.camera, pixel.x, pixel.y) : null;
     p.background('#f6f7f9');
     drawSideView(p, { scene: view.scene, camera: view.camera, record, x: 0, y: 0, w: 600, h: 315 });

@@ -28,7 +28,7 @@ const FIELDS = [ // [name, label, slider min, max, step]
 ];
 
 function makeScene({ x, y, z, r }) {
-  const ball = Object.assign(new Sphere([x, y, z], r, { color: COLOR }), { name: 'sphere' });
+  const ball = Object.assign(new Sphere([x, y, z], r, { color: COLOR }), { name: 'pink' });
   return new Scene({ background: [0.93, 0.95, 0.98], ambient: 0.15 }).add(ball).add(new PointLight(LIGHT));
 }
 
@@ -37,10 +37,10 @@ new p5((p) => {
   let views;
 
   p.setup = () => {
-    const camera = new Camera({ width: WIDTH, height: HEIGHT });
+    const eye = new Camera({ width: WIDTH, height: HEIGHT });
     const scene = makeScene(good);
     views = ['shaded', 'discriminant', 'roots'].map((mode) =>
-      createTracerView(p, { scene, camera, mode, scale: SCALE, parent: 'views', label: mode === 'shaded' ? 'Shaded' : mode === 'roots' ? 'Roots: 0, 1 or 2' : 'Discriminant B² − 4AC' }));
+      createTracerView(p, { scene, camera: eye, mode, scale: SCALE, parent: 'views', label: mode === 'shaded' ? 'Shaded' : mode === 'roots' ? 'Roots: 0, 1 or 2' : 'Discriminant B² − 4AC' }));
     // One selected pixel for all three pictures.
     for (const view of views) view.onSelect((s) => {
       for (const other of views) if (other.selected?.x !== s?.x || other.selected?.y !== s?.y) other.select(s ? s.x : null, s?.y);
@@ -61,7 +61,7 @@ new p5((p) => {
     const id = `field-${name}`;
     p.createElement('label', label).attribute('for', id).parent(panel);
     const slider = p.createSlider(min, max, good[name], step).parent(panel).attribute('aria-label', `${label} slider`);
-    const box = p.createInput(String(good[name])).parent(panel).id(id).attribute('inputmode', 'decimal');
+    const textBox = p.createInput(String(good[name])).parent(panel).id(id).attribute('inputmode', 'decimal');
     const message = p.createDiv('').class('message').parent(panel).attribute('role', 'alert').attribute('data-message-for', name);
     const use = (text) => {
       const value = text.trim() === '' ? NaN : Number(text);
@@ -70,16 +70,16 @@ new p5((p) => {
         const scene = makeScene({ ...good, [name]: value }); // the Sphere checks the radius
         good[name] = value;
         for (const view of views) view.setScene(scene);
-        message.html(''); box.attribute('aria-invalid', 'false');
+        message.html(''); textBox.attribute('aria-invalid', 'false');
         return true;
       } catch (error) {
         message.elt.textContent = `${label}: ${error.message.replace(/^radius /, '')}. The picture keeps the last good value.`;
-        box.attribute('aria-invalid', 'true');
+        textBox.attribute('aria-invalid', 'true');
         return false;
       }
     };
-    slider.input(() => { box.value(String(slider.value())); use(String(slider.value())); });
-    box.input(() => { if (use(box.value())) slider.value(good[name]); });
+    slider.input(() => { textBox.value(String(slider.value())); use(String(slider.value())); });
+    textBox.input(() => { if (use(textBox.value())) slider.value(good[name]); });
   }
 
   p.draw = () => {

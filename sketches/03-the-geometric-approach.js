@@ -14,14 +14,14 @@ import { createTracerView, createInspector } from '../lib/p5/index.js';
 import { drawGeometricConstruction, fmt } from '../lib/p5/diagrams.js';
 
 // The worksheet's sphere, an eye outside it and an eye inside it (past its centre, a little high).
-const CENTER = [0, 0, -20], RADIUS = 4, COLOR = [1, 0.32, 0.36];
+const SPHERE_CENTER = [0, 0, -20], SPHERE_RADIUS = 4, COLOR = [1, 0.32, 0.36];
 const OUTSIDE = { position: [0, 0, 0], fov: 30 };
 const INSIDE = { position: [0, 1.5, -22.5], fov: 90 };
 const WIDTH = 64, HEIGHT = 48;
 const FIRST_PIXEL = [40, 16]; // selected at the start: a ray that passes off the centre
 
 function makeScene() {
-  const ball = Object.assign(new Sphere(CENTER, RADIUS, { color: COLOR }), { name: 'pink' });
+  const ball = Object.assign(new Sphere(SPHERE_CENTER, SPHERE_RADIUS, { color: COLOR }), { name: 'pink' });
   const lamp = (position, name) => Object.assign(new PointLight(position), { name });
   return new Scene({ background: [0.93, 0.95, 0.98], ambient: 0.15 })
     .add(ball).add(lamp([-10, 10, 10], 'lamp outside')).add(lamp([2, 2, -19], 'lamp inside the sphere'));
@@ -61,19 +61,19 @@ new p5((p) => {
     const row = (name, a, b, cls = '') => `<tr class="${cls}"><th>${name}</th><td data-route="quadratic" data-field="${name}">${a}</td><td data-route="geometric" data-field="${name}">${b}</td></tr>`;
     p.select('#compare').html('<caption>The same ray, both routes</caption>'
       + '<tr><th></th><th>quadratic</th><th>geometric</th></tr>'
-      + row('hit if > 0', `B² − 4AC = ${fmt(q.discriminant, 2)}`, `r² − d² = ${fmt(RADIUS ** 2 - g.d2, 2)}`)
+      + row('hit if > 0', `B² − 4AC = ${fmt(q.discriminant, 2)}`, `r² − d² = ${fmt(SPHERE_RADIUS ** 2 - g.d2, 2)}`)
       + row('t0', fmt(q.t0, 3), fmt(g.t0, 3)) + row('t1', fmt(q.t1, 3), fmt(g.t1, 3))
       + row('t', fmt(q.t, 3), fmt(g.t, 3), 't'));
   }
 
   /** One sentence about this ray: which rule decides, with its numbers. */
   function explain(g) {
-    const inside = g.d2 + g.tca * g.tca < RADIUS ** 2; // |L| < r
-    const text = inside
+    const inside = g.d2 + g.tca * g.tca < SPHERE_RADIUS ** 2; // |L| < r
+    const sentence = inside
       ? `The eye is inside the sphere (|L| < r). tca = ${fmt(g.tca, 2)}${g.tca < 0 ? ' < 0, yet' : ', and'} the ray hits at t = tca + thc = ${fmt(g.tca, 2)} + ${fmt(g.thc, 2)} = ${fmt(g.t, 2)}.`
       : g.tca < 0 ? `tca = ${fmt(g.tca, 2)} < 0 and the eye is outside: the sphere is behind the eye, no intersection.`
-        : g.roots === 0 ? `d = ${fmt(Math.sqrt(g.d2), 2)} > r = ${RADIUS}: the ray passes the sphere by, no intersection.`
+        : g.roots === 0 ? `d = ${fmt(Math.sqrt(g.d2), 2)} > r = ${SPHERE_RADIUS}: the ray passes the sphere by, no intersection.`
           : `tca = ${fmt(g.tca, 2)} ≥ 0 and d ≤ r: the ray hits first at t = tca − thc = ${fmt(g.t, 2)}.`;
-    p.select('#now').html(text);
+    p.select('#now').html(sentence);
   }
 }, document.getElementById('sketch'));
