@@ -1,0 +1,377 @@
+/**
+ * Homework self-checks: does the scene a student built look like the task?
+ * Each check looks at the scene (where the lights are, what colour they give
+ * off) and at the picture the camera sees (traced with the library itself),
+ * and says what is right or what to fix, in a student's words.
+ *
+ *   checkTrafficSignal(scene, camera) // Task 1: red over yellow over green
+ *   checkRearLights(scene, camera)    // Task 2: two red lights side by side
+ *
+ * Both return `{ passed, checks: [{ label, passed, detail, skipped?, bonus? }] }`;
+ * `passed` is true when every check that is not a bonus passed. A check that
+ * needs an earlier one (say, the lights' order needs three lights) is
+ * `skipped` (and not passed) until that one passes.
+ */
+import { Camera } from './camera.js';
+import { Sphere } from './shapes/sphere.js';
+import { PointLight } from './lights.js';
+import { Ray } from './ray.js';
+import { nearestHit } from './trace.js';
+import { render } from './render.js';
+import { rgbToHsl } from './color.js';
+import { show } from './check.js';
+
+/** The picture the checks look at is at most this many pixels wide (smaller: faster). */
+const SAMPLE_MAX_WIDTH = 320;
+/** Shapes bigger than this (a ground sphere, say) are not part of a car body. */
+const HUGE = 50;
+
+/* ======================= Task 1: the traffic signal ======================= */
+
+const SIGNAL = ['red', 'yellow', 'green']; // top to bottom
+
+/**
+ * Task 1: three lights (emissive spheres) stacked vertically, red over
+ * yellow over green, at about the same x and z, all in the camera's view.
+ */
+export function checkTrafficSignal(scene, camera) {
+  checkArguments(scene, camera);
+  const lights = findLights(scene);
+  const checks = [];
+  const add = (check) => (checks.push(check), check.passed);
+
+  const three = add(threeLights(lights, scene));
+  const byColour = three ? oneOfEach(lights, SIGNAL) : null;
+  const colours = add(three ? coloursCheck(lights, byColour) : waiting('One red, one yellow, one green', 'three lights'));
+  const stack = colours ? SIGNAL.map((name) => byColour[name]) : null;
+  add(colours ? sameColumn(stack) : waiting('Stacked in one column (same x and z)', 'the three colours'));
+  add(colours ? topToBottom(stack) : waiting('Red on top, yellow in the middle, green at the bottom', 'the three colours'));
+  const seen = colours ? lookAt(scene, camera, stack) : null;
+  const visible = add(colours ? allVisible(seen, camera) : waiting('The camera sees all three', 'the three colours'));
+  add(visible ? pictureOrder(seen) : waiting('In the picture: red, yellow, green from top to bottom', 'all three in view'));
+  return result(checks);
+}
+
+function threeLights(lights, scene) {
+  const label = 'Three lights';
+  if (lights.length === 3) return pass(label, `Three lights: ${listNames(lights)}.`);
+  if (lights.length === 0) return fail(label, `No lights yet. ${HOW_TO_LIGHT}${pointLightHint(scene)}`);
+  return fail(label, `Found ${count(lights.length, 'light')} (${listNames(lights)}); a traffic signal has 3: red, yellow and green.`);
+}
+
+function coloursCheck(lights, byColour) {
+  const label = 'One red, one yellow, one green';
+  if (byColour) return pass(label, 'Red, yellow and green: the three colours of a traffic signal.');
+  const missing = SIGNAL.filter((name) => !lights.some((l) => l.colour === name));
+  return fail(label, `Your lights are ${listNames(lights)}: ${missing.join(' and ')} ${missing.length > 1 ? 'are' : 'is'} missing. ` +
+    'The colour of a light is its emission, e.g. emission: [1, 0.8, 0] for yellow.');
+}
+
+/** Roughly the same x and z: no further apart than the smallest light's radius. */
+function sameColumn(stack) {
+  const label = 'Stacked in one column (same x and z)';
+  const tolerance = Math.min(...stack.map((l) => l.radius));
+  const [top] = stack;
+  for (const light of stack.slice(1)) {
+    const dx = light.center.x - top.center.x, dz = light.center.z - top.center.z;
+    if (Math.abs(dx) > tolerance) {
+      return fail(label, `The ${light.colour} light is ${fmt(Math.abs(dx))} to the ${dx > 0 ? 'right' : 'left'} of the red one ` +
+        `(x = ${fmt(light.center.x)}, red x = ${fmt(top.center.x)}): give all three the same x.`);
+    }
+    if (Math.abs(dz) > tolerance) {
+      return fail(label, `The ${light.colour} light is ${fmt(Math.abs(dz))} ${dz > 0 ? 'in front of' : 'behind'} the red one ` +
+        `(z = ${fmt(light.center.z)}, red z = ${fmt(top.center.z)}): give all three the same z.`);
+    }
+  }
+  return pass(label, `All three at x ≈ ${fmt(top.center.x)}, z ≈ ${fmt(top.center.z)}.`);
+}
+
+/** Red highest, then yellow, then green; no two overlapping. */
+function topToBottom(stack) {
+  const label = 'Red on top, yellow in the middle, green at the bottom';
+  const heights = stack.map((l) => `${l.colour} y = ${fmt(l.center.y)}`).join(', ');
+  const order = [...stack].sort((a, b) => b.center.y - a.center.y).map((l) => l.colour);
+  if (order.join() !== SIGNAL.join()) {
+    return fail(label, `From top to bottom your lights are ${order.join(', ')} (${heights}). Red goes on top, green at the bottom: a larger y is higher.`);
+  }
+  for (let i = 0; i + 1 < stack.length; i++) {
+    const upper = stack[i], lower = stack[i + 1];
+    if (upper.center.y - lower.center.y < upper.radius + lower.radius - 1e-9) {
+      return fail(label, `The ${upper.colour} and ${lower.colour} lights overlap (${heights}): move them further apart, ` +
+        `at least ${fmt(upper.radius + lower.radius)} (the two radii added).`);
+    }
+  }
+  return pass(label, `Top to bottom: ${heights}.`);
+}
+
+/** Where each light shows in the picture, in screen order. */
+function pictureOrder(seen) {
+  const label = 'In the picture: red, yellow, green from top to bottom';
+  const order = [...seen].sort((a, b) => a.row - b.row).map((s) => s.light.colour);
+  if (order.join() !== SIGNAL.join()) {
+    return fail(label, `In the picture, from the top: ${order.join(', ')}. Is the camera upside down or looking from an odd angle?`);
+  }
+  const off = seen.find((s) => s.seenAs !== s.light.colour);
+  if (off) return fail(label, `The ${off.light.colour} light looks ${off.seenAs} in the picture: is another light or a reflection changing its colour?`);
+  return pass(label, `Seen from the top: ${seen.map((s) => `${s.light.colour} (row ${Math.round(s.row)})`).join(', ')}.`);
+}
+
+/* ======================= Task 2: a car's rear lights ====================== */
+
+/**
+ * Task 2: two red lights side by side at the same height (same y, apart in
+ * x, same z), both in the camera's view. Bonus: placed symmetrically about
+ * the middle of the car's body (every shape that is not a light, a plane or
+ * huge).
+ */
+export function checkRearLights(scene, camera) {
+  checkArguments(scene, camera);
+  const lights = findLights(scene);
+  const red = lights.filter((l) => l.colour === 'red');
+  const checks = [];
+  const add = (check) => (checks.push(check), check.passed);
+
+  const two = add(twoRedLights(lights, red, scene));
+  const pair = two ? [...red].sort((a, b) => a.center.x - b.center.x).map((l, i) => ({ ...l, role: i ? 'right' : 'left' })) : null;
+  add(two ? sameHeight(pair) : waiting('At the same height (same y)', 'two red lights'));
+  add(two ? sideBySide(pair) : waiting('Side by side (apart in x, same z)', 'two red lights'));
+  add(two ? bothVisible(lookAt(scene, camera, pair), camera) : waiting('The camera sees both, red', 'two red lights'));
+  checks.push(two ? symmetric(pair, carBody(scene)) : { ...waiting('Bonus: symmetric about the middle of the car', 'two red lights'), bonus: true });
+  return result(checks);
+}
+
+function twoRedLights(lights, red, scene) {
+  const label = 'Two red lights';
+  if (red.length === 2) return pass(label, lights.length > 2 ? `Two red lights (and ${listNames(lights.filter((l) => l.colour !== 'red'))}).` : 'Two red lights.');
+  if (lights.length === 0) return fail(label, `No lights yet. ${HOW_TO_LIGHT}${pointLightHint(scene)}`);
+  if (red.length === 0) return fail(label, `Your ${count(lights.length, 'light')} ${lights.length > 1 ? 'are' : 'is'} ${listNames(lights)}: rear lights are red, e.g. emission: [1, 0, 0].`);
+  return fail(label, `Found ${count(red.length, 'red light')}; a car has 2 rear lights, one on each side.`);
+}
+
+/** Same y within a quarter of the smaller radius. */
+function sameHeight([left, right]) {
+  const label = 'At the same height (same y)';
+  const dy = right.center.y - left.center.y;
+  const tolerance = Math.min(left.radius, right.radius) / 4;
+  if (Math.abs(dy) > tolerance) {
+    const [higher, lower] = dy > 0 ? ['right', 'left'] : ['left', 'right'];
+    return fail(label, `The ${higher} light is ${fmt(Math.abs(dy))} higher than the ${lower} one ` +
+      `(y = ${fmt(left.center.y)} and ${fmt(right.center.y)}): give both the same y.`);
+  }
+  return pass(label, `Both at y ≈ ${fmt(left.center.y)}.`);
+}
+
+/** Apart in x (not overlapping) and at about the same z. */
+function sideBySide([left, right]) {
+  const label = 'Side by side (apart in x, same z)';
+  const gap = right.center.x - left.center.x, dz = right.center.z - left.center.z;
+  if (gap < left.radius + right.radius) {
+    return fail(label, `The two lights are only ${fmt(gap)} apart in x (x = ${fmt(left.center.x)} and ${fmt(right.center.x)}): ` +
+      'put one on the left of the car and one on the right.');
+  }
+  if (Math.abs(dz) > Math.min(left.radius, right.radius)) {
+    return fail(label, `One light is ${fmt(Math.abs(dz))} further back than the other (z = ${fmt(left.center.z)} and ${fmt(right.center.z)}): give both the same z.`);
+  }
+  return pass(label, `Left at x = ${fmt(left.center.x)}, right at x = ${fmt(right.center.x)}, ${fmt(gap)} apart.`);
+}
+
+function bothVisible(seen, camera) {
+  const check = allVisible(seen, camera);
+  return { ...check, label: 'The camera sees both, red' };
+}
+
+/** Bonus: the lights' midpoint is the car body's middle (in x). */
+function symmetric([left, right], body) {
+  const label = 'Bonus: symmetric about the middle of the car';
+  if (!body) return { ...fail(label, 'No car body found (boxes or spheres that are not lights).'), bonus: true };
+  const middle = (left.center.x + right.center.x) / 2;
+  const off = middle - body.middle;
+  const tolerance = Math.min(left.radius, right.radius) / 4;
+  if (Math.abs(off) > tolerance) {
+    return { ...fail(label, `The car's middle is x = ${fmt(body.middle)}, but halfway between your lights is x = ${fmt(middle)}: ` +
+      `move both ${fmt(Math.abs(off))} to the ${off > 0 ? 'left' : 'right'}.`), bonus: true };
+  }
+  return { ...pass(label, `Halfway between the lights is x = ${fmt(middle)}, the middle of the car.`), bonus: true };
+}
+
+/** The middle (in x) of every shape that is not a light, a plane or huge; null when none. */
+function carBody(scene) {
+  let min = Infinity, max = -Infinity;
+  for (const o of scene.objects) {
+    if (o.material.isEmissive) continue;
+    if (o instanceof Sphere && o.radius < HUGE) {
+      min = Math.min(min, o.center.x - o.radius); max = Math.max(max, o.center.x + o.radius);
+    } else if (o.min && o.max && o.max.x - o.min.x < HUGE) {
+      min = Math.min(min, o.min.x); max = Math.max(max, o.max.x);
+    }
+  }
+  return min <= max ? { min, max, middle: (min + max) / 2 } : null;
+}
+
+/* ============================ shared checks =============================== */
+
+const HOW_TO_LIGHT = 'A light is a sphere that gives off light, e.g. new Sphere([0, 1, -10], 0.5, { color: [0, 0, 0], emission: [1, 0, 0] }) is a red one.';
+
+/** Every light must show up in the picture, in its own colour. */
+function allVisible(seen, camera) {
+  const label = 'The camera sees all three';
+  const role = (s) => s.light.role ?? s.light.colour; // 'red' … or 'left', 'right'
+  for (const s of seen) {
+    const name = `The ${role(s)} light`;
+    if (s.pixels === 0) return fail(label, `${name} is not in the picture: ${whereIsIt(s.light, camera)}`);
+    if (s.seenAs !== s.light.colour) {
+      return fail(label, `${name} looks ${s.seenAs} in the picture, not ${s.light.colour}: is something in front of it, or is its surface colour mixing in? Use color: [0, 0, 0].`);
+    }
+  }
+  return pass(label, seen.map((s) => `${role(s)}: ${count(s.pixels, 'pixel')}`).join(', ') + '.');
+}
+
+/** Why a light's sphere covers no pixel: behind the eye, off the picture, or hidden. */
+function whereIsIt(light, camera) {
+  const p = project(camera, light.center);
+  if (p.depth <= 0) return 'it is behind the camera (the camera looks toward −z: give it a smaller z).';
+  const side = p.x < 0 ? 'left of' : p.x >= camera.width ? 'right of' : p.y < 0 ? 'above' : p.y >= camera.height ? 'below' : null;
+  if (side) return `it is ${side} the picture (it would be at pixel ${Math.round(p.x)},${Math.round(p.y)}).`;
+  return 'something hides it. Is it inside a box? Move it toward the camera (a larger z).';
+}
+
+/* ============================== sampling ================================== */
+
+/**
+ * The scene's lights: emissive spheres, each with its centre, radius and
+ * colour name ('red', 'yellow', 'green', 'blue', 'purple', 'white').
+ */
+export function findLights(scene) {
+  return scene.objects
+    .filter((o) => o instanceof Sphere && o.material.isEmissive)
+    .map((sphere) => ({ sphere, center: sphere.center, radius: sphere.radius, colour: lightColour(sphere.material.emission) }));
+}
+
+/**
+ * The name of a light's colour from its hue (any brightness): traffic-light
+ * names, so an amber [1, 0.6, 0] counts as yellow and a blue-green as green.
+ * Colours with little saturation are 'white'; [0, 0, 0] is 'off'.
+ */
+export function lightColour([r, g, b]) {
+  const max = Math.max(r, g, b);
+  if (!(max > 0)) return 'off';
+  const { h } = rgbToHsl(r / max, g / max, b / max);
+  if ((max - Math.min(r, g, b)) / max < 0.3) return 'white';
+  if (h < 20 || h >= 330) return 'red';
+  if (h < 75) return 'yellow';
+  if (h < 190) return 'green';
+  if (h < 260) return 'blue';
+  return 'purple';
+}
+
+/**
+ * Traces the scene through the camera (a smaller copy for big cameras) and,
+ * for each light, finds the pixels it covers: how many, their mean row, and
+ * the colour name of their mean colour.
+ */
+export function lookAt(scene, camera, lights) {
+  const cam = sampleCamera(camera);
+  const pixels = render(scene, cam);
+  const ray = new Ray(cam.position), hit = { object: null, t: Infinity };
+  const seen = lights.map((light) => ({ light, pixels: 0, rowSum: 0, rgb: [0, 0, 0] }));
+  for (let y = 0, i = 0; y < cam.height; y++) {
+    for (let x = 0; x < cam.width; x++, i += 4) {
+      cam.directionAt(x, y, ray.direction);
+      if (!nearestHit(scene.objects, ray, hit)) continue;
+      const s = seen.find((e) => e.light.sphere === hit.object);
+      if (!s) continue;
+      s.pixels++;
+      s.rowSum += y;
+      for (let c = 0; c < 3; c++) s.rgb[c] += pixels[i + c];
+    }
+  }
+  const toCamera = camera.height / cam.height; // rows and pixel counts in the student's camera's units
+  return seen.map((s) => ({
+    light: s.light,
+    pixels: Math.round(s.pixels * toCamera * toCamera),
+    row: s.pixels ? (s.rowSum / s.pixels + 0.5) * toCamera - 0.5 : null,
+    seenAs: s.pixels ? lightColour(s.rgb.map((c) => c / s.pixels / 255)) : null,
+  }));
+}
+
+function sampleCamera(camera) {
+  if (camera.width <= SAMPLE_MAX_WIDTH) return camera;
+  const k = SAMPLE_MAX_WIDTH / camera.width;
+  const { fov, position, yaw, pitch } = camera;
+  return new Camera({ width: SAMPLE_MAX_WIDTH, height: Math.max(1, Math.round(camera.height * k)), fov, position, yaw, pitch });
+}
+
+/** Where a point lands on the camera's picture (pixel x, y) and its depth along the view. */
+function project(camera, point) {
+  const dx = point.x - camera.position.x, dy = point.y - camera.position.y, dz = point.z - camera.position.z;
+  const along = (v) => dx * v.x + dy * v.y + dz * v.z;
+  const depth = along(camera.forward);
+  const sx = along(camera.right) / depth / camera.halfWidth, sy = along(camera.up) / depth / camera.halfHeight;
+  return { depth, x: ((sx + 1) * camera.width) / 2 - 0.5, y: ((1 - sy) * camera.height) / 2 - 0.5 };
+}
+
+/* ============================== helpers =================================== */
+
+/** `{ red: light, yellow: light, … }` when each name has exactly one light, else null. */
+function oneOfEach(lights, names) {
+  const byColour = {};
+  for (const name of names) {
+    const matches = lights.filter((l) => l.colour === name);
+    if (matches.length !== 1) return null;
+    byColour[name] = matches[0];
+  }
+  return byColour;
+}
+
+/** A hint for students who used a PointLight, which lights the scene but cannot be seen. */
+function pointLightHint(scene) {
+  const coloured = scene.lights.some((l) => l.source instanceof PointLight && lightColour(l.emission) !== 'white');
+  return coloured ? ' (A PointLight cannot be seen in the picture: use a sphere with an emission.)' : '';
+}
+
+function checkArguments(scene, camera) {
+  if (!scene || !Array.isArray(scene.objects)) throw new TypeError(`scene must be a Scene, got ${show(scene)}`);
+  if (!(camera instanceof Camera)) throw new TypeError(`camera must be a Camera, got ${show(camera)}`);
+}
+
+function result(checks) {
+  return { passed: checks.every((c) => c.passed || c.bonus), checks };
+}
+
+const pass = (label, detail) => ({ label, passed: true, detail });
+const fail = (label, detail) => ({ label, passed: false, detail });
+const waiting = (label, what) => ({ label, passed: false, skipped: true, detail: `Checked once you have ${what}.` });
+const listNames = (lights) => lights.map((l) => l.colour).join(', ');
+const count = (n, word) => `${n} ${word}${n === 1 ? '' : 's'}`;
+const fmt = (n) => String(Math.round(n * 100) / 100);
+
+/* ============================ the check panel ============================= */
+
+/**
+ * Shows a check's result in `element` (a DOM element): a headline ("Passed!"
+ * or "Not yet: n checks to fix") and one line per check, ✓, ✗ or – (waiting),
+ * with its message. The element gets `data-check="passed"|"not-yet"`; each
+ * line `data-check-item="passed"|"failed"|"skipped"`.
+ */
+export function showCheck(element, { passed, checks }) {
+  const doc = element.ownerDocument;
+  const make = (tag, attributes, text) => {
+    const el = doc.createElement(tag);
+    for (const [k, v] of Object.entries(attributes)) el.setAttribute(k, v);
+    if (text !== undefined) el.textContent = text;
+    return el;
+  };
+  const toFix = checks.filter((c) => !c.passed && !c.skipped && !c.bonus).length;
+  const headline = passed ? 'Passed! Your scene does what the task asks.'
+    : `Not yet: ${toFix} ${toFix === 1 ? 'check' : 'checks'} to fix.`;
+  const list = make('ul', { class: 'hw-checks' });
+  for (const c of checks) {
+    const state = c.passed ? 'passed' : c.skipped ? 'skipped' : 'failed';
+    const item = make('li', { 'data-check-item': state, class: `hw-${state}${c.bonus ? ' hw-bonus' : ''}` });
+    item.append(make('span', { class: 'hw-mark', 'aria-hidden': 'true' }, c.passed ? '✓' : c.skipped ? '–' : '✗'),
+      make('b', {}, c.label), make('span', { class: 'hw-detail' }, c.detail));
+    list.append(item);
+  }
+  element.dataset.check = passed ? 'passed' : 'not-yet';
+  element.replaceChildren(make('p', { class: 'hw-headline' }, headline), list);
+}

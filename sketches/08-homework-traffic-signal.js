@@ -1,0 +1,59 @@
+/**
+ * 08 · Homework 1: a traffic signal (slide "Homework", Task 1).
+ *
+ * A scene is shapes with materials, and a sphere with an emission is a light
+ * you can see. The road, the pole and the signal's housing are here already;
+ * your task is the three lights: write them in addLights() below, save (the
+ * page reloads), then press "Check my scene".
+ * The teacher's answer: open this page with ?solution=1.
+ */
+import p5 from 'p5';
+import { Scene, Sphere, Box, Plane, PointLight, Camera } from '../lib/index.js';
+import { createTracerView, createInspector } from '../lib/p5/index.js';
+import { checkTrafficSignal, showCheck } from '../lib/homework.js';
+
+/* ---------------------------- YOUR HOMEWORK ----------------------------
+ * TODO: add three lights to the signal: red on top, yellow in the middle,
+ * green at the bottom, one above the other at the housing's front
+ * (x = 0, z = -16; the housing goes from y = 3.4 up to y = 7.4).
+ * A light is a sphere that gives off light, like this blue one:
+ *   scene.add(new Sphere([3, 1, -16], 0.5, { color: [0, 0, 0], emission: [0, 0, 1] }));
+ */
+export function addLights(scene) {
+  // TODO: your three lights here.
+}
+/* ----------------------------------------------------------------------- */
+
+const WIDTH = 160, HEIGHT = 120; // traced pixels
+
+/** The street: a road, the pole, the signal's housing, the sun; then the lights. */
+export function makeScene(addTheLights = addLights) {
+  const scene = new Scene({ background: [0.62, 0.78, 0.95], ambient: 0.2 });
+  const add = (name, shape) => scene.add(Object.assign(shape, { name }));
+  add('road', new Plane([0, 0, 0], [0, 1, 0], { color: [0.32, 0.33, 0.36] }));
+  add('pole', new Box([-0.15, 0, -16.65], [0.15, 3.4, -16.35], { color: [0.35, 0.36, 0.38] }));
+  add('housing', new Box([-0.8, 3.4, -16.8], [0.8, 7.4, -16.2], { color: [0.15, 0.15, 0.16] }));
+  add('sun', new PointLight([40, 200, 60], [1, 1, 1], 0.8));
+  addTheLights(scene);
+  return scene;
+}
+
+export function makeCamera() {
+  return new Camera({ width: WIDTH, height: HEIGHT, fov: 35, position: [0, 1.6, 0], pitch: 7 });
+}
+
+new p5((p) => {
+  p.setup = async () => {
+    p.noCanvas(); // the tracer view brings its own canvas
+    const solution = new URLSearchParams(location.search).get('solution') === '1';
+    const scene = makeScene(solution ? (await import('./solutions/08-traffic-signal.js')).addLights : addLights);
+    const view = createTracerView(p, { scene, camera: makeCamera(), parent: 'picture',
+      label: solution ? 'The reference solution (sketches/solutions/08-traffic-signal.js)' : 'Your traffic signal' });
+    createInspector({ view, parent: 'sketch' });
+
+    const button = p.createButton('Check my scene').class('rt-button').parent('check');
+    const results = p.createDiv('Press the button to check your scene against the task.').parent('check');
+    results.attribute('data-check-results', '');
+    button.mousePressed(() => showCheck(results.elt, checkTrafficSignal(view.scene, view.camera)));
+  };
+}, 'sketch');

@@ -1,0 +1,64 @@
+/**
+ * 09 · Homework 2: a car's two rear lights (slide "Homework", Task 2).
+ *
+ * The camera stands behind a car made of boxes and spheres. Your task: the
+ * two red rear lights, side by side at the same height. Write them in
+ * addLights() below, save (the page reloads), then press "Check my scene".
+ * The teacher's answer: open this page with ?solution=1.
+ */
+import p5 from 'p5';
+import { Scene, Sphere, Box, Plane, PointLight, Camera } from '../lib/index.js';
+import { createTracerView, createInspector } from '../lib/p5/index.js';
+import { checkRearLights, showCheck } from '../lib/homework.js';
+
+/* ---------------------------- YOUR HOMEWORK ----------------------------
+ * TODO: add the car's two rear lights: red, side by side, at the same
+ * height, one on the left and one on the right of the car's back.
+ * The car goes from x = -1 to x = 1 and from y = 0.3 to y = 1 (the body);
+ * its back is at z = -6.6: put the lights at z = -6.5 so they stick out.
+ * A light is a sphere that gives off light, like this yellow one:
+ *   scene.add(new Sphere([2, 0.5, -6.5], 0.14, { color: [0, 0, 0], emission: [1, 0.8, 0] }));
+ */
+export function addLights(scene) {
+  // TODO: your two rear lights here.
+}
+/* ----------------------------------------------------------------------- */
+
+const WIDTH = 160, HEIGHT = 120; // traced pixels
+const PAINT = { color: [0.2, 0.42, 0.85], specular: 0.4 };
+const TYRE = { color: [0.08, 0.08, 0.09] };
+
+/** A road, a car seen from behind (body, cabin, rear window, plate, wheels), the sun; then the lights. */
+export function makeScene(addTheLights = addLights) {
+  const scene = new Scene({ background: [0.62, 0.78, 0.95], ambient: 0.2 });
+  const add = (name, shape) => scene.add(Object.assign(shape, { name }));
+  add('road', new Plane([0, 0, 0], [0, 1, 0], { color: [0.32, 0.33, 0.36] }));
+  add('body', new Box([-1, 0.3, -10.6], [1, 1, -6.6], PAINT));
+  add('cabin', new Box([-0.8, 1, -9.6], [0.8, 1.55, -7.3], PAINT));
+  add('rear window', new Box([-0.65, 1.08, -7.32], [0.65, 1.48, -7.26], { color: [0.1, 0.12, 0.16], specular: 0.8 }));
+  add('number plate', new Box([-0.3, 0.42, -6.62], [0.3, 0.6, -6.56], { color: [0.95, 0.95, 0.9] }));
+  for (const x of [-0.92, 0.92]) for (const z of [-7.3, -9.9]) add('wheel', new Sphere([x, 0.33, z], 0.33, TYRE));
+  add('sun', new PointLight([40, 120, 120], [1, 1, 1], 0.8));
+  addTheLights(scene);
+  return scene;
+}
+
+export function makeCamera() {
+  return new Camera({ width: WIDTH, height: HEIGHT, position: [0, 1.4, 0], pitch: -5 });
+}
+
+new p5((p) => {
+  p.setup = async () => {
+    p.noCanvas(); // the tracer view brings its own canvas
+    const solution = new URLSearchParams(location.search).get('solution') === '1';
+    const scene = makeScene(solution ? (await import('./solutions/09-rear-lights.js')).addLights : addLights);
+    const view = createTracerView(p, { scene, camera: makeCamera(), parent: 'picture',
+      label: solution ? 'The reference solution (sketches/solutions/09-rear-lights.js)' : 'Your car, seen from behind' });
+    createInspector({ view, parent: 'sketch' });
+
+    const button = p.createButton('Check my scene').class('rt-button').parent('check');
+    const results = p.createDiv('Press the button to check your scene against the task.').parent('check');
+    results.attribute('data-check-results', '');
+    button.mousePressed(() => showCheck(results.elt, checkRearLights(view.scene, view.camera)));
+  };
+}, 'sketch');
