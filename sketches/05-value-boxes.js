@@ -1,0 +1,80 @@
+/**
+ * 05 · Value boxes (the class's example page with input boxes: "Modify the
+ * values in the boxes").
+ *
+ * The scene is just numbers: each sphere's centre (x, y, z) and radius, its
+ * colour, how much it reflects and lets through, and its emission — a sphere
+ * that gives off light IS a light. Change a box and the picture is traced
+ * again; a bad value gets a message beside its box and changes nothing.
+ * The scene travels in the page's link (?scene=…) and as code.
+ */
+import p5 from 'p5';
+import { Camera, classScene } from '../lib/index.js';
+import { sceneToJSON, sceneToCode } from '../lib/serialize.js';
+import { createTracerView, createInspector } from '../lib/p5/index.js';
+import { createSceneForm, encodeScene, decodeScene } from '../lib/p5/scene-form.js';
+import { element } from '../lib/p5/dom.js';
+
+// The picture: its size in pixels and how wide the eye sees.
+const WIDTH = 160;
+const HEIGHT = 120;
+const FOV = 30;
+
+new p5((p) => {
+  let view, status;
+
+  p.setup = () => {
+    p.noCanvas();
+    const { scene, problem } = sceneFromLink();
+    view = createTracerView(p, { scene, camera: new Camera({ width: WIDTH, height: HEIGHT, fov: FOV }), scale: 3, label: `${WIDTH} × ${HEIGHT} pixels` });
+    createInspector({ view }); // beside the picture
+
+    const values = document.getElementById('values');
+    values.parentElement.append(values); // under both: the boxes get the page's whole width
+    values.parentElement.before(element('p', { class: 'notice', 'data-link-problem': '', role: 'alert' }, problem));
+    const panel = element('section', { class: 'panel' }, element('h2', {}, 'The values'));
+    values.append(panel, shareTools());
+    createSceneForm({ json: sceneToJSON(scene), parent: panel, onChange: (changed, json) => {
+      view.setScene(changed);
+      history.replaceState(null, '', `?scene=${encodeScene(json)}`); // the link now shares this scene
+    } });
+  };
+
+  // ?scene=… in the link, else the class scene; a bad link says why and shows the class scene.
+  function sceneFromLink() {
+    const link = new URLSearchParams(location.search).get('scene');
+    if (link === null) return { scene: classScene(), problem: '' };
+    try {
+      return { scene: decodeScene(link), problem: '' };
+    } catch (error) {
+      return { scene: classScene(), problem: `The scene in this link could not be read (${error.message}), so here is the class scene.` };
+    }
+  }
+
+  function shareTools() {
+    const codeBox = element('textarea', { rows: '12', readonly: '', spellcheck: 'false', 'data-scene-code': '', 'aria-label': 'The scene as code', hidden: '' });
+    status = element('span', { class: 'status', role: 'status' });
+    const copyCode = button('Copy scene as code', () => {
+      codeBox.value = sceneToCode(view.scene);
+      codeBox.hidden = false;
+      share(codeBox.value, 'Code copied: paste it into a sketch.');
+    });
+    const copyLink = button('Copy link', () => share(location.href, 'Link copied: paste it into the chat.'));
+    return element('section', { class: 'panel share' }, copyCode, copyLink, status, codeBox);
+  }
+
+  const button = (label, onClick) => {
+    const b = element('button', { type: 'button', class: 'rt-button' }, label);
+    b.addEventListener('click', onClick);
+    return b;
+  };
+
+  async function share(text, done) {
+    try {
+      await navigator.clipboard.writeText(text);
+      status.textContent = done;
+    } catch {
+      status.textContent = 'Select the text and press Ctrl+C (⌘C).';
+    }
+  }
+}, document.getElementById('sketch'));
