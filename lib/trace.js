@@ -22,16 +22,13 @@ const DEG = 180 / Math.PI;
  * @param {number} [depth=0] how many bounces led here
  */
 export function trace(scene, ray, out, steps, depth = 0) {
-  const f = frame(depth);
+  const f = frames[depth] ?? newFrame(depth);
   if (!nearestHit(scene.objects, ray, f.hit)) {
     if (steps) steps.hit = null;
-    return setColor(out, scene.background[0], scene.background[1], scene.background[2]);
+    return copyColor(out, scene.background);
   }
   const object = f.hit.object, m = object.material;
-  scaleAndAdd(f.point, ray.origin, ray.direction, f.hit.t);
-  object.normalAt(f.point, f.normal);
-  const inside = dot(ray.direction, f.normal) > 0;
-  if (inside) scale(f.normal, f.normal, -1); // shade the side the ray sees
+  const inside = surfaceAt(f, ray);
   const record = steps ? hitRecord(steps, object, f, ray, inside, scene) : null;
 
   lightPoint(scene, object, f, ray, out, record);
@@ -51,6 +48,21 @@ export function nearestHit(objects, ray, hit) {
   hit.object = found;
   hit.t = nearest;
   return found !== null;
+}
+
+/**
+ * The hit point P = Ro + Rd·t and its unit normal, turned to face the ray;
+ * true when the ray meets the surface from inside. (Numbers stay in `f`
+ * rather than passing between functions: a bare number handed to a function
+ * the engine did not inline costs an allocation, once per pixel.)
+ */
+function surfaceAt(f, ray) {
+  const o = ray.origin, d = ray.direction, t = f.hit.t, P = f.point, N = f.normal;
+  P.x = o.x + d.x * t; P.y = o.y + d.y * t; P.z = o.z + d.z * t;
+  f.hit.object.normalAt(P, N);
+  const inside = d.x * N.x + d.y * N.y + d.z * N.z > 0;
+  if (inside) { N.x = -N.x; N.y = -N.y; N.z = -N.z; } // shade the side the ray sees
+  return inside;
 }
 
 /** Emission + ambient + every light the point can see (diffuse and specular). */
@@ -154,9 +166,14 @@ function setColor(out, r, g, b) {
   return out;
 }
 
+function copyColor(out, c) {
+  out[0] = c[0]; out[1] = c[1]; out[2] = c[2];
+  return out;
+}
+
 /* Scratch space, one frame per bounce depth, so tracing allocates nothing. */
 const frames = [];
-function frame(depth) {
+function newFrame(depth) {
   while (frames.length <= depth) {
     frames.push({
       hit: { object: null, t: Infinity }, point: vec3(), normal: vec3(), toLight: vec3(),
