@@ -1,0 +1,90 @@
+/**
+ * 06 · Lights, shadows and reflections (slides "Part 2: Coding": a scene of
+ * spheres with materials — surface colour, reflection, transparency, emission —
+ * and what colour is this pixel?). From each hit point the tracer sends a
+ * shadow ray to each light; a mirror sends the ray on, glass bends it through.
+ * One switch per idea; each one re-traces the picture.
+ */
+import p5 from 'p5';
+import { Scene, Sphere, Plane, PointLight, Camera } from '../lib/index.js';
+import { createTracerView, createInspector } from '../lib/p5/index.js';
+
+const WIDTH = 160, HEIGHT = 120;    // traced pixels
+const SMALL_OFFSET = 1e-4;          // ε: how far a shadow ray starts off the surface
+const BIG_OFFSET = 0.3;             // far too far: shadows come loose from what casts them
+const MAX_BOUNCES = 5;              // mirror and glass bounces (scene.maxDepth)
+const GLASS = 0.9;                  // the glass sphere's transparency when it is on
+
+/** A floor, a mirror, a red ball, a glass ball, a point light and a lamp (an emissive sphere). */
+function makeScene() {
+  const scene = new Scene({ background: [0.55, 0.7, 0.9], ambient: 0.2, maxDepth: MAX_BOUNCES });
+  const add = (name, thing) => scene.add(Object.assign(thing, { name }));
+  add('floor', new Plane([0, -1, 0], [0, 1, 0], { color: [0.8, 0.8, 0.76] }));
+  add('mirror', new Sphere([-2.4, 0, -10], 1, { color: [0.95, 0.95, 0.95], reflection: 0.85, specular: 0.6 }));
+  add('red ball', new Sphere([0, 0, -11], 1, { color: [0.95, 0.25, 0.3], specular: 0.6, shininess: 40 }));
+  add('glass', new Sphere([2.4, 0, -10], 1, { color: [0.95, 1, 0.97], transparency: GLASS, ior: 1.5, specular: 0.8 }));
+  add('point light', new PointLight([4, 8, -3], [1, 1, 1], 0.85));
+  add('lamp', new Sphere([-4, 3, -16], 0.6, { color: [0, 0, 0], emission: [1, 0.8, 0.5] }));
+  return scene;
+}
+
+new p5((p) => {
+  let view;
+  const scene = makeScene();
+  const glass = scene.objects.find((o) => o.name === 'glass');
+
+  p.setup = () => {
+    p.noCanvas(); // the tracer view brings its own canvas
+    const column = p.createDiv().addClass('column'); // the picture, its switches below
+    view = createTracerView(p, { scene, camera: new Camera({ width: WIDTH, height: HEIGHT, position: [0, 1.6, 2], pitch: -9 }), parent: column });
+    createInspector({ view, parent: p._userNode });
+
+    const panel = p.createElement('fieldset').addClass('switches').parent(column);
+    panel.child(p.createElement('legend', 'One switch per idea'));
+    const shadows = toggle(panel, 'shadows', 'a shadow ray from each hit point to each light: blocked means dark.');
+    const offset = p.createSelect();
+    offset.option(`${SMALL_OFFSET} (a small ε)`, String(SMALL_OFFSET));
+    offset.option('0 (none)', '0');
+    offset.option(`${BIG_OFFSET} (too big)`, String(BIG_OFFSET));
+    const offsetLabel = p.createElement('label', 'shadow-ray offset ');
+    offsetLabel.child(offset);
+    control(panel, offsetLabel, 'a shadow or mirror ray starts this far off the surface, so that rounding ' +
+      'cannot make it hit the very surface it starts on (dark speckles, "shadow acne"). At 0 you will find ' +
+      'hardly any here: the library already ignores hits closer than 0.000001. Too big, and shadows come ' +
+      'loose from what casts them.');
+    const bounces = p.createSlider(0, MAX_BOUNCES, MAX_BOUNCES, 1);
+    const bouncesLabel = p.createElement('label', `mirror bounces: ${MAX_BOUNCES} `);
+    bouncesLabel.child(bounces);
+    control(panel, bouncesLabel, '0: mirrors and glass look like plain paint; each bounce lets the ray go on once more.');
+    const specular = toggle(panel, 'highlights', 'the shiny spot where a light is mirrored toward the eye (specular).');
+    const seeThrough = toggle(panel, 'glass', `the right ball lets ${GLASS * 100}% of the light through, bent (transparency).`);
+
+    /** Reads every switch into the scene and traces it again. */
+    const retrace = () => {
+      scene.shadows = shadows.checked();
+      scene.bias = Number(offset.value());
+      scene.maxDepth = Number(bounces.value());
+      scene.specular = specular.checked();
+      glass.material.transparency = seeThrough.checked() ? GLASS : 0;
+      bouncesLabel.elt.firstChild.textContent = `mirror bounces: ${scene.maxDepth} `;
+      view.restart();
+    };
+    for (const input of [shadows, offset, specular, seeThrough]) input.changed(retrace);
+    bounces.input(retrace);
+  };
+
+  /** A checkbox, on at first, with a line saying what it does. */
+  function toggle(panel, name, why) {
+    const checkbox = p.createCheckbox(` ${name}`, true);
+    checkbox.attribute('data-switch', name);
+    control(panel, checkbox, why);
+    return checkbox;
+  }
+
+  function control(panel, input, why) {
+    const item = p.createDiv().addClass('switch');
+    item.child(input);
+    item.child(p.createP(why).addClass('why'));
+    panel.child(item);
+  }
+}, document.getElementById('sketch'));
