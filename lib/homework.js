@@ -348,6 +348,19 @@ const fmt = (n) => String(Math.round(n * 100) / 100);
 /* ============================ the check panel ============================= */
 
 /**
+ * Reads `?solution=` from a page's query string: '1' shows the reference
+ * solution, '0' (or no parameter) the student's scene. Any other value gives
+ * the student's scene and a message saying what the parameter takes.
+ * @returns {{ solution: boolean, message: string|null }}
+ */
+export function solutionParameter(search) {
+  const value = new URLSearchParams(search).get('solution');
+  if (value === null || value === '0') return { solution: false, message: null };
+  if (value === '1') return { solution: true, message: null };
+  return { solution: false, message: `?solution= takes 1 (show the reference solution) or 0 (your scene), got ${show(value)}: showing your scene.` };
+}
+
+/**
  * Shows a check's result in `element` (a DOM element): a headline ("Passed!"
  * or "Not yet: n checks to fix") and one line per check, ✓, ✗ or – (waiting),
  * with its message. The element gets `data-check="passed"|"not-yet"`; each

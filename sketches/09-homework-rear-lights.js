@@ -9,7 +9,7 @@
 import p5 from 'p5';
 import { Scene, Sphere, Box, Plane, PointLight, Camera } from '../lib/index.js';
 import { createTracerView, createInspector } from '../lib/p5/index.js';
-import { checkRearLights, showCheck } from '../lib/homework.js';
+import { checkRearLights, showCheck, solutionParameter } from '../lib/homework.js';
 
 /* ---------------------------- YOUR HOMEWORK ----------------------------
  * TODO: add the car's two rear lights: red, side by side, at the same
@@ -50,7 +50,7 @@ export function makeCamera() {
 new p5((p) => {
   p.setup = async () => {
     p.noCanvas(); // the tracer view brings its own canvas
-    const solution = new URLSearchParams(location.search).get('solution') === '1';
+    const { solution, message } = solutionParameter(location.search); // ?solution=1: the teacher's answer
     const scene = makeScene(solution ? (await import('./solutions/09-rear-lights.js')).addLights : addLights);
     const view = createTracerView(p, { scene, camera: makeCamera(), parent: 'picture',
       label: solution ? 'The reference solution (sketches/solutions/09-rear-lights.js)' : 'Your car, seen from behind' });
@@ -59,6 +59,7 @@ new p5((p) => {
     const button = p.createButton('Check my scene').class('rt-button').parent('check');
     const results = p.createDiv('Press the button to check your scene against the task.').parent('check');
     results.attribute('data-check-results', '');
+    if (message) p.createP(message).class('hw-warning').attribute('role', 'alert').parent('check');
     button.mousePressed(() => showCheck(results.elt, checkRearLights(view.scene, view.camera)));
   };
 }, 'sketch');

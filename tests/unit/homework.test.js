@@ -2,7 +2,7 @@
 // with the right message, and each kind of mistake fails on its own check.
 import { describe, test, expect, vi } from 'vitest';
 import { Sphere, Camera, Scene } from '../../lib/index.js';
-import { checkTrafficSignal, checkRearLights, lightColour, findLights } from '../../lib/homework.js';
+import { checkTrafficSignal, checkRearLights, lightColour, findLights, solutionParameter } from '../../lib/homework.js';
 
 // The sketches are p5 sketches; their scenes are plain library code. Without
 // a browser, p5 and the adapter are stand-ins that do nothing.
@@ -175,5 +175,19 @@ describe('light colours', () => {
   test('findLights lists emissive spheres only', () => {
     const scene = new Scene().add(light([0, 0, -5], RED)).add(new Sphere([1, 0, -5], 1, { color: [1, 0, 0] }));
     expect(findLights(scene).map((l) => l.colour)).toEqual(['red']);
+  });
+});
+
+describe('solutionParameter', () => {
+  test('?solution=1 shows the solution; none or 0 the student\'s scene', () => {
+    expect(solutionParameter('?solution=1')).toEqual({ solution: true, message: null });
+    expect(solutionParameter('?solution=0')).toEqual({ solution: false, message: null });
+    expect(solutionParameter('')).toEqual({ solution: false, message: null });
+  });
+
+  test('another value shows the student\'s scene and says what the parameter takes', () => {
+    const { solution, message } = solutionParameter('?solution=yes');
+    expect(solution).toBe(false);
+    expect(message).toMatch(/^\?solution= takes 1 \(show the reference solution\) or 0 \(your scene\), got .*yes.*: showing your scene\.$/);
   });
 });
