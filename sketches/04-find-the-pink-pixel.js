@@ -30,7 +30,7 @@ new p5((p) => {
   p.setup = () => {
     view = createTracerView(p, { scene: classScene(), camera: cameraFor(START.h, START.v), parent: 'picture', scale: SCALE, grid: true, label: `The class scene: ${WIDTH} × ${HEIGHT} pixels` });
     // This sketch's canvas lies over the picture and marks the pink pixels; the traced canvas stays as traced.
-    p.createCanvas(WIDTH * SCALE, HEIGHT * SCALE).parent(view.canvas.parentElement).class('pink-marks').attribute('data-pink-marks', '');
+    p.createCanvas(WIDTH * SCALE, HEIGHT * SCALE).parent(view.canvas.parentElement).class('pink-marks').attribute('data-pink-marks', '').attribute('data-overlay', '');
     p.pixelDensity(1);
 
     boxes = {

@@ -1,0 +1,146 @@
+// The value boxes' pure parts: reading what a student types (every bad value
+// named), showing colours, editing scene JSON, and the scene in a link.
+import { describe, it, expect } from 'vitest';
+import { classScene, render, Camera } from '../../lib/index.js';
+import { sceneToJSON, sceneFromJSON } from '../../lib/serialize.js';
+import {
+  readNumber, readColor, colorText, tableColumns, COLUMNS, withValue, compactSceneJSON, encodeScene, decodeScene,
+} from '../../lib/p5/scene-form.js';
+
+describe('readNumber', () => {
+  it('reads numbers as people type them', () => {
+    expect(readNumber('4', 'radius')).toBe(4);
+    expect(readNumber('  -5.5 ', 'x')).toBe(-5.5);
+    expect(readNumber('.5', 'x')).toBe(0.5);
+    expect(readNumber('1e3', 'x')).toBe(1000);
+    expect(readNumber('−3', 'x')).toBe(-3); // a typographic minus
+    expect(readNumber(12, 'x')).toBe(12);
+  });
+
+  it('names the box when it is empty or not a number', () => {
+    expect(() => readNumber('', 'Pixel x')).toThrow(TypeError);
+    expect(() => readNumber('   ', 'Pixel x')).toThrow(/^Pixel x is empty/);
+    expect(() => readNumber('abc', 'radius')).toThrow(/^radius must be a number, got "abc"/);
+    expect(() => readNumber('4px', 'radius')).toThrow(/^radius must be a number/);
+    expect(() => readNumber('1,5', 'radius')).toThrow(/^radius must be a number/);
+    expect(() => readNumber('NaN', 'radius')).toThrow(/^radius must be a number/);
+    expect(() => readNumber('Infinity', 'radius')).toThrow(/^radius must be a number/);
+    expect(() => readNumber('1e999', 'radius')).toThrow(RangeError);
+  });
+
+  it('checks whole numbers and ranges, with the range in the message', () => {
+    const rule = { min: 0, max: 31, integer: true };
+    expect(readNumber('31', 'Pixel x', rule)).toBe(31);
+    expect(() => readNumber('32', 'Pixel x', rule)).toThrow(/^Pixel x must be from 0 to 31, got 32$/);
+    expect(() => readNumber('-1', 'Pixel x', rule)).toThrow(RangeError);
+    expect(() => readNumber('2.5', 'Pixel x', rule)).toThrow(/^Pixel x must be a whole number, got 2.5$/);
+    expect(() => readNumber('', 'Pixel x', rule)).toThrow(/whole number from 0 to 31/);
+    expect(() => readNumber('120', 'Camera V', { min: -90, max: 90 })).toThrow(/^Camera V must be from -90 to 90, got 120$/);
+    expect(() => readNumber('-1', 'intensity', { min: 0 })).toThrow(/^intensity must be at least 0, got -1$/);
+  });
+
+  it('can exclude the bound: a radius must be greater than 0', () => {
+    expect(readNumber('0.001', 'radius', { above: 0 })).toBe(0.001);
+    expect(() => readNumber('0', 'radius', { above: 0 })).toThrow(/^radius must be greater than 0, got 0$/);
+    expect(() => readNumber('-1', 'radius', { above: 0 })).toThrow(/^radius must be greater than 0, got -1$/);
+  });
+});
+
+describe('readColor and colorText', () => {
+  it('reads hex, names, rgb(), three numbers and one number (a grey)', () => {
+    expect(readColor('#ff0000', 'colour')).toEqual([1, 0, 0]);
+    expect(readColor('pink', 'colour')).toEqual([1, 192 / 255, 203 / 255]);
+    expect(readColor('rgb(0, 255, 0)', 'colour')).toEqual([0, 1, 0]);
+    expect(readColor('1, 0.32, 0.36', 'colour')).toEqual([1, 0.32, 0.36]);
+    expect(readColor('[1 0.5 0]', 'colour')).toEqual([1, 0.5, 0]);
+    expect(readColor('1.2', 'emission')).toEqual([1.2, 1.2, 1.2]);
+  });
+
+  it('names the box for a bad colour', () => {
+    expect(() => readColor('', 'Sphere 1 colour')).toThrow(/^Sphere 1 colour is empty/);
+    expect(() => readColor('pinkish', 'Sphere 1 colour')).toThrow(/^Sphere 1 colour must be a colour like/);
+    expect(() => readColor('-1', 'emission')).toThrow(RangeError);
+    expect(() => readColor('-1', 'emission')).toThrow(/^emission/);
+    expect(() => readColor('1, 2', 'colour')).toThrow(/^colour/);
+  });
+
+  it('shows colours the way a box can read them back', () => {
+    expect(colorText([1, 0, 0])).toBe('#ff0000');
+    expect(colorText([2, 2, 2])).toBe('2');
+    expect(colorText([1.2, 1.2, 1.2], { grey: true })).toBe('1.2');
+    expect(colorText([0, 0, 0], { grey: true })).toBe('0');
+    expect(colorText([0, 0, 0])).toBe('#000000');
+    expect(colorText([2, 1, 0])).toBe('2, 1, 0');
+    for (const rgb of [[2, 2, 2], [2, 1, 0], [0.2, 0.4, 1]]) expect(readColor(colorText(rgb), 'c')).toEqual(rgb);
+  });
+});
+
+describe('the columns of each kind of object', () => {
+  it('give every sphere its centre, radius, colour, reflection, transparency and emission', () => {
+    expect(tableColumns('sphere').map((c) => c.label)).toEqual(
+      ['centre x', 'centre y', 'centre z', 'radius', 'colour', 'reflection', 'transparency', 'emission']);
+    expect(tableColumns('pointLight').map((c) => c.label)).toEqual(['position x', 'position y', 'position z', 'colour', 'intensity']);
+    expect(() => tableColumns('cone')).toThrow(/type must be one of/);
+  });
+
+  it('point at fields that exist in the JSON of each type', () => {
+    const json = sceneToJSON(sceneFromJSON({
+      objects: [
+        { type: 'sphere', center: [0, 0, -5], radius: 1 },
+        { type: 'pointLight', position: [1, 2, 3] },
+        { type: 'plane', point: [0, -1, 0], normal: [0, 1, 0] },
+        { type: 'box', min: [0, 0, 0], max: [1, 1, 1] },
+      ],
+    }));
+    for (const o of json.objects) {
+      for (const c of COLUMNS[o.type]) {
+        const v = c.path.reduce((at, k) => at[k], o);
+        expect(v, `${o.type} ${c.label}`).toBeDefined();
+      }
+    }
+  });
+});
+
+describe('withValue', () => {
+  it('changes a copy, never the original', () => {
+    const json = sceneToJSON(classScene());
+    const changed = withValue(json, ['objects', 1, 'center', 0], 3);
+    expect(changed.objects[1].center).toEqual([3, 0, -20]);
+    expect(json.objects[1].center).toEqual([0, 0, -20]);
+  });
+});
+
+describe('the scene in a link', () => {
+  const camera = new Camera({ width: 32, height: 24 });
+
+  it('compact JSON drops defaults and reads back as the same scene, picture for picture', () => {
+    const json = sceneToJSON(classScene({ full: true }));
+    const compact = compactSceneJSON(json);
+    expect(JSON.stringify(compact).length).toBeLessThan(JSON.stringify(json).length);
+    expect(compact.objects[1].material).not.toHaveProperty('ior');
+    expect(sceneToJSON(sceneFromJSON(compact))).toEqual(json);
+    expect(render(sceneFromJSON(compact), camera)).toEqual(render(classScene({ full: true }), camera));
+  });
+
+  it('round-trips through URL-safe text', () => {
+    const json = sceneToJSON(classScene());
+    json.objects[2].name = 'ünïcode ☀';
+    const text = encodeScene(json);
+    expect(text).toMatch(/^[A-Za-z0-9_-]+$/);
+    expect(sceneToJSON(decodeScene(text))).toEqual(json);
+  });
+
+  it('also reads plain JSON text', () => {
+    const scene = decodeScene('{"objects":[{"type":"sphere","center":[0,0,-5],"radius":2}]}');
+    expect(scene.spheres[0].radius).toBe(2);
+  });
+
+  it('says what is wrong with a bad link', () => {
+    expect(() => decodeScene('')).toThrow(TypeError);
+    expect(() => decodeScene('not*base64!')).toThrow(/not base64url/);
+    expect(() => decodeScene('abc')).toThrow(TypeError); // not whole base64 / not JSON
+    expect(() => decodeScene(Buffer.from('[1,2]').toString('base64url'))).toThrow(/scene must be an object/);
+    const badRadius = Buffer.from(JSON.stringify({ objects: [{ type: 'sphere', center: [0, 0, 0], radius: -1 }] })).toString('base64url');
+    expect(() => decodeScene(badRadius)).toThrow(/objects\[0\]\.radius/);
+  });
+});
