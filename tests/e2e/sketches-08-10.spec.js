@@ -66,6 +66,7 @@ for (const hw of HOMEWORK) {
       await expect(results.locator('.hw-headline')).toHaveText(/^Passed!/);
       await expect(results.locator('[data-check-item="passed"]')).toHaveCount(hw.checks);
       await expect(results.locator('[data-check-item]:not([data-check-item="passed"])')).toHaveCount(0);
+      await expect(page.locator('[data-tracer]')).toHaveScreenshot(`${hw.page.replace('.html', '')}-solution.png`);
       expect(errors).toEqual([]);
     });
 
