@@ -49,13 +49,20 @@ test.describe('01 · rays through pixels', () => {
   const PAGE = '/sketches/01-rays-through-pixels.html';
   const camera = new Camera({ width: 32, height: 24, fov: 30 });
 
-  test('traces a 32×24 picture, scanline by scanline, with a pixel grid', async ({ page }) => {
+  test('traces a 32×24 picture with the pixel grid over it, no pixel selected yet', async ({ page }) => {
     await page.goto(PAGE);
     await waitForDone(page);
     const canvas = page.locator('[data-tracer]');
     await expect(canvas).toHaveAttribute('data-width', '32');
     await expect(canvas).toHaveAttribute('data-height', '24');
-    // no pixel selected yet: the answer line is empty until a click
+    // the grid lives on the overlay, never in the traced picture
+    const gridPixels = await page.locator('[data-overlay]').evaluate((o) => {
+      const data = o.getContext('2d').getImageData(0, 0, o.width, o.height).data;
+      let n = 0;
+      for (let i = 3; i < data.length; i += 4) if (data[i] > 0) n++;
+      return n;
+    });
+    expect(gridPixels).toBeGreaterThan(0);
     await expect(page.locator('[data-inspector] [data-answer]')).toHaveText('');
   });
 
