@@ -18,5 +18,5 @@ export { classScene } from './scenes.js';
 export * as vec3 from './vec3.js';
 export { ProgressiveRenderer } from './progressive.js';
 export { sceneToJSON, sceneFromJSON, cameraToJSON, cameraFromJSON, sceneToCode } from './serialize.js';
-export { MODES, modeShader, modeLegend } from './modes.js';
+export { MODES, modeShader, modeLegend, discriminantColor, angleColor } from './modes.js';
 export { ParallelRenderer } from './workers/parallel.js';

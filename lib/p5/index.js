@@ -6,4 +6,5 @@
 export { createTracerView, TracerView, pixelAt } from './tracer-view.js';
 export { createInspector, Inspector, answerLine, formatNumber, formatVector, formatAngle, pixelCSV, routesAgree } from './inspector.js';
 export { registerView, pageRenderState } from './page-state.js';
-// Diagrams (side/top view, geometric construction, parabola):
+// Diagrams (side/top view, geometric construction, parabola) and legends:
+export { drawSideView, drawTopView, drawGeometricConstruction, drawParabola, drawLegend, createLegendElement, focusTest } from './diagrams.js';
