@@ -17,6 +17,7 @@
  * pixel for every pixel of a 64×48 class scene, both ways (exit code 1 if not).
  */
 import { performance, PerformanceObserver } from 'node:perf_hooks';
+import { loadavg, availableParallelism } from 'node:os';
 import { Camera, classScene, render, inspectPixel } from '../lib/index.js';
 
 const FRAMES = 15;
@@ -31,16 +32,19 @@ function median(values) {
 
 /**
  * Times `frames` frames of each case, alternating between them so that both
- * see the same machine state; returns the milliseconds of every frame per case.
+ * see the same machine state; returns the milliseconds of every frame per case,
+ * by the wall clock and in CPU time (the steadier one on a busy machine).
  */
 function timeSideBySide(cases, frames) {
   for (const c of cases) for (let i = 0; i < WARMUP; i++) render(c.scene, c.camera, c.target);
-  const times = cases.map(() => []);
+  const times = cases.map(() => ({ wall: [], cpu: [] }));
   for (let i = 0; i < frames; i++) {
     cases.forEach((c, k) => {
-      const start = performance.now();
+      const cpu = process.cpuUsage(), start = performance.now();
       render(c.scene, c.camera, c.target);
-      times[k].push(performance.now() - start);
+      times[k].wall.push(performance.now() - start);
+      const used = process.cpuUsage(cpu);
+      times[k].cpu.push((used.user + used.system) / 1000);
     });
   }
   return times;
@@ -93,28 +97,37 @@ function row(cells, widths) {
   return cells.map((cell, i) => (i === 0 ? String(cell).padEnd(widths[i]) : String(cell).padStart(widths[i]))).join('  ');
 }
 
+const WIDTHS = [32, 11, 8, 10, 8, 9, 9];
+
+function header() {
+  console.log(row(['case', 'median ms', 'Mpx/s', 'CPU ms', 'Mpx/s', 'min ms', 'max ms'], WIDTHS));
+  console.log(row(['', '(wall)', '(wall)', '(median)', '(CPU)', '(wall)', '(wall)'], WIDTHS));
+  console.log('-'.repeat(WIDTHS.reduce((a, b) => a + b + 2, -2)));
+}
+
+/** Prints one line per case; returns the median wall-clock ms of each. */
 function report(cases, times) {
-  const widths = [34, 12, 10, 10, 10];
-  console.log(row(['case', 'median ms', 'Mpx/s', 'min ms', 'max ms'], widths));
-  console.log('-'.repeat(widths.reduce((a, b) => a + b + 2, -2)));
-  const medians = cases.map((c, k) => {
-    const ms = median(times[k]);
-    const mpx = (c.camera.width * c.camera.height) / (ms * 1000);
-    console.log(row([c.label, ms.toFixed(2), mpx.toFixed(2), Math.min(...times[k]).toFixed(2), Math.max(...times[k]).toFixed(2)], widths));
+  return cases.map((c, k) => {
+    const { wall, cpu } = times[k];
+    const ms = median(wall), cpuMs = median(cpu);
+    const pixels = c.camera.width * c.camera.height;
+    console.log(row([c.label, ms.toFixed(2), (pixels / (ms * 1000)).toFixed(2), cpuMs.toFixed(2),
+      (pixels / (cpuMs * 1000)).toFixed(2), Math.min(...wall).toFixed(2), Math.max(...wall).toFixed(2)], WIDTHS));
     return ms;
   });
-  return medians;
 }
 
 const mismatches = inspectorMatchesRender();
 console.log(`inspectPixel vs render, 64×48, both scenes: ${mismatches === 0 ? 'identical' : `${mismatches} pixels differ`}`);
 if (mismatches) process.exitCode = 1;
-console.log(`Node ${process.version}, one thread, ${FRAMES} frames per case after ${WARMUP} warm-up frames\n`);
+console.log(`Node ${process.version}, one thread, ${FRAMES} frames per case (${FRAMES * 4} at 160×120) after ${WARMUP} warm-up frames,` +
+  ` load average ${loadavg()[0].toFixed(1)} on ${availableParallelism()} cores\n`);
 
 const large = [makeCase('(a) Lambert + shadows, 640×480', false, 640, 480), makeCase('(b) full shading, 640×480', true, 640, 480)];
 const small = [makeCase('(a) Lambert + shadows, 160×120', false, 160, 120), makeCase('(b) full shading, 160×120', true, 160, 120)];
+header();
 const [a, b] = report(large, timeSideBySide(large, FRAMES));
-const [as, bs] = report(small, timeSideBySide(small, FRAMES * 4)).map((ms) => ms);
+const [as, bs] = report(small, timeSideBySide(small, FRAMES * 4));
 console.log(`\nratio (a)/(b) of median times: ${(a / b).toFixed(2)} at 640×480, ${(as / bs).toFixed(2)} at 160×120` +
   ` (full shading costs ${(b / a).toFixed(1)}× and ${(bs / as).toFixed(1)}×)`);
 
