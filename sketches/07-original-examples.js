@@ -42,25 +42,25 @@ new p5((p) => {
 
   p.setup = () => {
     p.noCanvas();
-    animation.done();
     const column = p.createDiv().addClass('column');
     ui = controls(column);
     view = createTracerView(p, { scene: classScene(), camera: stillCamera, parent: column });
+    animation.done(); // not playing yet
     ui.stats.parent(column);
     ui.note.parent(column);
     createInspector({ view, parent: p._userNode });
     window.sketch = { sceneAt, camera: movieCamera }; // try sketch.sceneAt(3) in the browser console
 
     const asked = new URLSearchParams(location.search).get('example') ?? 'still';
-    if (!EXAMPLES.includes(asked)) ui.error.html(`example must be ${EXAMPLES.join(', ')}; got "${asked}", so here is the still scene.`);
     choose(EXAMPLES.includes(asked) ? asked : 'still');
+    if (!EXAMPLES.includes(asked)) say(ui.error, `example must be ${EXAMPLES.join(', ')}; got "${asked}", so here is the still scene.`);
   };
 
   p.draw = () => {
     if (!playing) return;
     time += p.deltaTime / 1000;
     if (example === 'animated') {
-      showTraced(sceneAt(time));
+      showTraced(time);
       counted(time);
     } else if (!inFlight) renderOnWorkers(time);
   };
@@ -72,6 +72,7 @@ new p5((p) => {
     ui.row.style('display', name === 'still' ? 'none' : '');
     ui.workers.style('display', name === 'workers' ? '' : 'none');
     ui.stats.style('display', name === 'still' ? 'none' : '');
+    say(ui.error, '');
     frames = 0;
     stamps = [];
     workerFrame = null;
@@ -81,7 +82,7 @@ new p5((p) => {
       view.setCamera(stillCamera).setScene(classScene());
     } else {
       view.setCamera(movieCamera);
-      showTraced(sceneAt(time));
+      showTraced(time);
       play(true);
     }
     ui.note.html(notes[name]);
@@ -90,28 +91,32 @@ new p5((p) => {
   function play(on) {
     playing = on;
     ui.pause.html(on ? 'Pause' : 'Play');
-    if (on) animation.rendering();
-    else if (!inFlight) paused();
+    if (on) {
+      animation.rendering();
+      ui.note.html(notes[example]);
+    } else if (!inFlight) paused();
   }
 
   /** The frame on screen is final: let the inspector explain it, and the page say "done". */
   function paused() {
     if (example === 'workers' && workerFrame) {
-      showTraced(sceneAt(shown)); // the same frame on one thread, so the inspector knows its scene…
+      showTraced(shown); // the same frame on one thread, so the inspector knows its scene…
       const same = workerFrame.every((byte, i) => byte === view.renderer.buffer[i]);
       blit(workerFrame); // …but what stays on screen is the workers' picture
-      ui.note.html(`Paused. Traced again on one thread, this frame is ${same ? 'the same, byte for byte ✓' : 'DIFFERENT ✗'}.`);
+      ui.note.html(`Paused. Traced again on one thread, this frame is ${same ? 'the same, byte for byte ✓' : 'DIFFERENT ✗'}`);
+    } else if (example === 'animated') {
+      ui.note.html('Paused: click a pixel of this frame to see its story.');
     }
     showStats();
     animation.done();
   }
 
-  /** Traces a whole frame now, on this thread (the view's own renderer). */
-  function showTraced(scene) {
+  /** Traces the frame of time t whole, now, on this thread (the view's own renderer). */
+  function showTraced(t) {
     view.budgetMs = 60_000; // no slicing: the whole frame in one go
-    view.setScene(scene);
+    view.setScene(sceneAt(t));
     view.draw();
-    shown = time;
+    shown = t;
   }
 
   async function renderOnWorkers(t) {
@@ -128,7 +133,7 @@ new p5((p) => {
         counted(t);
       }
     } catch (error) {
-      ui.error.html(String(error.message ?? error));
+      say(ui.error, String(error.message ?? error));
       play(false);
     } finally {
       inFlight = false;
@@ -163,6 +168,11 @@ new p5((p) => {
     workers: 'The rows of each frame are dealt out to the workers; the page only copies them onto the screen. Pause to click a pixel.',
   };
 
+  /** Writes a message as plain text (it may quote what someone typed). */
+  function say(element, text) {
+    element.elt.textContent = text;
+  }
+
   /** Buttons for the three examples, Pause, the worker-count box and the lines under the picture. */
   function controls(column) {
     const tabs = {};
@@ -176,16 +186,17 @@ new p5((p) => {
     pause.mouseClicked(() => play(!playing));
     const workers = p.createElement('label', 'workers (1–8) ').parent(row);
     const countBox = p.createInput(String(WORKERS), 'number').attribute('min', '1').attribute('max', '8').parent(workers);
-    const error = p.createSpan('').addClass('error').attribute('role', 'alert').parent(row);
+    const countError = p.createSpan('').addClass('error').attribute('role', 'alert').attribute('data-error', 'workers').parent(row);
     countBox.changed(() => {
-      const n = Number(countBox.value());
-      if (countBox.value().trim() === '' || !Number.isInteger(n) || n < 1 || n > 8) {
-        error.html(`workers must be a whole number from 1 to 8, got "${countBox.value()}"; still using ${workerCount}.`);
+      const text = countBox.value().trim(), n = Number(text);
+      if (text === '' || !Number.isInteger(n) || n < 1 || n > 8) {
+        say(countError, `workers must be a whole number from 1 to 8, got ${text ? `"${text}"` : 'nothing'}; still using ${workerCount}.`);
       } else {
-        error.html('');
+        say(countError, '');
         workerCount = n;
       }
     });
+    const error = p.createP('').addClass('error').attribute('role', 'alert').attribute('data-error', 'example').parent(column);
     const stats = p.createP('').addClass('stats').attribute('data-stats', '');
     const note = p.createP('').addClass('about');
     return { tabs, row, pause, workers, stats, note, error };
