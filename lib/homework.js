@@ -30,6 +30,16 @@ const HUGE = 50;
 
 const SIGNAL = ['red', 'yellow', 'green']; // top to bottom
 
+/** The labels of Task 1's checks, in order. */
+export const SIGNAL_CHECKS = {
+  three: 'Three lights',
+  colours: 'One red, one yellow, one green',
+  column: 'Stacked in one column (same x and z)',
+  order: 'Red on top, yellow in the middle, green at the bottom',
+  seen: 'The camera sees all three',
+  picture: 'In the picture: red, yellow, green from top to bottom',
+};
+
 /**
  * Task 1: three lights (emissive spheres) stacked vertically, red over
  * yellow over green, at about the same x and z, all in the camera's view.
@@ -42,34 +52,34 @@ export function checkTrafficSignal(scene, camera) {
 
   const three = add(threeLights(lights, scene));
   const byColour = three ? oneOfEach(lights, SIGNAL) : null;
-  const colours = add(three ? coloursCheck(lights, byColour) : waiting('One red, one yellow, one green', 'three lights'));
+  const colours = add(three ? coloursCheck(lights, byColour) : waiting(SIGNAL_CHECKS.colours, 'three lights'));
   const stack = colours ? SIGNAL.map((name) => byColour[name]) : null;
-  add(colours ? sameColumn(stack) : waiting('Stacked in one column (same x and z)', 'the three colours'));
-  add(colours ? topToBottom(stack) : waiting('Red on top, yellow in the middle, green at the bottom', 'the three colours'));
+  add(colours ? sameColumn(stack) : waiting(SIGNAL_CHECKS.column, 'the three colours'));
+  const ordered = add(colours ? topToBottom(stack) : waiting(SIGNAL_CHECKS.order, 'the three colours'));
   const seen = colours ? lookAt(scene, camera, stack) : null;
-  const visible = add(colours ? allVisible(seen, camera) : waiting('The camera sees all three', 'the three colours'));
-  add(visible ? pictureOrder(seen) : waiting('In the picture: red, yellow, green from top to bottom', 'all three in view'));
+  const visible = add(colours ? allVisible(seen, camera) : waiting(SIGNAL_CHECKS.seen, 'the three colours'));
+  add(visible ? pictureOrder(seen, ordered) : waiting(SIGNAL_CHECKS.picture, 'all three in view'));
   return result(checks);
 }
 
 function threeLights(lights, scene) {
-  const label = 'Three lights';
+  const label = SIGNAL_CHECKS.three;
   if (lights.length === 3) return pass(label, `Three lights: ${listNames(lights)}.`);
   if (lights.length === 0) return fail(label, `No lights yet. ${HOW_TO_LIGHT}${pointLightHint(scene)}`);
   return fail(label, `Found ${count(lights.length, 'light')} (${listNames(lights)}); a traffic signal has 3: red, yellow and green.`);
 }
 
 function coloursCheck(lights, byColour) {
-  const label = 'One red, one yellow, one green';
+  const label = SIGNAL_CHECKS.colours;
   if (byColour) return pass(label, 'Red, yellow and green: the three colours of a traffic signal.');
   const missing = SIGNAL.filter((name) => !lights.some((l) => l.colour === name));
-  return fail(label, `Your lights are ${listNames(lights)}: ${missing.join(' and ')} ${missing.length > 1 ? 'are' : 'is'} missing. ` +
+  return fail(label, `Your lights are ${listNames(lights)}: ${andList(missing)} ${missing.length > 1 ? 'are' : 'is'} missing. ` +
     'The colour of a light is its emission, e.g. emission: [1, 0.8, 0] for yellow.');
 }
 
 /** Roughly the same x and z: no further apart than the smallest light's radius. */
 function sameColumn(stack) {
-  const label = 'Stacked in one column (same x and z)';
+  const label = SIGNAL_CHECKS.column;
   const tolerance = Math.min(...stack.map((l) => l.radius));
   const [top] = stack;
   for (const light of stack.slice(1)) {
@@ -88,7 +98,7 @@ function sameColumn(stack) {
 
 /** Red highest, then yellow, then green; no two overlapping. */
 function topToBottom(stack) {
-  const label = 'Red on top, yellow in the middle, green at the bottom';
+  const label = SIGNAL_CHECKS.order;
   const heights = stack.map((l) => `${l.colour} y = ${fmt(l.center.y)}`).join(', ');
   const order = [...stack].sort((a, b) => b.center.y - a.center.y).map((l) => l.colour);
   if (order.join() !== SIGNAL.join()) {
@@ -104,12 +114,13 @@ function topToBottom(stack) {
   return pass(label, `Top to bottom: ${heights}.`);
 }
 
-/** Where each light shows in the picture, in screen order. */
-function pictureOrder(seen) {
-  const label = 'In the picture: red, yellow, green from top to bottom';
+/** Where each light shows in the picture, in screen order (`ordered`: is the scene's order right?). */
+function pictureOrder(seen, ordered) {
+  const label = SIGNAL_CHECKS.picture;
   const order = [...seen].sort((a, b) => a.row - b.row).map((s) => s.light.colour);
   if (order.join() !== SIGNAL.join()) {
-    return fail(label, `In the picture, from the top: ${order.join(', ')}. Is the camera upside down or looking from an odd angle?`);
+    const why = ordered ? 'Is the camera looking straight up or down at them?' : 'Fix the order of the lights (above) and this follows.';
+    return fail(label, `In the picture, from the top: ${order.join(', ')}. ${why}`);
   }
   const off = seen.find((s) => s.seenAs !== s.light.colour);
   if (off) return fail(label, `The ${off.light.colour} light looks ${off.seenAs} in the picture: is another light or a reflection changing its colour?`);
@@ -117,6 +128,15 @@ function pictureOrder(seen) {
 }
 
 /* ======================= Task 2: a car's rear lights ====================== */
+
+/** The labels of Task 2's checks, in order. */
+export const CAR_CHECKS = {
+  two: 'Two red lights',
+  height: 'At the same height (same y)',
+  side: 'Side by side (apart in x, same z)',
+  seen: 'The camera sees both, red',
+  bonus: 'Bonus: symmetric about the middle of the car',
+};
 
 /**
  * Task 2: two red lights side by side at the same height (same y, apart in
@@ -133,15 +153,15 @@ export function checkRearLights(scene, camera) {
 
   const two = add(twoRedLights(lights, red, scene));
   const pair = two ? [...red].sort((a, b) => a.center.x - b.center.x).map((l, i) => ({ ...l, role: i ? 'right' : 'left' })) : null;
-  add(two ? sameHeight(pair) : waiting('At the same height (same y)', 'two red lights'));
-  add(two ? sideBySide(pair) : waiting('Side by side (apart in x, same z)', 'two red lights'));
-  add(two ? bothVisible(lookAt(scene, camera, pair), camera) : waiting('The camera sees both, red', 'two red lights'));
-  checks.push(two ? symmetric(pair, carBody(scene)) : { ...waiting('Bonus: symmetric about the middle of the car', 'two red lights'), bonus: true });
+  add(two ? sameHeight(pair) : waiting(CAR_CHECKS.height, 'two red lights'));
+  add(two ? sideBySide(pair) : waiting(CAR_CHECKS.side, 'two red lights'));
+  add(two ? bothVisible(lookAt(scene, camera, pair), camera) : waiting(CAR_CHECKS.seen, 'two red lights'));
+  checks.push(two ? symmetric(pair, carBody(scene)) : { ...waiting(CAR_CHECKS.bonus, 'two red lights'), bonus: true });
   return result(checks);
 }
 
 function twoRedLights(lights, red, scene) {
-  const label = 'Two red lights';
+  const label = CAR_CHECKS.two;
   if (red.length === 2) return pass(label, lights.length > 2 ? `Two red lights (and ${listNames(lights.filter((l) => l.colour !== 'red'))}).` : 'Two red lights.');
   if (lights.length === 0) return fail(label, `No lights yet. ${HOW_TO_LIGHT}${pointLightHint(scene)}`);
   if (red.length === 0) return fail(label, `Your ${count(lights.length, 'light')} ${lights.length > 1 ? 'are' : 'is'} ${listNames(lights)}: rear lights are red, e.g. emission: [1, 0, 0].`);
@@ -150,7 +170,7 @@ function twoRedLights(lights, red, scene) {
 
 /** Same y within a quarter of the smaller radius. */
 function sameHeight([left, right]) {
-  const label = 'At the same height (same y)';
+  const label = CAR_CHECKS.height;
   const dy = right.center.y - left.center.y;
   const tolerance = Math.min(left.radius, right.radius) / 4;
   if (Math.abs(dy) > tolerance) {
@@ -163,7 +183,7 @@ function sameHeight([left, right]) {
 
 /** Apart in x (not overlapping) and at about the same z. */
 function sideBySide([left, right]) {
-  const label = 'Side by side (apart in x, same z)';
+  const label = CAR_CHECKS.side;
   const gap = right.center.x - left.center.x, dz = right.center.z - left.center.z;
   if (gap < left.radius + right.radius) {
     return fail(label, `The two lights are only ${fmt(gap)} apart in x (x = ${fmt(left.center.x)} and ${fmt(right.center.x)}): ` +
@@ -177,12 +197,12 @@ function sideBySide([left, right]) {
 
 function bothVisible(seen, camera) {
   const check = allVisible(seen, camera);
-  return { ...check, label: 'The camera sees both, red' };
+  return { ...check, label: CAR_CHECKS.seen };
 }
 
 /** Bonus: the lights' midpoint is the car body's middle (in x). */
 function symmetric([left, right], body) {
-  const label = 'Bonus: symmetric about the middle of the car';
+  const label = CAR_CHECKS.bonus;
   if (!body) return { ...fail(label, 'No car body found (boxes or spheres that are not lights).'), bonus: true };
   const middle = (left.center.x + right.center.x) / 2;
   const off = middle - body.middle;
@@ -214,7 +234,7 @@ const HOW_TO_LIGHT = 'A light is a sphere that gives off light, e.g. new Sphere(
 
 /** Every light must show up in the picture, in its own colour. */
 function allVisible(seen, camera) {
-  const label = 'The camera sees all three';
+  const label = SIGNAL_CHECKS.seen;
   const role = (s) => s.light.role ?? s.light.colour; // 'red' … or 'left', 'right'
   for (const s of seen) {
     const name = `The ${role(s)} light`;
@@ -342,6 +362,7 @@ const pass = (label, detail) => ({ label, passed: true, detail });
 const fail = (label, detail) => ({ label, passed: false, detail });
 const waiting = (label, what) => ({ label, passed: false, skipped: true, detail: `Checked once you have ${what}.` });
 const listNames = (lights) => lights.map((l) => l.colour).join(', ');
+const andList = (words) => words.length > 1 ? `${words.slice(0, -1).join(', ')} and ${words.at(-1)}` : words[0];
 const count = (n, word) => `${n} ${word}${n === 1 ? '' : 's'}`;
 const fmt = (n) => String(Math.round(n * 100) / 100);
 

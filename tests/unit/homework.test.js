@@ -60,7 +60,7 @@ describe('checkTrafficSignal', () => {
       'In the picture: red, yellow, green from top to bottom',
     ]);
     expect(check(result, 'Red on top').detail).toMatch(/^From top to bottom your lights are green, yellow, red \(red y = 4\.2, yellow y = 5\.4, green y = 6\.6\)/);
-    expect(check(result, 'In the picture').detail).toMatch(/^In the picture, from the top: green, yellow, red\./);
+    expect(check(result, 'In the picture').detail).toBe('In the picture, from the top: green, yellow, red. Fix the order of the lights (above) and this follows.');
     expect(check(result, 'Stacked in one column').passed).toBe(true);
   });
 
@@ -68,6 +68,13 @@ describe('checkTrafficSignal', () => {
     const result = checkTrafficSignal(signalWith([[0, 6.6, -16], RED], [[0, 5.4, -16], RED], [[0, 4.2, -16], GREEN]), signal.makeCamera());
     expect(failedLabels(result)).toEqual(['One red, one yellow, one green']);
     expect(check(result, 'One red').detail).toMatch(/^Your lights are red, red, green: yellow is missing\./);
+  });
+
+  test('white lights: every colour is missing, and the check says how to colour a light', () => {
+    const white = [1, 1, 1];
+    const result = checkTrafficSignal(signalWith([[0, 6.6, -16], white], [[0, 5.4, -16], white], [[0, 4.2, -16], white]), signal.makeCamera());
+    expect(check(result, 'One red').detail).toBe('Your lights are white, white, white: red, yellow and green are missing. ' +
+      'The colour of a light is its emission, e.g. emission: [1, 0.8, 0] for yellow.');
   });
 
   test('a light out of the column fails on "Stacked", saying which way it is off', () => {
