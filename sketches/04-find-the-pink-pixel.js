@@ -19,7 +19,6 @@ import { element } from '../lib/p5/dom.js';
 const WIDTH = 32;
 const HEIGHT = 24;
 const FOV = 30; // vertical field of view, degrees
-const SCALE = 16; // screen pixels per traced pixel
 const START = { x: 10, y: 12, h: 0, v: 0 };
 
 const cameraFor = (h, v) => new Camera({ width: WIDTH, height: HEIGHT, fov: FOV, yaw: h, pitch: v });
@@ -28,9 +27,9 @@ new p5((p) => {
   let view, boxes, result, answer, showPink, pinkCount, pink = null;
 
   p.setup = () => {
-    view = createTracerView(p, { scene: classScene(), camera: cameraFor(START.h, START.v), parent: 'picture', scale: SCALE, grid: true, label: `The class scene: ${WIDTH} × ${HEIGHT} pixels` });
+    view = createTracerView(p, { scene: classScene(), camera: cameraFor(START.h, START.v), parent: 'picture', grid: true, label: `The class scene: ${WIDTH} × ${HEIGHT} pixels` });
     // This sketch's canvas lies over the picture and marks the pink pixels; the traced canvas stays as traced.
-    p.createCanvas(WIDTH * SCALE, HEIGHT * SCALE).parent(view.canvas.parentElement).class('pink-marks').attribute('data-pink-marks', '').attribute('data-overlay', '');
+    p.createCanvas(WIDTH, HEIGHT).parent(view.canvas.parentElement).class('pink-marks').attribute('data-pink-marks', '').attribute('data-overlay', '');
     p.pixelDensity(1);
 
     boxes = {
@@ -115,6 +114,8 @@ new p5((p) => {
   }
 
   p.draw = () => {
+    const k = view.scale; // screen pixels per traced pixel: the marks canvas covers the picture exactly
+    if (p.width !== WIDTH * k || p.height !== HEIGHT * k) p.resizeCanvas(WIDTH * k, HEIGHT * k);
     p.clear();
     if (!showPink.checked) { pink = null; pinkCount.textContent = ''; return; }
     if (!view.done) return;
@@ -122,6 +123,6 @@ new p5((p) => {
     p.stroke(0);
     p.strokeWeight(2);
     p.fill(255);
-    for (const { x, y } of pink) p.circle((x + 0.5) * SCALE, (y + 0.5) * SCALE, SCALE * 0.4);
+    for (const { x, y } of pink) p.circle((x + 0.5) * k, (y + 0.5) * k, k * 0.4);
   };
 }, document.getElementById('sketch'));

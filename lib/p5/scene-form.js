@@ -380,7 +380,7 @@ export class SceneForm {
 
   /** A colour picker and a text box for the same colour (the text box also takes lights' values above 1). */
   #colorBox(text, id, label, commit, picker = true) {
-    const box = valueBox({ label, value: text, parse: readColor, name: id, size: '7' });
+    const box = valueBox({ label, value: text, parse: readColor, name: id, size: picker ? '7' : '5' });
     box.element.querySelector('.sf-label').classList.add(label === 'background colour' ? 'sf-label' : 'sf-hidden-label');
     box.input.removeAttribute('inputmode');
     if (!picker) {
