@@ -96,17 +96,18 @@ function directionTo(out, from, to) {
 /**
  * Shadow ray: how much light gets from the point to the light (1 none in the
  * way, 0 blocked; glass lets its `transparency` through). The ray stops at
- * the light: whatever lies beyond it casts no shadow.
+ * the light: whatever lies beyond it, or around it, casts no shadow.
  */
 function shadowRay(scene, f, distance, lightObject) {
   const shadow = f.shadowRay, objects = scene.objects;
   scaleAndAdd(shadow.origin, f.point, f.normal, scene.bias); // step off the surface: no acne
   copy(shadow.direction, f.toLight);
+  const reach = distance - scene.bias; // stop short of the light: a light on a face is not behind it
   let transmission = 1;
   for (let i = 0; i < objects.length && transmission > 0; i++) {
     const o = objects[i];
     if (o === lightObject) continue;
-    if (o.hit(shadow) < distance) transmission *= o.material.transparency;
+    if (o.hit(shadow) < reach) transmission *= o.material.transparency;
   }
   return transmission;
 }
@@ -114,7 +115,7 @@ function shadowRay(scene, f, distance, lightObject) {
 /** Phong highlight: (R·V)^shininess, R the light mirrored about the normal. */
 function specular(m, f, ray) {
   reflect(f.mirror, f.toLight, f.normal);
-  const rv = -dot(f.mirror, ray.direction) ;
+  const rv = -dot(f.mirror, ray.direction);
   return rv > 0 ? m.specular * Math.pow(rv, m.shininess) : 0;
 }
 

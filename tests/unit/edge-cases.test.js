@@ -1,6 +1,6 @@
 // Numerical edge cases handled on purpose: directions with huge or tiny components.
 import { describe, it, expect } from 'vitest';
-import { Ray, Plane, Scene } from '../../lib/index.js';
+import { Ray, Plane, Scene, Sphere, Box, PointLight, trace } from '../../lib/index.js';
 
 describe('numerical edge cases', () => {
   it('a direction with huge components is normalised, not zeroed', () => {
@@ -24,5 +24,25 @@ describe('numerical edge cases', () => {
   it('the mirror depth is a whole number of bounces', () => {
     expect(() => new Scene({ maxDepth: 2.5 })).toThrow(/maxDepth must be a whole number/);
     expect(new Scene({ maxDepth: 3 }).maxDepth).toBe(3);
+  });
+});
+
+describe('a light lying on a surface', () => {
+  // A point light exactly on the top face of a box lights a sphere above it:
+  // the shadow ray reaches the face at the light's own distance, a tie that
+  // must not count as a blocker (else the lit side gets speckled).
+  it('is not shadowed by the surface it lies on', () => {
+    
+    const scene = new Scene()
+      .add(new Box([-1, -1, -6], [1, 1, -4], { color: [0.5, 0.5, 0.5] }))
+      .add(new Sphere([0, 3, -5], 0.5, { color: [1, 1, 1] }))
+      .add(new PointLight([0, 1, -5], [1, 1, 1]));
+    // From beside the box, up at the sphere's underside, which faces the light.
+    const steps = {};
+    trace(scene, new Ray([1.5, 1.2, -5], [-1.5, 1.3, 0]), [0, 0, 0], steps);
+    expect(steps.hit.object).toBeInstanceOf(Sphere);
+    const [light] = steps.hit.lights;
+    expect(light.facing).toBe(true);
+    expect(light.inShadow).toBe(false);
   });
 });
