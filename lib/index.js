@@ -20,3 +20,4 @@ export { ProgressiveRenderer } from './progressive.js';
 export { sceneToJSON, sceneFromJSON, cameraToJSON, cameraFromJSON, sceneToCode } from './serialize.js';
 export { MODES, modeShader, modeLegend, discriminantColor, angleColor } from './modes.js';
 export { ParallelRenderer } from './workers/parallel.js';
+export { checkTrafficSignal, checkRearLights } from './homework.js';
