@@ -41,7 +41,7 @@ new p5((p) => {
 
     const panel = p.createElement('fieldset').addClass('switches').parent(column);
     panel.child(p.createElement('legend', 'One switch per idea'));
-    const shadows = toggle(panel, 'shadows', 'a shadow ray from each hit point to each light: blocked means dark.');
+    const shadows = toggle(panel, 'shadows', 'a shadow ray from each hit point to each light: blocked means dark (scene.shadows).');
     const offset = p.createSelect();
     offset.option(`${SMALL_OFFSET} (a small ε)`, String(SMALL_OFFSET));
     offset.option('0 (none)', '0');
@@ -51,13 +51,13 @@ new p5((p) => {
     control(panel, offsetLabel, 'a shadow or mirror ray starts this far off the surface, so that rounding ' +
       'cannot make it hit the very surface it starts on (dark speckles, "shadow acne"). At 0 you will find ' +
       'hardly any here: the library already ignores hits closer than 0.000001. Too big, and shadows come ' +
-      'loose from what casts them.');
+      'loose from what casts them (scene.bias).');
     const bounces = p.createSlider(0, MAX_BOUNCES, MAX_BOUNCES, 1);
     const bouncesLabel = p.createElement('label', `mirror bounces: ${MAX_BOUNCES} `);
     bouncesLabel.child(bounces);
-    control(panel, bouncesLabel, '0: mirrors and glass look like plain paint; each bounce lets the ray go on once more.');
-    const specular = toggle(panel, 'highlights', 'the shiny spot where a light is mirrored toward the eye (specular).');
-    const seeThrough = toggle(panel, 'glass', `the right ball lets ${GLASS * 100}% of the light through, bent (transparency).`);
+    control(panel, bouncesLabel, '0: mirrors and glass look like plain paint; each bounce lets the ray go on once more (scene.maxDepth).');
+    const specular = toggle(panel, 'highlights', 'the shiny spot where a light is mirrored toward the eye (scene.specular).');
+    const seeThrough = toggle(panel, 'glass', `the right ball lets ${GLASS * 100}% of the light through, bent (its material.transparency).`);
 
     /** Reads every switch into the scene and traces it again. */
     const retrace = () => {
