@@ -9,7 +9,11 @@ import { Material } from '../material.js';
 /** Hits closer than this are the surface the ray starts on, not a new hit. */
 export const EPSILON = 1e-6;
 
-/** r² − d² (or discriminant / 4A) this small, relative to r², counts as tangent. */
+/**
+ * r² − d² (or discriminant / 4A) this small counts as tangent, relative to
+ * r² + L·L: the size of the terms whose difference it is, so rounding never
+ * makes the two routes disagree, for a tiny far sphere as for a huge one.
+ */
 const TANGENT = 1e-12;
 
 export class Sphere {
@@ -36,10 +40,11 @@ export class Sphere {
     const o = ray.origin, d = ray.direction, c = this.center, r2 = this.radius * this.radius;
     const Lx = c.x - o.x, Ly = c.y - o.y, Lz = c.z - o.z;
     const tca = Lx * d.x + Ly * d.y + Lz * d.z;
-    const d2 = Lx * Lx + Ly * Ly + Lz * Lz - tca * tca;
-    const gap = r2 - d2;
-    if (gap < -TANGENT * r2) return Infinity; // d > r: a miss
-    const thc = gap <= TANGENT * r2 ? 0 : Math.sqrt(gap);
+    const LL = Lx * Lx + Ly * Ly + Lz * Lz;
+    const gap = r2 - (LL - tca * tca); // r² − d²
+    const band = TANGENT * (r2 + LL);
+    if (gap < -band) return Infinity; // d > r: a miss
+    const thc = gap <= band ? 0 : Math.sqrt(gap);
     if (tca - thc > EPSILON) return tca - thc;
     return tca + thc > EPSILON ? tca + thc : Infinity;
   }
@@ -62,7 +67,7 @@ export function intersectQuadratic(ray, sphere, target = {}) {
   const C = ox * ox + oy * oy + oz * oz - r * r;
   const discriminant = B * B - 4 * A * C;
   target.A = A; target.B = B; target.C = C; target.discriminant = discriminant;
-  if (Math.abs(discriminant) <= TANGENT * 4 * A * r * r) {
+  if (Math.abs(discriminant) <= TANGENT * 4 * A * (C + 2 * r * r)) { // C + 2r² = L·L + r²
     target.roots = 1; // tangent: the ray grazes the sphere
     target.t0 = target.t1 = -B / (2 * A);
   } else if (discriminant < 0) {
@@ -92,10 +97,11 @@ export function intersectGeometric(ray, sphere, target = {}) {
   const L = target.L ?? (target.L = vec3());
   L.x = c.x - o.x; L.y = c.y - o.y; L.z = c.z - o.z;
   const tca = L.x * d.x + L.y * d.y + L.z * d.z;
-  const d2 = L.x * L.x + L.y * L.y + L.z * L.z - tca * tca;
+  const LL = L.x * L.x + L.y * L.y + L.z * L.z;
+  const d2 = LL - tca * tca;
   const r2 = r * r;
   target.tca = tca; target.d2 = d2;
-  if (Math.abs(r2 - d2) <= TANGENT * r2) {
+  if (Math.abs(r2 - d2) <= TANGENT * (r2 + LL)) {
     target.roots = 1; // d = r: tangent
     target.thc = 0;
     target.t0 = target.t1 = tca;

@@ -1,6 +1,6 @@
 // Numerical edge cases handled on purpose: directions with huge or tiny components.
 import { describe, it, expect } from 'vitest';
-import { Ray, Plane, Scene, Sphere, Box, PointLight, trace } from '../../lib/index.js';
+import { Ray, Plane, Scene, Sphere, Box, PointLight, trace, intersectQuadratic, intersectGeometric } from '../../lib/index.js';
 
 describe('numerical edge cases', () => {
   it('a direction with huge components is normalised, not zeroed', () => {
@@ -44,5 +44,22 @@ describe('a light lying on a surface', () => {
     const [light] = steps.hit.lights;
     expect(light.facing).toBe(true);
     expect(light.inShadow).toBe(false);
+  });
+});
+
+describe('a tangent ray to a tiny, far sphere', () => {
+  // Rounding in L·L − tca² grows with |L|², not r²: the tangent band must too.
+  it('is one root on both routes, and hit() agrees', () => {
+    for (const [r, dist] of [[1e-3, 20], [1e-2, 300], [0.05, 1000]]) {
+      const sphere = new Sphere([0, 0, -dist], r);
+      for (const ray of [new Ray([r, 0, 0], [0, 0, -1]), new Ray([0, -r, 0], [0, 0, -1]), new Ray([-r, 0, 0], [0, 0, -1])]) {
+        const q = intersectQuadratic(ray, sphere), g = intersectGeometric(ray, sphere);
+        expect(q.roots, `quadratic r=${r}`).toBe(1);
+        expect(g.roots, `geometric r=${r}`).toBe(1);
+        expect(q.t).toBeCloseTo(dist, 6);
+        expect(g.t).toBeCloseTo(dist, 6);
+        expect(sphere.hit(ray)).toBeCloseTo(dist, 6);
+      }
+    }
   });
 });
