@@ -309,6 +309,7 @@ export class SceneForm {
   build() {
     const background = this.#colorBox(colorText(this.json.background), 'background', 'background colour',
       (value) => this.#try(withValue(this.json, ['background'], value), ''));
+    background.element.querySelector('.sf-label').classList.remove('sf-hidden-label'); // no column head above this one
     const top = element('div', { class: 'sf-top' }, background.element, ...this.#addButtons());
     const tables = TABLES.map((t) => this.#table(t)).filter(Boolean);
     this.element.replaceChildren(top, ...tables);
@@ -370,7 +371,7 @@ export class SceneForm {
 
   #numberBox(text, id, label, rule, commit) {
     const box = valueBox({ label, value: text, rule, name: id, size: '5' });
-    box.element.querySelector('.sf-label').classList.add('sf-hidden-label');
+    box.element.querySelector('.sf-label').classList.add('sf-hidden-label'); // the column head says it; messages and screen readers use it
     box.input.addEventListener('change', () => {
       const v = box.read();
       if (v !== undefined) this.#report(box, commit(v));
@@ -381,7 +382,7 @@ export class SceneForm {
   /** A colour picker and a text box for the same colour (the text box also takes lights' values above 1). */
   #colorBox(text, id, label, commit, picker = true) {
     const box = valueBox({ label, value: text, parse: readColor, name: id, size: picker ? '7' : '5' });
-    box.element.querySelector('.sf-label').classList.add(label === 'background colour' ? 'sf-label' : 'sf-hidden-label');
+    box.element.querySelector('.sf-label').classList.add('sf-hidden-label'); // the column head says it; messages and screen readers use it
     box.input.removeAttribute('inputmode');
     if (!picker) {
       box.input.addEventListener('change', () => {
