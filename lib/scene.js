@@ -4,7 +4,7 @@
  */
 import { toColor } from './color.js';
 import { numberInRange, bool, show } from './check.js';
-import { Sphere } from './shapes/sphere.js';
+import { Sphere, EPSILON } from './shapes/sphere.js';
 import { Plane } from './shapes/plane.js';
 import { Box } from './shapes/box.js';
 import { PointLight, lightSource } from './lights.js';
@@ -15,16 +15,19 @@ export class Scene {
    * @param {number[]|string} [options.background=[0,0,0]] colour of a ray that hits nothing
    * @param {number} [options.ambient=0] light that reaches everything, 0–1
    * @param {boolean} [options.shadows=true] cast shadow rays toward each light
-   * @param {number} [options.bias=1e-4] how far a shadow or mirror ray starts off the surface (0 shows "shadow acne")
+   * @param {number} [options.bias=1e-4] how far a shadow or mirror ray starts off the surface
+   * @param {number} [options.epsilon=1e-6] the smallest t that counts as a hit; with bias 0 and epsilon 0 a
+   *   surface shadows itself at random ("shadow acne"), which is what the two guard against
    * @param {number} [options.maxDepth=5] how many mirror/glass bounces a ray may take, 0–16
    * @param {boolean} [options.specular=true] draw highlights of materials with `specular` > 0
    */
   constructor(options = {}) {
-    const { background = [0, 0, 0], ambient = 0, shadows = true, bias = 1e-4, maxDepth = 5, specular = true } = options;
+    const { background = [0, 0, 0], ambient = 0, shadows = true, bias = 1e-4, epsilon = EPSILON, maxDepth = 5, specular = true } = options;
     this.background = toColor(background, 'background');
     this.ambient = numberInRange(ambient, 'ambient', 0, 1);
     this.shadows = bool(shadows, 'shadows');
     this.bias = numberInRange(bias, 'bias', 0, 1);
+    this.epsilon = numberInRange(epsilon, 'epsilon', 0, 1);
     this.maxDepth = numberInRange(maxDepth, 'maxDepth', 0, 16);
     if (!Number.isInteger(maxDepth)) throw new RangeError(`maxDepth must be a whole number, got ${maxDepth}`);
     this.specular = bool(specular, 'specular');

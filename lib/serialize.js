@@ -3,7 +3,7 @@
  * can travel to a Web Worker, sit in a page's URL, or be pasted by a student;
  * and a scene as readable code that rebuilds it with the public API.
  *
- * Scene JSON: `{ background, ambient, shadows, bias, maxDepth, specular, objects }`,
+ * Scene JSON: `{ background, ambient, shadows, bias, epsilon, maxDepth, specular, objects }`,
  * `objects` in the order they were added, each one of
  *   `{ type: 'sphere', name, center, radius, material }`
  *   `{ type: 'plane', name, point, normal, material }`
@@ -20,7 +20,7 @@ import { Plane } from './shapes/plane.js';
 import { Box } from './shapes/box.js';
 import { show } from './check.js';
 
-const SCENE_FIELDS = ['background', 'ambient', 'shadows', 'bias', 'maxDepth', 'specular', 'objects'];
+const SCENE_FIELDS = ['background', 'ambient', 'shadows', 'bias', 'epsilon', 'maxDepth', 'specular', 'objects'];
 const MATERIAL_FIELDS = ['color', 'emission', 'reflection', 'transparency', 'ior', 'specular', 'shininess'];
 const CAMERA_FIELDS = ['width', 'height', 'fov', 'position', 'yaw', 'pitch'];
 
@@ -40,6 +40,7 @@ export function sceneToJSON(scene) {
     ambient: scene.ambient,
     shadows: scene.shadows,
     bias: scene.bias,
+    epsilon: scene.epsilon,
     maxDepth: scene.maxDepth,
     specular: scene.specular,
     objects: addOrder(scene).map(objectToJSON),
@@ -214,7 +215,7 @@ function named(make, prefix) {
 
 /* ---- to code ---- */
 
-const SCENE_DEFAULTS = { background: [0, 0, 0], ambient: 0, shadows: true, bias: 1e-4, maxDepth: 5, specular: true };
+const SCENE_DEFAULTS = { background: [0, 0, 0], ambient: 0, shadows: true, bias: 1e-4, epsilon: 1e-6, maxDepth: 5, specular: true };
 const MATERIAL_DEFAULTS = { color: [1, 1, 1], emission: [0, 0, 0], reflection: 0, transparency: 0, ior: 1.1, specular: 0, shininess: 50 };
 
 function sceneOptions(data) {

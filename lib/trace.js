@@ -10,6 +10,7 @@
  */
 import { vec3, dot, copy, scaleAndAdd, sub, length, reflect, scale } from './vec3.js';
 import { Ray } from './ray.js';
+import { EPSILON } from './shapes/sphere.js';
 
 const DEG = 180 / Math.PI;
 
@@ -23,7 +24,7 @@ const DEG = 180 / Math.PI;
  */
 export function trace(scene, ray, out, steps, depth = 0) {
   const f = frames[depth] ?? newFrame(depth);
-  if (!nearestHit(scene.objects, ray, f.hit)) {
+  if (!nearestHit(scene.objects, ray, f.hit, scene.epsilon)) {
     if (steps) steps.hit = null;
     return copyColor(out, scene.background);
   }
@@ -38,11 +39,14 @@ export function trace(scene, ray, out, steps, depth = 0) {
   return out;
 }
 
-/** Nearest object along the ray: writes `{ object, t }` into `hit`; false when none. */
-export function nearestHit(objects, ray, hit) {
+/**
+ * Nearest object along the ray (t > tMin): writes `{ object, t }` into `hit`;
+ * false when none.
+ */
+export function nearestHit(objects, ray, hit, tMin = EPSILON) {
   let nearest = Infinity, found = null;
   for (let i = 0; i < objects.length; i++) {
-    const t = objects[i].hit(ray);
+    const t = objects[i].hit(ray, tMin);
     if (t < nearest) { nearest = t; found = objects[i]; }
   }
   hit.object = found;
@@ -107,7 +111,7 @@ function shadowRay(scene, f, distance, lightObject) {
   for (let i = 0; i < objects.length && transmission > 0; i++) {
     const o = objects[i];
     if (o === lightObject) continue;
-    if (o.hit(shadow) < reach) transmission *= o.material.transparency;
+    if (o.hit(shadow, scene.epsilon) < reach) transmission *= o.material.transparency;
   }
   return transmission;
 }
@@ -115,7 +119,7 @@ function shadowRay(scene, f, distance, lightObject) {
 /** Phong highlight: (R·V)^shininess, R the light mirrored about the normal. */
 function specular(m, f, ray) {
   reflect(f.mirror, f.toLight, f.normal);
-  const rv = -dot(f.mirror, ray.direction);
+  const rv = dot(f.mirror, ray.direction); // mirror = −R, ray = −V: R·V
   return rv > 0 ? m.specular * Math.pow(rv, m.shininess) : 0;
 }
 

@@ -25,8 +25,8 @@ export class Box {
     this.name = '';
   }
 
-  /** Smallest t > EPSILON where the ray meets the box, or Infinity. */
-  hit(ray) {
+  /** Smallest t > tMin where the ray meets the box, or Infinity. */
+  hit(ray, tMin = EPSILON) {
     let tNear = -Infinity, tFar = Infinity;
     for (let i = 0; i < 3; i++) {
       const a = AXES[i];
@@ -41,8 +41,8 @@ export class Box {
       if (t2 < tFar) tFar = t2;
       if (tNear > tFar) return Infinity;
     }
-    if (tNear > EPSILON) return tNear;
-    return tFar > EPSILON ? tFar : Infinity; // the ray starts inside
+    if (tNear > tMin) return tNear;
+    return tFar > tMin ? tFar : Infinity; // the ray starts inside
   }
 
   /** The outward normal of the face nearest to `point`. */

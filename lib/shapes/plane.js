@@ -19,13 +19,13 @@ export class Plane {
     this.name = '';
   }
 
-  /** t where the ray meets the plane (t > EPSILON), or Infinity; a ray along the plane misses. */
-  hit(ray) {
+  /** t where the ray meets the plane (t > tMin), or Infinity; a ray along the plane misses. */
+  hit(ray, tMin = EPSILON) {
     const n = this.normal, d = ray.direction, o = ray.origin, p = this.point;
     const denom = n.x * d.x + n.y * d.y + n.z * d.z;
     if (Math.abs(denom) < 1e-12) return Infinity;
     const t = ((p.x - o.x) * n.x + (p.y - o.y) * n.y + (p.z - o.z) * n.z) / denom;
-    return t > EPSILON ? t : Infinity;
+    return t > tMin ? t : Infinity;
   }
 
   /** The plane's normal (the same everywhere). */

@@ -32,11 +32,11 @@ export class Sphere {
   }
 
   /**
-   * Smallest t > EPSILON where the ray meets the sphere, or Infinity: the
+   * Smallest t > tMin where the ray meets the sphere, or Infinity: the
    * geometric route of `intersectGeometric` in numbers only, with no record
    * written, because the renderer calls it for every ray and every sphere.
    */
-  hit(ray) {
+  hit(ray, tMin = EPSILON) {
     const o = ray.origin, d = ray.direction, c = this.center, r2 = this.radius * this.radius;
     const Lx = c.x - o.x, Ly = c.y - o.y, Lz = c.z - o.z;
     const tca = Lx * d.x + Ly * d.y + Lz * d.z;
@@ -45,8 +45,8 @@ export class Sphere {
     const band = TANGENT * (r2 + LL);
     if (gap < -band) return Infinity; // d > r: a miss
     const thc = gap <= band ? 0 : Math.sqrt(gap);
-    if (tca - thc > EPSILON) return tca - thc;
-    return tca + thc > EPSILON ? tca + thc : Infinity;
+    if (tca - thc > tMin) return tca - thc;
+    return tca + thc > tMin ? tca + thc : Infinity;
   }
 
   /** The outward unit normal at a surface point. */

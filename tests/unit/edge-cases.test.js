@@ -63,3 +63,30 @@ describe('a tangent ray to a tiny, far sphere', () => {
     }
   });
 });
+
+describe('shadow acne, on purpose', () => {
+  // A floor lit from above: with both guards off (bias 0, epsilon 0) shadow
+  // rays re-hit the surface they start on, at a rounding-error t.
+  const floorScene = (options) => new Scene(options)
+    .add(new Plane([0, -1.1, 0], [0.3, 1, 0.2], { color: [1, 1, 1] }))
+    .add(new PointLight([0, 10, -10]));
+  const shadowed = (scene) => {
+    let count = 0;
+    for (let i = 0; i < 400; i++) {
+      const steps = {};
+      trace(scene, new Ray([0, 0, 0], [(i % 20) / 20 - 0.5, -1, -(i / 20 | 0) / 20 - 0.5]), [0, 0, 0], steps);
+      if (steps.hit?.lights[0].inShadow) count++;
+    }
+    return count;
+  };
+
+  it('appears with no offset and no epsilon, and not with the defaults', () => {
+    expect(shadowed(floorScene({ bias: 0, epsilon: 0 }))).toBeGreaterThan(20);
+    expect(shadowed(floorScene({}))).toBe(0);
+  });
+
+  it('epsilon is checked like every scene option', () => {
+    expect(() => new Scene({ epsilon: -1 })).toThrow(/epsilon/);
+    expect(new Scene().epsilon).toBe(1e-6);
+  });
+});

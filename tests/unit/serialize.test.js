@@ -37,7 +37,7 @@ describe('scene JSON round trip', () => {
 
   it('writes the documented shape', () => {
     const json = sceneToJSON(roomScene());
-    expect(Object.keys(json)).toEqual(['background', 'ambient', 'shadows', 'bias', 'maxDepth', 'specular', 'objects']);
+    expect(Object.keys(json)).toEqual(['background', 'ambient', 'shadows', 'bias', 'epsilon', 'maxDepth', 'specular', 'objects']);
     expect(json.objects.map((o) => o.type)).toEqual(['plane', 'box', 'sphere', 'pointLight', 'pointLight', 'sphere', 'pointLight']);
     const [floor, box, glass, light] = json.objects;
     expect(floor.name).toBe('floor');
