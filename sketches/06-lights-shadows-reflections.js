@@ -6,7 +6,7 @@
  * One switch per idea; each one re-traces the picture.
  */
 import p5 from 'p5';
-import { Scene, Sphere, Plane, PointLight, Camera } from '../lib/index.js';
+import { Scene, Sphere, Plane, PointLight, Camera, EPSILON } from '../lib/index.js';
 import { createTracerView, createInspector } from '../lib/p5/index.js';
 
 const WIDTH = 160, HEIGHT = 120;    // traced pixels
@@ -44,14 +44,14 @@ new p5((p) => {
     const shadows = toggle(panel, 'shadows', 'a shadow ray from each hit point to each light: blocked means dark (scene.shadows).');
     const offset = p.createSelect();
     offset.option(`${SMALL_OFFSET} (a small ε)`, String(SMALL_OFFSET));
-    offset.option('0 (none)', '0');
+    offset.option('0 (none: acne)', '0');
     offset.option(`${BIG_OFFSET} (too big)`, String(BIG_OFFSET));
     const offsetLabel = p.createElement('label', 'shadow-ray offset ');
     offsetLabel.child(offset);
     control(panel, offsetLabel, 'a shadow or mirror ray starts this far off the surface, so that rounding ' +
-      'cannot make it hit the very surface it starts on (dark speckles, "shadow acne"). At 0 you will find ' +
-      'hardly any here: the library already ignores hits closer than 0.000001. Too big, and shadows come ' +
-      'loose from what casts them (scene.bias).');
+      'cannot make it hit the very surface it starts on. At 0 (and with no smallest t either) the surfaces ' +
+      'fill with dark speckles: "shadow acne". Too big, and shadows come loose from what casts them ' +
+      '(scene.bias, scene.epsilon).');
     const bounces = p.createSlider(0, MAX_BOUNCES, MAX_BOUNCES, 1);
     const bouncesLabel = p.createElement('label', `mirror bounces: ${MAX_BOUNCES} `);
     bouncesLabel.child(bounces);
@@ -63,6 +63,7 @@ new p5((p) => {
     const retrace = () => {
       scene.shadows = shadows.checked();
       scene.bias = Number(offset.value());
+      scene.epsilon = scene.bias === 0 ? 0 : EPSILON; // no guard at all: acne shows
       scene.maxDepth = Number(bounces.value());
       scene.specular = specular.checked();
       glass.material.transparency = seeThrough.checked() ? GLASS : 0;
