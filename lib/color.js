@@ -62,15 +62,16 @@ export function colorToHex(rgb) {
 /**
  * The name of the nearest simple colour for 0–255 channel values, by hue,
  * saturation and lightness: black, white, gray, red, pink, orange, brown,
- * yellow, green, cyan, blue or purple. A light red (lightness ≥ 55 %) and a
- * light magenta are "pink" — the lesson's pink sphere, [1, 0.32, 0.36], is one.
+ * yellow, green, cyan, blue or purple. A red that is not fully saturated and
+ * not dark is "pink", and so is a light magenta: the lesson's pink sphere,
+ * [1, 0.32, 0.36], stays pink as its shading darkens, until it is dim red.
  */
 export function colorName([r, g, b]) {
   const { h, s, l } = rgbToHsl(r / 255, g / 255, b / 255);
   if (l < 0.1) return 'black';
   if (l > 0.93) return 'white';
   if (s < 0.18 || (l < 0.2 && s < 0.35)) return l > 0.8 ? 'white' : 'gray';
-  if (h < 15 || h >= 345) return l >= 0.55 ? 'pink' : 'red';
+  if (h < 15 || h >= 345) return isPinkRed(r, g, b) ? 'pink' : 'red';
   if (h < 45) return l < 0.4 ? 'brown' : 'orange';
   if (h < 70) return l < 0.3 ? 'brown' : 'yellow';
   if (h < 165) return 'green';
@@ -78,6 +79,15 @@ export function colorName([r, g, b]) {
   if (h < 260) return 'blue';
   if (h < 290) return 'purple';
   return l >= 0.45 ? 'pink' : 'purple';
+}
+
+/**
+ * A red hue reads as pink when white is mixed in (HSV saturation below 0.85:
+ * the pink sphere's own 0.68 survives shading) and it is not dark (value ≥ 0.7).
+ */
+function isPinkRed(r, g, b) {
+  const max = Math.max(r, g, b), min = Math.min(r, g, b);
+  return max >= 0.7 * 255 && 1 - min / max < 0.85;
 }
 
 /** Hue in degrees [0, 360), saturation and lightness in 0–1. */

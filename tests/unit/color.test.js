@@ -88,3 +88,13 @@ describe('colorName: the nearest simple colour', () => {
     expect(colorName([150, 30, 35])).toBe('red');
   });
 });
+
+describe('pink through the shading', () => {
+  it('the pink sphere half lit is still pink; dim, it is red; a pure red stays red', () => {
+    expect(colorName([201, 64, 72])).toBe('pink'); // pink sphere, cos θ ≈ 0.79
+    expect(colorName([185, 59, 66])).toBe('pink'); // cos θ ≈ 0.72
+    expect(colorName([160, 51, 58])).toBe('red'); // cos θ ≈ 0.63: darker, crimson
+    expect(colorName([110, 35, 40])).toBe('red'); // too dark to look pink
+    expect(colorName([230, 10, 10])).toBe('red');
+  });
+});
