@@ -21,10 +21,12 @@ const DEG = 180 / Math.PI;
  * @param {number[]} out [r, g, b] target
  * @param {object} [steps] filled with the hit record when given (the inspector's)
  * @param {number} [depth=0] how many bounces led here
+ * @param {object[]} [objects=scene.objects] the shapes this ray may hit: all of them, or for a
+ *   primary ray the few that `render` knows can be under its pixel (the nearest hit is the same)
  */
-export function trace(scene, ray, out, steps, depth = 0) {
+export function trace(scene, ray, out, steps, depth = 0, objects = scene.objects) {
   const f = frames[depth] ?? newFrame(depth);
-  if (!nearestHit(scene.objects, ray, f.hit, scene.epsilon)) {
+  if (!nearestHit(objects, ray, f.hit, scene.epsilon)) {
     if (steps) steps.hit = null;
     return copyColor(out, scene.background);
   }

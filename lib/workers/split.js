@@ -4,7 +4,7 @@
  */
 import { positiveInteger } from '../check.js';
 import { sceneFromJSON, cameraFromJSON } from '../serialize.js';
-import { renderPixel } from '../render.js';
+import { render } from '../render.js';
 
 /**
  * Deals a frame's rows to `parts` workers: bands of `rowsPerBand` rows, handed
@@ -37,12 +37,10 @@ export function runJob(job, post) {
     const scene = sceneFromJSON(job.scene);
     const camera = cameraFromJSON(job.camera);
     const width = camera.width;
-    // renderPixel writes at the pixel's place in a whole frame; only our rows get filled.
+    // render writes at the pixels' places in a whole frame; only our rows get filled.
     const frame = frameOf(width * camera.height * 4);
     for (const [y0, y1] of bands) {
-      for (let y = y0; y < y1; y++) {
-        for (let x = 0; x < width; x++) renderPixel(scene, camera, x, y, frame);
-      }
+      render(scene, camera, frame, { y0, y1 });
       const pixels = frame.slice(y0 * width * 4, y1 * width * 4);
       post({ id, y0, y1, pixels: pixels.buffer }, [pixels.buffer]);
     }
