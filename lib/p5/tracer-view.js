@@ -29,6 +29,13 @@ const GRID_MIN_SCALE = 6;
 const AUTO_MAX_WIDTH = 640;
 const AUTO_MAX_HEIGHT_SHARE = 0.7;
 
+// p5's sketch checker fetches the page's last script and parses it on the main
+// thread before setup(): harmless for a small sketch file, but in a production
+// build that script is the whole bundle (p5 included), a one-second freeze in
+// the middle of the first render. It looks for global-mode name clashes; the
+// kit's sketches use instance mode, so it has nothing to find.
+p5.disableSketchChecker = true;
+
 /** Every live view of each p5 instance, so `p.remove()` stops them too. */
 const viewsOf = new WeakMap();
 p5.registerAddon((p5Class, fn, lifecycles) => {

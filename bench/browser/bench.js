@@ -1,0 +1,200 @@
+/**
+ * The page side of `npm run bench:browser` (driven by bench/browser.js).
+ *
+ * ?part=progressive (default): a p5 sketch with one tracer view of the class
+ *   scene at 640×480, coarse to fine, budget 8 ms, as a sketch would make it.
+ *   Every draw() of the view is timed (its step(), and the rest: blit and
+ *   progress bar). When the picture is done, window.bench.progressive holds
+ *   the figures; then window.bench.changes() times view.setScene()/restart()
+ *   to the first coarse preview.
+ * ?part=workers: window.bench.workers() times ParallelRenderer with 1 and 2
+ *   workers and render() on the main thread, side by side, and compares the
+ *   pictures byte for byte.
+ *
+ * Nothing here asserts a time; the driver prints the figures.
+ */
+import p5 from 'p5';
+import { Camera, classScene, render } from '../../lib/index.js';
+import { createTracerView } from '../../lib/p5/index.js';
+import { ParallelRenderer } from '../../lib/workers/parallel.js';
+
+const WIDTH = 640, HEIGHT = 480, BUDGET_MS = 8;
+const part = new URLSearchParams(location.search).get('part') ?? 'progressive';
+const bench = (window.bench = { part });
+
+const nextTask = () => new Promise((resolve) => setTimeout(resolve, 0));
+const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
+const nextFrame = () => new Promise((resolve) => requestAnimationFrame(resolve));
+
+function report(text) {
+  document.getElementById('report').textContent += `${text}\n`;
+}
+
+/* ---------------- progressive rendering in a tracer view ---------------- */
+
+/**
+ * Wraps the view's draw() and its renderer's step() with timers. `onDraw`
+ * hooks (set by changes()) see each frame's record right after its blit.
+ */
+function instrument(view) {
+  const renderer = view.renderer;
+  const step = renderer.step.bind(renderer), draw = view.draw.bind(view);
+  const probe = { frames: [], stepMs: 0, onDraw: null };
+  renderer.step = (budgetMs) => {
+    const start = performance.now();
+    const result = step(budgetMs);
+    probe.stepMs = performance.now() - start;
+    return result;
+  };
+  view.draw = () => {
+    const start = performance.now();
+    if (probe.frames.length === 0) performance.mark('bench:first-step'); // seen in the trace too
+    probe.stepMs = 0;
+    const tracedBefore = renderer.traced;
+    draw();
+    const end = performance.now();
+    const frame = { start, end, step: probe.stepMs, draw: end - start, traced: renderer.traced - tracedBefore, pass: renderer.pass, done: renderer.done };
+    probe.frames.push(frame);
+    probe.onDraw?.(frame);
+  };
+  return probe;
+}
+
+function progressivePart() {
+  const loaded = performance.now();
+  new p5((p) => {
+    let view, probe, setupMs;
+    p.setup = () => {
+      p.noCanvas();
+      const start = performance.now();
+      view = createTracerView(p, {
+        scene: classScene(), camera: new Camera({ width: WIDTH, height: HEIGHT }),
+        budgetMs: BUDGET_MS, renderMode: 'coarse', scale: 1, parent: 'sketch',
+      });
+      setupMs = performance.now() - start;
+      probe = instrument(view);
+      bench.view = view;
+      waitUntilDone(view).then(async () => {
+        await nextFrame(); await nextTask(); // the last frame's paint lands in the long-task list too
+        const frames = probe.frames.map(({ start, step, draw, traced, pass }) => ({ start, step, draw, traced, pass }));
+        bench.progressive = {
+          moduleLoaded: loaded, setupMs, firstStep: frames[0].start, doneAt: probe.frames.at(-1).end,
+          frames, longTasks: [...window.longTasks], longTasksObserved: window.longTasksObserved,
+          rendersPerSecond: view.renderer.raysPerSecond,
+        };
+        report(`progressive: ${frames.length} frames, done ${(bench.progressive.doneAt - frames[0].start).toFixed(0)} ms after the first step`);
+        bench.changes = (options) => changes(view, probe, options);
+      });
+    };
+    // A sketch usually has a draw(); the view runs on its own animation frames beside it.
+    p.draw = () => { bench.sketchDraw?.(); };
+  });
+}
+
+/** Resolves once the view's picture is done (polled each frame, outside the view's own work). */
+async function waitUntilDone(view) {
+  while (!view.done) await nextFrame();
+}
+
+/**
+ * Times `n` changes from the change call to the first frame showing traced
+ * pixels of the new render: `blit` when the view's draw() has put them into
+ * the canvas, `painted` at the first task after that frame was painted (a
+ * message posted from the frame runs after its paint). `from` says where the
+ * change is made: 'task' = a timer, as an input box's event would;
+ * 'draw' = inside the sketch's p5 draw(), as an animating sketch would.
+ */
+async function changes(view, probe, { n = 12, from = 'task', gapMs = 180 } = {}) {
+  const results = [];
+  const longTasksBefore = window.longTasks.length;
+  for (let i = 0; i < n; i++) {
+    await sleep(gapMs + Math.random() * 17); // any phase of the frame
+    const kind = i % 2 === 0 ? 'setScene' : 'restart';
+    const scene = kind === 'setScene' ? classScene() : null; // built before the clock starts
+    const result = await new Promise((resolve) => {
+      let t0 = 0, changeMs = 0;
+      const onDraw = (frame) => {
+        if (frame.traced === 0) return;
+        probe.onDraw = null;
+        const blit = frame.end - t0;
+        const channel = new MessageChannel();
+        channel.port1.onmessage = () => resolve({ kind, from, changeMs, blit, painted: performance.now() - t0, step: frame.step, draw: frame.draw });
+        channel.port2.postMessage(0);
+      };
+      const change = () => {
+        probe.onDraw = onDraw; // from here on: frames of the old render must not count
+        t0 = performance.now();
+        if (kind === 'setScene') view.setScene(scene); else view.restart();
+        changeMs = performance.now() - t0;
+      };
+      if (from === 'draw') bench.sketchDraw = () => { bench.sketchDraw = null; change(); };
+      else change();
+    });
+    results.push(result);
+  }
+  await waitUntilDone(view);
+  return { results, longTasks: window.longTasks.slice(longTasksBefore) };
+}
+
+/* ---------------- workers ---------------- */
+
+/**
+ * Renders the class scene at 640×480 `runs` times per case after `warmup`
+ * rounds, the cases taking turns (first case rotating) so they share the
+ * machine's state. Returns each case's times and whether each picture equals
+ * render()'s byte for byte.
+ */
+async function workersPart({ runs = 7, warmup = 2 } = {}) {
+  const scene = classScene(), camera = new Camera({ width: WIDTH, height: HEIGHT });
+  const reference = render(scene, camera);
+  const one = new ParallelRenderer({ workers: 1 }), two = new ParallelRenderer({ workers: 2 });
+  const cases = [
+    { name: 'render(), main thread', run: async () => render(scene, camera) },
+    { name: 'ParallelRenderer, 1 worker', run: () => one.render(scene, camera) },
+    { name: 'ParallelRenderer, 2 workers', run: () => two.render(scene, camera) },
+  ];
+  const timed = async (c) => {
+    const start = performance.now();
+    const buffer = await c.run();
+    return { ms: performance.now() - start, buffer };
+  };
+  const differing = (buffer) => {
+    if (buffer.length !== reference.length) return Math.max(buffer.length, reference.length);
+    let count = 0;
+    for (let i = 0; i < buffer.length; i++) if (buffer[i] !== reference[i]) count++;
+    return count;
+  };
+  try {
+    // The first render of each case: workers start, load their module and compile.
+    const first = [];
+    for (const c of cases) {
+      const { ms, buffer } = await timed(c);
+      first.push(ms);
+      c.differing = differing(buffer);
+      c.times = [];
+    }
+    for (let round = 0; round < warmup + runs; round++) {
+      for (let k = 0; k < cases.length; k++) {
+        const c = cases[(round + k) % cases.length];
+        await nextTask();
+        const { ms, buffer } = await timed(c);
+        if (round >= warmup) c.times.push(ms);
+        c.differing += differing(buffer);
+      }
+    }
+    return {
+      width: WIDTH, height: HEIGHT, runs, warmup, cores: navigator.hardwareConcurrency,
+      cases: cases.map((c, k) => ({ name: c.name, first: first[k], times: c.times, differing: c.differing })),
+    };
+  } finally {
+    one.terminate();
+    two.terminate();
+  }
+}
+
+if (part === 'workers') {
+  bench.workers = workersPart;
+  document.body.dataset.render = 'done';
+} else {
+  progressivePart();
+}
