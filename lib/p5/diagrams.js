@@ -448,50 +448,75 @@ export function drawGeometricConstruction(p, o) {
   if (m.breakX !== null) breakMark(p, m.breakX, y0);
   // Rd: a unit direction, drawn a fixed 50 px long
   screenArrow(p, x0, y0, x0 + 50, y0, RAY, 3);
-  label(p, 'Rd', x0 + 34, y0 - 14, { color: RAY, bold: true });
 
   // L = C − Ro
+  const cx = m.sx(C.u), cy = m.sy(C.v), px = m.sx(P.u);
   arrow(p, m, Ro, C, CONSTRUCT, 2.5, null);
-  const lx = x0 + (m.sx(C.u) - x0) * 0.3, ly = y0 + (m.sy(C.v) - y0) * 0.3;
-  label(p, 'L', lx - 4, ly - 14, { color: CONSTRUCT, bold: true, size: 16 });
 
   // d: from C straight down to the ray, meeting it at P, the closest approach
   line(p, m, C, P, INK, 1.5, [4, 4]);
-  if (d * m.s > 14) rightAngle(p, m.sx(P.u), y0, tca >= 0 ? -1 : 1);
-  label(p, `d = ${fmt(d)}`, m.sx(P.u) + 8, (m.sy(C.v) + y0) / 2 - (d * m.s < 30 ? 22 : 0), { color: INK, align: 'left', bold: true });
+  if (d * m.s > 14) rightAngle(p, px, y0, tca >= 0 ? -1 : 1);
 
   // r: from C to the near hit point (the right triangle d, thc, r), or
   // straight toward the ray when it misses
   const rEnd = hit && d > 0.15 * r ? { u: t0, v: 0 } : hit ? { u: tca, v: d + r } : { u: tca, v: d - r };
   line(p, m, C, rEnd, NORMAL, 2.5, []);
-  // its label beside the middle, on the side away from the ray
-  const ex = m.sx(rEnd.u) - m.sx(C.u), ey = m.sy(rEnd.v) - m.sy(C.v), len = Math.hypot(ex, ey) || 1;
-  let nx = -ey / len, ny = ex / len;
-  if (ny > 0) { nx = -nx; ny = -ny; }
-  label(p, `r = ${fmt(r)}`, m.sx(C.u) + ex / 2 + nx * 16, m.sy(C.v) + ey / 2 + ny * 16, { color: NORMAL, bold: true, align: nx < -0.3 ? 'right' : nx > 0.3 ? 'left' : 'center' });
 
   // below the ray: thc (from t0 to P) and tca (from Ro to P) as dimension lines
-  if (hit && g.thc > 0) dimension(p, m.sx(t0), m.sx(P.u), y0 + 40, `thc = ${fmt(g.thc)}`, NORMAL);
-  dimension(p, x0, m.sx(P.u), y0 + 58, `tca = ${fmt(tca)}`, CONSTRUCT, true);
+  if (hit && g.thc > 0) dimension(p, m.sx(t0), px, y0 + 40, null, NORMAL);
+  dimension(p, x0, px, y0 + 58, null, CONSTRUCT);
   if (m.breakX !== null) breakMark(p, m.breakX, y0 + 58);
 
-  if (hit) {
-    for (const [t, name] of [[t0, 't0'], [t1, 't1']]) {
-      if (g.roots === 1 && name === 't1') continue;
-      const behind = t <= 0, chosen = g.t !== null && t === g.t;
-      dot(p, m.sx(t), y0, chosen ? 6 : 5, behind ? MUTED : RAY);
-      if (chosen) ring(p, m.sx(t), y0, 11, RAY);
-      const text = `${g.roots === 1 ? 't0 = t1' : name} = ${fmt(t)}${behind ? ' (behind)' : ''}`;
-      const left = name === 't0';
-      label(p, text, m.sx(t) + (left ? -6 : 6), y0 + 18, { color: behind ? MUTED : RAY, bold: chosen, align: left ? 'right' : 'left' });
-    }
-  } else {
-    label(p, 'd > r: no hit', m.sx(C.u), m.sy(d - r) + 16, { color: SHADOW, bold: true, size: 15 });
+  const roots = !hit ? [] : g.roots === 1 ? [[t0, 't0 = t1']] : [[t0, 't0'], [t1, 't1']];
+  for (const [t] of roots) {
+    const chosen = g.t !== null && t === g.t;
+    dot(p, m.sx(t), y0, chosen ? 6 : 5, t <= 0 ? MUTED : RAY);
+    if (chosen) ring(p, m.sx(t), y0, 11, RAY);
   }
   dot(p, x0, y0, 6, INK);
-  label(p, 'Ro', x0 - 8, y0 - 14, { color: INK, bold: true, align: 'right' });
-  dot(p, m.sx(C.u), m.sy(C.v), 6, INK);
-  label(p, 'C', m.sx(C.u) + 10, m.sy(C.v) - 12, { color: INK, bold: true, align: 'left' });
+  dot(p, cx, cy, 6, INK);
+
+  // The labels, most important first: each takes the first of its places
+  // that is free; L and Rd are left out when no place is (the formulas above say them).
+  const labels = labelPlacer(p, area);
+  for (const [x, y] of [[x0, y0], [cx, cy]]) labels.keepClear(x - 5, y - 5, 10, 10);
+  for (const [t] of roots) labels.keepClear(m.sx(t) - 8, y0 - 8, 16, 16);
+  if (m.breakX !== null) { labels.keepClear(m.breakX - 7, y0 - 8, 14, 16); labels.keepClear(m.breakX - 7, y0 + 50, 14, 16); }
+  labels.keepClearLine(x0, y0, area.x + area.w, y0);
+  labels.keepClearLine(x0, y0, cx, cy);
+  labels.keepClearLine(cx, cy, px, y0);
+  labels.keepClearLine(cx, cy, m.sx(rEnd.u), m.sy(rEnd.v));
+  if (hit && g.thc > 0) labels.put(`thc = ${fmt(g.thc)}`, [[(m.sx(t0) + px) / 2, y0 + 40]], { color: NORMAL, bold: true, box: true });
+  labels.put(`tca = ${fmt(tca)}`, [[(x0 + px) / 2, y0 + 72]], { color: CONSTRUCT, bold: true });
+  if (!hit) labels.put('d > r: no hit', [[cx, m.sy(d - r) + 16], [cx, y0 + 20], [cx, y0 - 18]], { color: SHADOW, bold: true, size: 15 });
+  labels.put('Ro', [[x0 - 8, y0 - 14, 'right'], [x0 - 8, y0 + 16, 'right'], [x0 + 8, y0 + 16, 'left'], [x0, y0 - 18], [x0 + 8, y0 - 14, 'left']], { color: INK, bold: true });
+  labels.put('C', [[cx + 10, cy - 12, 'left'], [cx - 10, cy - 12, 'right'], [cx, cy - 18], [cx + 12, cy, 'left'], [cx - 12, cy, 'right'], [cx + 10, cy + 14, 'left'], [cx - 10, cy + 14, 'right']], { color: INK, bold: true });
+  for (const [t, name] of roots) {
+    const behind = t <= 0, chosen = g.t !== null && t === g.t, tx = m.sx(t);
+    const side = name === 't0' ? -1 : 1, align = side < 0 ? 'right' : 'left', other = side < 0 ? 'left' : 'right';
+    labels.put(`${name} = ${fmt(t)}${behind ? ' (behind)' : ''}`,
+      [[tx + 6 * side, y0 + 18, align], [tx + 14 * side, y0 - 16, align], [tx - 6 * side, y0 + 18, other], [tx - 14 * side, y0 - 16, other]],
+      { color: behind ? MUTED : RAY, bold: chosen });
+  }
+  // r beside its middle, away from the ray first
+  const ex = m.sx(rEnd.u) - cx, ey = m.sy(rEnd.v) - cy, len = Math.hypot(ex, ey) || 1;
+  let nx = -ey / len, ny = ex / len;
+  if (ny > 0) { nx = -nx; ny = -ny; }
+  const rAt = (k, f = 0.5) => [cx + ex * f + nx * k, cy + ey * f + ny * k, nx * k < -0.3 * Math.abs(k) ? 'right' : nx * k > 0.3 * Math.abs(k) ? 'left' : 'center'];
+  labels.put(`r = ${fmt(r)}`, [rAt(16), rAt(-16), rAt(16, 0.3), rAt(-16, 0.3), rAt(16, 0.7), rAt(-16, 0.7), rAt(30), rAt(-30)], { color: NORMAL, bold: true });
+  // d beside the dashed line, or beside C when d is short
+  const dy = (cy + y0) / 2;
+  labels.put(`d = ${fmt(d)}`, [[px + 8, dy, 'left'], [px - 8, dy, 'right'], [px + 8, dy - 22, 'left'], [px - 8, dy - 22, 'right'],
+    [cx + 12, cy - 30, 'left'], [cx - 12, cy - 30, 'right'], [px + 8, y0 + 22, 'left'], [px - 8, y0 + 22, 'right']], { color: INK, bold: true });
+  // L beside its arrow, Rd above or below its own
+  const along = (f, k) => {
+    const ux = cx - x0, uy = cy - y0, ul = Math.hypot(ux, uy) || 1;
+    let qx = -uy / ul, qy = ux / ul;
+    if (qy > 0) { qx = -qx; qy = -qy; }
+    return [x0 + ux * f + qx * k, y0 + uy * f + qy * k];
+  };
+  labels.put('L', [along(0.3, 14), along(0.5, 14), along(0.7, 14), along(0.3, -14), along(0.5, -14), along(0.15, 14)], { color: CONSTRUCT, bold: true, size: 16 }, { optional: true });
+  labels.put('Rd', [[x0 + 34, y0 - 14], [x0 + 34, y0 + 16], [x0 + 20, y0 - 14], [x0 + 20, y0 + 16]], { color: RAY, bold: true }, { optional: true });
   unclip(p);
   closePanel(p);
 }
@@ -822,15 +847,49 @@ function rightAngle(p, x, y, dir) {
   p.pop();
 }
 
-/** A measurement line between two x positions at height y, with end bars and its label on it (or below). */
+/** A measurement line between two x positions at height y, with end bars and its label on it (or below; none when null). */
 function dimension(p, xa, xb, y, text, color, below = false) {
   p.push();
   p.stroke(color); p.strokeWeight(1.5);
   p.line(xa, y, xb, y);
   p.line(xa, y - 5, xa, y + 5); p.line(xb, y - 5, xb, y + 5);
   p.pop();
+  if (text === null) return;
   if (below) label(p, text, (xa + xb) / 2, y + 14, { color, bold: true });
   else label(p, text, (xa + xb) / 2, y, { color, bold: true, box: true });
+}
+
+/**
+ * Labels that keep out of each other's way inside `area`: `put` draws a label
+ * at the first of its places (x, y, align) where it overlaps no label or mark
+ * placed before; when none is free it is drawn at its first place, or left
+ * out when optional. Returns whether it was drawn.
+ */
+function labelPlacer(p, area) {
+  const taken = [];
+  const overlaps = (a) => taken.some((b) => a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h);
+  const inside = (a) => a.x >= area.x && a.y >= area.y && a.x + a.w <= area.x + area.w && a.y + a.h <= area.y + area.h;
+  return {
+    keepClear(x, y, w, h) { taken.push({ x, y, w, h }); },
+    /** A line labels should not sit on, as a row of small squares along it. */
+    keepClearLine(xa, ya, xb, yb) {
+      const n = Math.ceil(Math.hypot(xb - xa, yb - ya) / 4);
+      for (let i = 0; i <= n; i++) taken.push({ x: xa + ((xb - xa) * i) / n - 1.5, y: ya + ((yb - ya) * i) / n - 1.5, w: 3, h: 3 });
+    },
+    put(text, places, style = {}, { optional = false } = {}) {
+      const size = style.size ?? SIZE, ctx = p.drawingContext;
+      ctx.save();
+      ctx.font = `${style.bold ? 'bold ' : ''}${size}px ${FONT}`;
+      const w = ctx.measureText(text).width + 6, h = size * 1.25;
+      ctx.restore();
+      const box = ([x, y, align = 'center']) => ({ x: align === 'left' ? x - 3 : align === 'right' ? x - w + 3 : x - w / 2, y: y - h / 2, w, h });
+      let place = places.find((pl) => { const b = box(pl); return inside(b) && !overlaps(b); });
+      if (!place) { if (optional) return false; place = places[0]; }
+      taken.push(box(place));
+      label(p, text, place[0], place[1], { ...style, align: place[2] ?? 'center' });
+      return true;
+    },
+  };
 }
 
 /**
