@@ -11,6 +11,7 @@ export default defineConfig({
   base: './',
   build: {
     target: 'es2022',
+    chunkSizeWarningLimit: 1500, // p5 itself is 1.3 MB: one library, loaded once per page
     rollupOptions: { input: [resolve('index.html'), ...sketchPages] },
   },
   worker: { format: 'es' },
