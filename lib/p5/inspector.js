@@ -237,7 +237,7 @@ function lightsSection(r) {
       element('td', {}, element('span', { class: 'rt-value', 'data-field': 'in-shadow', 'data-value': String(l.inShadow), ...at }, status)),
       element('td', {},
         element('span', { class: 'rt-swatch rt-swatch-small', style: `background: ${toHex(added.map((c) => Math.min(1, c) * 255))}` }),
-        element('span', { class: 'rt-value', 'data-field': 'contribution', 'data-value': added.join(','), ...at }, `(${added.map(formatNumber).join(', ')})`)));
+        element('span', { class: 'rt-value rt-wrap', 'data-field': 'contribution', 'data-value': added.join(','), ...at }, `(${added.map(formatNumber).join(', ')})`)));
   });
   return section('Lights (one shadow ray each)', table(['light', 'cos θ', 'shadow ray', 'adds (r, g, b)'], rows));
 }
@@ -273,7 +273,7 @@ function geometricSection(r) {
     const g = test.geometric, at = { 'data-sphere': String(i), 'data-route': 'geometric' };
     const agree = routesAgree(test.quadratic, g);
     return element('tr', { class: rowClass(r, test) }, sphereCell(test, i),
-      element('td', {}, vectorValue('L', g.L, at, formatVector(g.L).replaceAll(', ', ','))), // narrow: the table is wide
+      element('td', {}, wrapBeforeZ(vectorValue('L', g.L, at, formatVector(g.L).replaceAll(', ', ',')))), // narrow: the table is wide
       ...['tca', 'd2', 'thc', 't0', 't1'].map((f) => element('td', {}, value(f, g[f], at))),
       element('td', {}, element('span', {
         class: `rt-value ${agree ? 'rt-agree' : 'rt-disagree'}`, 'data-field': 'agree', 'data-value': String(agree), ...at,
@@ -282,6 +282,14 @@ function geometricSection(r) {
   });
   return section('Geometric route: tca = L·Rd, d² = L·L − tca², thc = √(r² − d²)', table(head, rows),
     element('p', { class: 'rt-note' }, 'd > r: the ray passes the sphere by. Otherwise t = tca ∓ thc — the same roots as the quadratic.'));
+}
+
+/** Lets a vector "(x,y,z)" wrap before its z (<wbr>) when its table is narrow; its text stays the same. */
+function wrapBeforeZ(span) {
+  const text = span.textContent, at = text.lastIndexOf(',') + 1;
+  span.replaceChildren(text.slice(0, at), element('wbr'), text.slice(at));
+  span.classList.add('rt-wrap');
+  return span;
 }
 
 function table(head, rows) {
