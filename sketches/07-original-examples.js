@@ -188,9 +188,9 @@ new p5((p) => {
     const countBox = p.createInput(String(WORKERS), 'number').attribute('min', '1').attribute('max', '8').parent(workers);
     const countError = p.createSpan('').addClass('error').attribute('role', 'alert').attribute('data-error', 'workers').parent(row);
     countBox.changed(() => {
-      const text = countBox.value().trim(), n = Number(text);
-      if (text === '' || !Number.isInteger(n) || n < 1 || n > 8) {
-        say(countError, `workers must be a whole number from 1 to 8, got ${text ? `"${text}"` : 'nothing'}; still using ${workerCount}.`);
+      const typed = countBox.value().trim(), n = Number(typed);
+      if (typed === '' || !Number.isInteger(n) || n < 1 || n > 8) {
+        say(countError, `workers must be a whole number from 1 to 8, got ${typed ? `"${typed}"` : 'nothing'}; still using ${workerCount}.`);
       } else {
         say(countError, '');
         workerCount = n;

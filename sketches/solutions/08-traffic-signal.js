@@ -8,10 +8,10 @@
 import { Sphere } from '../../lib/index.js';
 
 const X = 0, Z = -16;      // the front of the housing
-const RADIUS = 0.5;
+const LAMP_RADIUS = 0.5;
 
 export function addLights(scene) {
-  scene.add(new Sphere([X, 6.6, Z], RADIUS, { color: [0, 0, 0], emission: [1, 0.1, 0.05] })); // red
-  scene.add(new Sphere([X, 5.4, Z], RADIUS, { color: [0, 0, 0], emission: [1, 0.8, 0] }));    // yellow
-  scene.add(new Sphere([X, 4.2, Z], RADIUS, { color: [0, 0, 0], emission: [0.1, 1, 0.3] }));  // green
+  scene.add(new Sphere([X, 6.6, Z], LAMP_RADIUS, { color: [0, 0, 0], emission: [1, 0.1, 0.05] })); // red
+  scene.add(new Sphere([X, 5.4, Z], LAMP_RADIUS, { color: [0, 0, 0], emission: [1, 0.8, 0] }));    // yellow
+  scene.add(new Sphere([X, 4.2, Z], LAMP_RADIUS, { color: [0, 0, 0], emission: [0.1, 1, 0.3] }));  // green
 }

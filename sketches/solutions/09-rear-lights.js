@@ -8,10 +8,10 @@ import { Sphere } from '../../lib/index.js';
 
 const Y = 0.8, Z = -6.5;   // height and depth of both lights
 const SIDE = 0.72;         // how far each is from the car's middle
-const RADIUS = 0.14;
+const LAMP_RADIUS = 0.14;
 const RED = { color: [0, 0, 0], emission: [1, 0.05, 0.05] };
 
 export function addLights(scene) {
-  scene.add(new Sphere([-SIDE, Y, Z], RADIUS, RED)); // left
-  scene.add(new Sphere([SIDE, Y, Z], RADIUS, RED));  // right
+  scene.add(new Sphere([-SIDE, Y, Z], LAMP_RADIUS, RED)); // left
+  scene.add(new Sphere([SIDE, Y, Z], LAMP_RADIUS, RED));  // right
 }
