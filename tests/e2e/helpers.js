@@ -4,10 +4,18 @@
  */
 import { expect } from '@playwright/test';
 
-/** Collects console errors and page errors; call before page.goto. */
+/**
+ * Collects console errors, warnings and logs (p5's friendly errors are logs)
+ * and page errors; call before page.goto. A quiet console is part of the
+ * page contract. Chromium's hint about repeated getImageData is left out:
+ * the tests' own pixel reads cause it, not the page.
+ */
 export function watchConsole(page) {
   const errors = [];
-  page.on('console', (msg) => { if (msg.type() === 'error') errors.push(msg.text()); });
+  page.on('console', (msg) => {
+    if (!['error', 'warning', 'log'].includes(msg.type()) || msg.text().startsWith('Canvas2D: Multiple readback operations')) return;
+    errors.push(`${msg.type()}: ${msg.text()}`);
+  });
   page.on('pageerror', (err) => errors.push(String(err)));
   return errors;
 }
