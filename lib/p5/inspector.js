@@ -263,7 +263,7 @@ function quadraticSection(r) {
       element('td', {}, value('t0', q.t0, at)),
       element('td', {}, value('t1', q.t1, at)));
   });
-  return section('Quadratic route: At² + Bt + C = 0', table(head, rows),
+  return section('Quadratic route: At² + Bt + C = 0', rows.length ? table(head, rows) : noSpheres(),
     element('p', { class: 'rt-note' }, 'Discriminant < 0: no hit; = 0: tangent; > 0: two hits, t = (−B ± √(B² − 4AC)) / 2A. The nearest hit is the smallest positive t (highlighted row).'));
 }
 
@@ -280,7 +280,7 @@ function geometricSection(r) {
         title: agree ? 'Both routes find the same roots' : 'The two routes disagree',
       }, agree ? '✓' : '✗')));
   });
-  return section('Geometric route: tca = L·Rd, d² = L·L − tca², thc = √(r² − d²)', table(head, rows),
+  return section('Geometric route: tca = L·Rd, d² = L·L − tca², thc = √(r² − d²)', rows.length ? table(head, rows) : noSpheres(),
     element('p', { class: 'rt-note' }, 'd > r: the ray passes the sphere by. Otherwise t = tca ∓ thc — the same roots as the quadratic.'));
 }
 
@@ -290,6 +290,11 @@ function wrapBeforeZ(span) {
   span.replaceChildren(text.slice(0, at), element('wbr'), text.slice(at));
   span.classList.add('rt-wrap');
   return span;
+}
+
+/** Instead of a table with no rows: the scene has no sphere to test yet. */
+function noSpheres() {
+  return element('p', { class: 'rt-muted rt-empty', 'data-field': 'no-spheres' }, 'No spheres in the scene yet: nothing to test this ray against.');
 }
 
 function table(head, rows) {
