@@ -10,8 +10,7 @@
  */
 import p5 from 'p5';
 import { Camera, classScene } from '../lib/index.js';
-import { createTracerView, createInspector, registerView } from '../lib/p5/index.js';
-import { ParallelRenderer } from '../lib/workers/parallel.js';
+import { createTracerView, createInspector, Animation, workerCountBox } from '../lib/p5/index.js';
 
 const STILL = { width: 160, height: 120 };   // traced pixels of the still scene
 const MOVIE = { width: 320, height: 240 };   // of each animation frame: bigger frames, more work to share
@@ -35,17 +34,27 @@ function sceneAt(t) {
 
 new p5((p) => {
   const stillCamera = new Camera(STILL), movieCamera = new Camera(MOVIE);
-  let view, ui, example = 'still', playing = false;
-  let time = 0, shown = 0, frames = 0, stamps = [];   // animation clock, time of the frame on screen, FPS
-  let workerCount = WORKERS, parallel = null, inFlight = false, workerFrame = null;
-  const animation = registerView({}); // holds data-render at "rendering" while the animation plays
+  let view, ui, movie, example = 'still';
 
   p.setup = () => {
     p.noCanvas();
     const column = p.createDiv().addClass('column');
     ui = controls(column);
     view = createTracerView(p, { scene: classScene(), camera: stillCamera, parent: column });
-    animation.done(); // not playing yet
+    // The animation: sceneAt(t) traced whole each frame, on this thread or over the workers, counted for the FPS.
+    movie = new Animation(view, {
+      sceneAt, camera: movieCamera, workers: WORKERS, stats: ui.stats,
+      onPlay: (on) => {
+        ui.pause.html(on ? 'Pause' : 'Play');
+        if (on) ui.note.html(notes[example]);
+      },
+      onPause: ({ same }) => ui.note.html(same === undefined ? 'Paused: click a pixel of this frame to see its story.'
+        : `Paused. Traced again on one thread, this frame is ${same ? 'the same, byte for byte ✓' : 'DIFFERENT ✗'}`),
+      onError: (error) => say(ui.error, String(error.message ?? error)),
+    });
+    const { label, message } = workerCountBox(movie); // "workers (1–8)", a message when the count is bad
+    ui.row.elt.append(label, message);
+    ui.workers = label;
     ui.stats.parent(column);
     ui.note.parent(column);
     createInspector({ view, parent: p._userNode });
@@ -56,110 +65,22 @@ new p5((p) => {
     if (!EXAMPLES.includes(asked)) say(ui.error, `example must be ${EXAMPLES.join(', ')}; got "${asked}", so here is the still scene.`);
   };
 
-  p.draw = () => {
-    if (!playing) return;
-    time += p.deltaTime / 1000;
-    if (example === 'animated') {
-      showTraced(time);
-      counted(time);
-    } else if (!inFlight) renderOnWorkers(time);
-  };
+  p.draw = () => movie.tick(p.deltaTime);
 
   /** Shows one example: the still scene, or the animation (main thread or workers), playing. */
   function choose(name) {
     example = name;
     for (const [key, button] of Object.entries(ui.tabs)) button.attribute('aria-pressed', String(key === name));
     ui.row.style('display', name === 'still' ? 'none' : '');
-    ui.workers.style('display', name === 'workers' ? '' : 'none');
+    ui.workers.style.display = name === 'workers' ? '' : 'none';
     ui.stats.style('display', name === 'still' ? 'none' : '');
     say(ui.error, '');
-    frames = 0;
-    stamps = [];
-    workerFrame = null;
     if (name === 'still') {
-      play(false);
+      movie.stop();
       view.budgetMs = 8; // traced a little per frame: watch it sharpen
       view.setCamera(stillCamera).setScene(classScene());
-    } else {
-      view.setCamera(movieCamera);
-      showTraced(time);
-      play(true);
-    }
+    } else movie.start(name === 'animated' ? 'main' : 'workers');
     ui.note.html(notes[name]);
-  }
-
-  function play(on) {
-    playing = on;
-    ui.pause.html(on ? 'Pause' : 'Play');
-    if (on) {
-      animation.rendering();
-      ui.note.html(notes[example]);
-    } else if (!inFlight) paused();
-  }
-
-  /** The frame on screen is final: let the inspector explain it, and the page say "done". */
-  function paused() {
-    if (example === 'workers' && workerFrame) {
-      showTraced(shown); // the same frame on one thread, so the inspector knows its scene…
-      const same = workerFrame.every((byte, i) => byte === view.renderer.buffer[i]);
-      blit(workerFrame); // …but what stays on screen is the workers' picture
-      ui.note.html(`Paused. Traced again on one thread, this frame is ${same ? 'the same, byte for byte ✓' : 'DIFFERENT ✗'}`);
-    } else if (example === 'animated') {
-      ui.note.html('Paused: click a pixel of this frame to see its story.');
-    }
-    showStats();
-    animation.done();
-  }
-
-  /** Traces the frame of time t whole, now, on this thread (the view's own renderer). */
-  function showTraced(t) {
-    view.budgetMs = 60_000; // no slicing: the whole frame in one go
-    view.setScene(sceneAt(t));
-    view.draw();
-    shown = t;
-  }
-
-  async function renderOnWorkers(t) {
-    if (parallel?.workers !== workerCount) {
-      parallel?.terminate();
-      parallel = new ParallelRenderer({ workers: workerCount });
-    }
-    inFlight = true;
-    try {
-      const buffer = await parallel.render(sceneAt(t), movieCamera);
-      if (example === 'workers') {
-        workerFrame = buffer;
-        blit(buffer);
-        counted(t);
-      }
-    } catch (error) {
-      say(ui.error, String(error.message ?? error));
-      play(false);
-    } finally {
-      inFlight = false;
-      if (!playing) paused();
-    }
-  }
-
-  function blit(buffer) {
-    view.canvas.getContext('2d').putImageData(new ImageData(buffer, MOVIE.width, MOVIE.height), 0, 0);
-  }
-
-  /** One more frame on screen, made for time t: count it for the FPS. */
-  function counted(t) {
-    shown = t;
-    frames++;
-    const now = performance.now();
-    stamps = [...stamps.filter((s) => now - s < 1000), now];
-    showStats();
-  }
-
-  function showStats() {
-    const span = stamps.length > 1 ? stamps.at(-1) - stamps[0] : 0;
-    const fps = span > 0 ? ((stamps.length - 1) * 1000) / span : 0;
-    const by = example === 'workers' ? `${workerCount} worker${workerCount > 1 ? 's' : ''}` : 'main thread';
-    ui.stats.html(`frame ${frames} · ${fps.toFixed(1)} FPS · t = ${shown.toFixed(2)} s · ${by}`);
-    Object.assign(ui.stats.elt.dataset, { frame: frames, fps: fps.toFixed(1), time: shown });
   }
 
   const notes = {
@@ -169,11 +90,11 @@ new p5((p) => {
   };
 
   /** Writes a message as plain text (it may quote what someone typed). */
-  function say(element, text) {
-    element.elt.textContent = text;
+  function say(element, message) {
+    element.elt.textContent = message;
   }
 
-  /** Buttons for the three examples, Pause, the worker-count box and the lines under the picture. */
+  /** Buttons for the three examples and Pause, and the lines under the picture. */
   function controls(column) {
     const tabs = {};
     const bar = p.createDiv().addClass('tabs').parent(column);
@@ -183,22 +104,10 @@ new p5((p) => {
     }
     const row = p.createDiv().addClass('controls').parent(column);
     const pause = p.createButton('Pause').addClass('rt-button').parent(row).attribute('data-pause', '');
-    pause.mouseClicked(() => play(!playing));
-    const workers = p.createElement('label', 'workers (1–8) ').parent(row);
-    const countBox = p.createInput(String(WORKERS), 'number').attribute('min', '1').attribute('max', '8').parent(workers);
-    const countError = p.createSpan('').addClass('error').attribute('role', 'alert').attribute('data-error', 'workers').parent(row);
-    countBox.changed(() => {
-      const typed = countBox.value().trim(), n = Number(typed);
-      if (typed === '' || !Number.isInteger(n) || n < 1 || n > 8) {
-        say(countError, `workers must be a whole number from 1 to 8, got ${typed ? `"${typed}"` : 'nothing'}; still using ${workerCount}.`);
-      } else {
-        say(countError, '');
-        workerCount = n;
-      }
-    });
+    pause.mouseClicked(() => movie.play(!movie.playing));
     const error = p.createP('').addClass('error').attribute('role', 'alert').attribute('data-error', 'example').parent(column);
     const stats = p.createP('').addClass('stats').attribute('data-stats', '');
     const note = p.createP('').addClass('about');
-    return { tabs, row, pause, workers, stats, note, error };
+    return { tabs, row, pause, stats, note, error };
   }
 }, document.getElementById('sketch'));

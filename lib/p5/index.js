@@ -8,3 +8,5 @@ export { createInspector, Inspector, answerLine, formatNumber, formatVector, for
 export { registerView, pageRenderState } from './page-state.js';
 // Diagrams (side/top view, geometric construction, parabola) and legends:
 export { drawSideView, drawTopView, drawGeometricConstruction, drawParabola, drawLegend, createLegendElement, focusTest } from './diagrams.js';
+// An animation in a tracer view (main thread or Web Workers) with an FPS counter:
+export { Animation, FrameCounter, framesPerSecond, statsLine, readWorkerCount, sameBytes, blit, workerCountBox } from './animation.js';
