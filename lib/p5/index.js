@@ -10,3 +10,6 @@ export { registerView, pageRenderState } from './page-state.js';
 export { drawSideView, drawTopView, drawGeometricConstruction, drawParabola, drawLegend, createLegendElement, focusTest } from './diagrams.js';
 // An animation in a tracer view (main thread or Web Workers) with an FPS counter:
 export { Animation, FrameCounter, framesPerSecond, statsLine, readWorkerCount, sameBytes, blit, workerCountBox } from './animation.js';
+// An activity's answer form (checked boxes, Check, ✔/✘, the answer line) and marks over chosen pixels:
+export { createAnswerForm, readBoxes } from './answer-form.js';
+export { createPixelMarks, findPixels } from './pixel-marks.js';
