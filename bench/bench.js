@@ -9,19 +9,23 @@
  * Then the same at 160×120, a teaching resolution, and the heap before and
  * after ten frames (per-pixel work should allocate nothing).
  *
- * Performance (Node 20, 2 cores, CPU-time medians, measured while the machine
- * carried a load average of 15–28 from other jobs, so wall-clock medians
- * were 3–6× the CPU times and are not quoted here):
- *   (a) 640×480  76 ms/frame  4.0 Mpx/s    160×120  4.4 ms  4.3 Mpx/s
- *   (b) 640×480 475 ms/frame  0.65 Mpx/s   160×120 31 ms    0.62 Mpx/s
- *   ratio (a)/(b) 0.15 (full shading costs about 6.7×)
- *   heap across 10 frames of (a): 4.00 → 4.16 MB, 1 collection (was ~20,
- *   about 7.7 MB of boxed numbers per frame); (b) still allocates (~18).
- *   Against the original library in the same process, frames alternated:
- *   (a) 1.04–1.15× faster, (b) 1.1–1.2× faster. The 8 Mpx/s goal for (a)
- *   is not reached: a flat Float64Array sphere test measured only 1.3×
- *   faster than Sphere.hit here, so the next step is fewer tests per pixel
- *   (about 19 now: 7 primary, 2 × 6 shadow), not a different data layout.
+ * Performance (Node 20, 2 cores, medians; five runs over one afternoon with
+ * load averages of 2–4 from the machine's neighbours; V8 also compiles the
+ * hot loop two ways from run to run, one about 1.5× slower than the other):
+ *   (a) 640×480  59–102 ms/frame  5.2–3.0 Mpx/s  (fastest frame 55 ms, 5.6)
+ *       160×120  3.8–6.3 ms       5.1–3.0 Mpx/s
+ *   (b) 640×480  444–731 ms/frame 0.69–0.42 Mpx/s; 160×120 26–45 ms
+ *   ratio (a)/(b) 0.13–0.16 (full shading costs 6–7.5×: mirrors and glass
+ *   recurse up to maxDepth 5)
+ *   heap across 10 frames of (a): +2.5 MB, 1 collection (boxed numbers gone);
+ *   (b): 7 collections (mirrorAndGlass still passes bare numbers around).
+ *   render() traces by 16×16 tiles, each primary ray against the shapes its
+ *   tile can show (lib/bounds.js): 7.8 sphere tests a pixel, down from 12.8;
+ *   1.15–1.3× faster side by side. The 8 Mpx/s goal for (a) is not reached:
+ *   the time is spread over shading (lights, shadow rays, normals) rather
+ *   than one hot spot; a flat Float64Array sphere test measured only 1.3×
+ *   faster than Sphere.hit, and a last-blocker cache for shadow rays saved
+ *   no tests on this scene.
  *
  * Timing figures are printed, never asserted: they depend on the machine.
  * Before timing, the script checks that inspectPixel's colour equals render's
