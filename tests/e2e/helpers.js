@@ -24,3 +24,10 @@ export function watchConsole(page) {
 export async function waitForDone(page, timeout = 30_000) {
   await expect(page.locator('body')).toHaveAttribute('data-render', 'done', { timeout });
 }
+
+/** Every test of the calling file must leave the console quiet (see watchConsole). */
+export function expectQuietConsole(test) {
+  let errors;
+  test.beforeEach(({ page }) => { errors = watchConsole(page); });
+  test.afterEach(() => { expect(errors, 'console errors').toEqual([]); });
+}

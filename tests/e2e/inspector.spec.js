@@ -4,19 +4,13 @@
 // selection, body[data-render] follows every (re)render, and the canvas
 // holds the traced picture only.
 import { test, expect } from '@playwright/test';
-import { watchConsole, waitForDone } from './helpers.js';
+import { expectQuietConsole, waitForDone } from './helpers.js';
 
 const PAGE = '/tests/e2e/pages/inspector.html';
 const WIDTH = 64, HEIGHT = 48;
 const ANSWER = /^Pixel: \d+,\d+; H: -?\d+\.\d; V: -?\d+\.\d$/;
 
-let errors;
-test.beforeEach(async ({ page }) => {
-  errors = watchConsole(page);
-});
-test.afterEach(() => {
-  expect(errors, 'console errors').toEqual([]);
-});
+expectQuietConsole(test);
 
 /** Opens the test page (optionally with ?query) and waits for the picture. */
 async function open(page, query = '') {

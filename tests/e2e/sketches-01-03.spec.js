@@ -5,15 +5,9 @@
 // with tca < 0 (03).
 import { test, expect } from '@playwright/test';
 import { Camera, Scene, Sphere, inspectPixel } from '../../lib/index.js';
-import { watchConsole, waitForDone } from './helpers.js';
+import { expectQuietConsole, waitForDone } from './helpers.js';
 
-let errors;
-test.beforeEach(async ({ page }) => {
-  errors = watchConsole(page);
-});
-test.afterEach(() => {
-  expect(errors, 'console errors').toEqual([]);
-});
+expectQuietConsole(test);
 
 /** Clicks the centre of traced pixel (x, y) of a tracer canvas, wherever it is on screen. */
 async function clickPixel(page, canvas, x, y) {

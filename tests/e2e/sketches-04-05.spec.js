@@ -3,19 +3,13 @@
 // add and remove spheres, share the scene as a link. Bad values must leave
 // the traced picture exactly as it was.
 import { test, expect } from '@playwright/test';
-import { watchConsole, waitForDone } from './helpers.js';
+import { expectQuietConsole, watchConsole, waitForDone } from './helpers.js';
 
 const PINK = '/sketches/04-find-the-pink-pixel.html';
 const BOXES = '/sketches/05-value-boxes.html';
 const ANSWER = /^Pixel: \d+,\d+; H: -?\d+\.\d; V: -?\d+\.\d$/;
 
-let errors;
-test.beforeEach(async ({ page }) => {
-  errors = watchConsole(page);
-});
-test.afterEach(() => {
-  expect(errors, 'console errors').toEqual([]);
-});
+expectQuietConsole(test);
 
 async function open(page, url) {
   await page.goto(url);
