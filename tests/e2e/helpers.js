@@ -31,3 +31,15 @@ export function expectQuietConsole(test) {
   test.beforeEach(({ page }) => { errors = watchConsole(page); });
   test.afterEach(() => { expect(errors, 'console errors').toEqual([]); });
 }
+
+/**
+ * Clicks the centre of traced pixel (x, y) of a tracer canvas, whatever its
+ * on-screen scale. Through the locator, so Playwright first waits until the
+ * canvas is visible, still and the one that receives the click.
+ */
+export async function clickPixel(canvas, x, y) {
+  const box = await canvas.boundingBox();
+  const width = Number(await canvas.getAttribute('data-width'));
+  const height = Number(await canvas.getAttribute('data-height'));
+  await canvas.click({ position: { x: ((x + 0.5) * box.width) / width, y: ((y + 0.5) * box.height) / height } });
+}

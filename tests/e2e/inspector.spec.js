@@ -4,7 +4,7 @@
 // selection, body[data-render] follows every (re)render, and the canvas
 // holds the traced picture only.
 import { test, expect } from '@playwright/test';
-import { expectQuietConsole, waitForDone } from './helpers.js';
+import { clickPixel, expectQuietConsole, waitForDone } from './helpers.js';
 
 const PAGE = '/tests/e2e/pages/inspector.html';
 const WIDTH = 64, HEIGHT = 48;
@@ -16,12 +16,6 @@ expectQuietConsole(test);
 async function open(page, query = '') {
   await page.goto(PAGE + query);
   await waitForDone(page);
-}
-
-/** Clicks the centre of traced pixel (x, y), computing where it is on screen now. */
-async function clickPixel(page, x, y) {
-  const box = await page.locator('[data-tracer]').boundingBox();
-  await page.mouse.click(box.x + ((x + 0.5) * box.width) / WIDTH, box.y + ((y + 0.5) * box.height) / HEIGHT);
 }
 
 /** The lesson's answer line for a record, computed here independently of the panel's code. */
@@ -106,7 +100,7 @@ for (const scale of [5, 9.5]) {
     const box = await page.locator('[data-tracer]').boundingBox();
     expect(box.width).toBeCloseTo(WIDTH * scale, 0);
     for (const [x, y] of [[10, 12], [32, 20], [0, 0], [63, 47], [50, 33]]) {
-      await clickPixel(page, x, y);
+      await clickPixel(page.locator('[data-tracer]'), x, y);
       expect(await page.evaluate(() => window.view.selected)).toEqual({ x, y });
       await expect(page.locator('[data-answer]')).toHaveText(ANSWER);
       await expectPanelMatches(page, x, y);
@@ -118,22 +112,22 @@ test('changing the scale keeps clicks on the right pixel (auto, then a fixed sca
   await open(page);
   for (const scale of ['auto', 3, 12]) {
     await page.evaluate((s) => window.view.setScale(s), scale);
-    await clickPixel(page, 21, 17);
+    await clickPixel(page.locator('[data-tracer]'), 21, 17);
     expect(await page.evaluate(() => window.view.selected)).toEqual({ x: 21, y: 17 });
     await page.evaluate(() => window.view.select(null));
   }
   // A click near a pixel's corner still belongs to that pixel.
-  const box = await page.locator('[data-tracer]').boundingBox();
-  const k = box.width / WIDTH;
-  await page.mouse.click(box.x + 7 * k + 1, box.y + 9 * k + 1);
+  const canvas = page.locator('[data-tracer]');
+  const k = (await canvas.boundingBox()).width / WIDTH;
+  await canvas.click({ position: { x: 7 * k + 1, y: 9 * k + 1 } });
   expect(await page.evaluate(() => window.view.selected)).toEqual({ x: 7, y: 9 });
-  await page.mouse.click(box.x + 8 * k - 1, box.y + 10 * k - 1);
+  await canvas.click({ position: { x: 8 * k - 1, y: 10 * k - 1 } });
   expect(await page.evaluate(() => window.view.selected)).toEqual({ x: 7, y: 9 });
 });
 
 test('arrow keys move the selected pixel and the panel follows', async ({ page }) => {
   await open(page, '?scale=6');
-  await clickPixel(page, 10, 12);
+  await clickPixel(page.locator('[data-tracer]'), 10, 12);
   const moves = [['ArrowRight', 11, 12], ['ArrowDown', 11, 13], ['ArrowLeft', 10, 13], ['ArrowUp', 10, 12], ['Shift+ArrowRight', 20, 12]];
   for (const [key, x, y] of moves) {
     await page.keyboard.press(key);
@@ -150,7 +144,7 @@ test('arrow keys move the selected pixel and the panel follows', async ({ page }
 
 test('the panel explains a pink pixel: hit, lights, colour name and both routes', async ({ page }) => {
   await open(page, '?scale=6');
-  await clickPixel(page, 32, 20); // the middle of the big pink sphere
+  await clickPixel(page.locator('[data-tracer]'), 32, 20); // the middle of the big pink sphere
   const panel = page.locator('[data-inspector]');
   await expect(panel.locator('[data-field="color-name"]')).toHaveText('pink');
   await expect(panel.locator('[data-field="hit-object"]')).toHaveText('pink');
@@ -166,7 +160,7 @@ test('the panel explains a pink pixel: hit, lights, colour name and both routes'
 
 test('a new scene restarts the render without a reload, ends done, and the panel follows', async ({ page }) => {
   await open(page, '?scale=6');
-  await clickPixel(page, 32, 20);
+  await clickPixel(page.locator('[data-tracer]'), 32, 20);
   await page.evaluate(() => { window.notReloaded = true; });
   const state = await page.evaluate(() => {
     const { Scene, Sphere } = window.lib;
@@ -194,7 +188,7 @@ test('a new scene restarts the render without a reload, ends done, and the panel
 
 test('the traced canvas is render()\'s picture exactly, and exports as a PNG at traced size', async ({ page }) => {
   await open(page, '?scale=6&grid=1');
-  await clickPixel(page, 5, 5); // a crosshair and the grid are drawn: not into the picture
+  await clickPixel(page.locator('[data-tracer]'), 5, 5); // a crosshair and the grid are drawn: not into the picture
   expect(await page.evaluate(canvasEqualsRender)).toBe(true);
   const size = await page.evaluate(() => new Promise((resolve) => {
     const img = new Image();
@@ -206,7 +200,7 @@ test('the traced canvas is render()\'s picture exactly, and exports as a PNG at 
 
 test('Copy CSV puts the pixel\'s table in the panel (header + one row per sphere)', async ({ page }) => {
   await open(page, '?scale=6');
-  await clickPixel(page, 32, 20);
+  await clickPixel(page.locator('[data-tracer]'), 32, 20);
   await page.locator('[data-copy-csv]').click();
   await expect(page.locator('[data-copy-status]')).not.toHaveText('');
   const lines = (await page.locator('[data-csv]').inputValue()).trim().split('\n');

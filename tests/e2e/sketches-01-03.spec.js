@@ -5,17 +5,9 @@
 // with tca < 0 (03).
 import { test, expect } from '@playwright/test';
 import { Camera, Scene, Sphere, inspectPixel } from '../../lib/index.js';
-import { expectQuietConsole, waitForDone } from './helpers.js';
+import { clickPixel, expectQuietConsole, waitForDone } from './helpers.js';
 
 expectQuietConsole(test);
-
-/** Clicks the centre of traced pixel (x, y) of a tracer canvas, wherever it is on screen. */
-async function clickPixel(page, canvas, x, y) {
-  const box = await canvas.boundingBox();
-  const width = Number(await canvas.getAttribute('data-width'));
-  const height = Number(await canvas.getAttribute('data-height'));
-  await page.mouse.click(box.x + ((x + 0.5) * box.width) / width, box.y + ((y + 0.5) * box.height) / height);
-}
 
 /** The lesson's answer line for pixel (x, y) of a camera, computed here with the library in Node. */
 function answerFor(camera, x, y) {
@@ -66,7 +58,7 @@ test.describe('01 · rays through pixels', () => {
     const diagram = page.locator('#diagram canvas');
     const before = await pixelsOf(diagram);
 
-    await clickPixel(page, page.locator('[data-tracer]'), 20, 10);
+    await clickPixel(page.locator('[data-tracer]'), 20, 10);
     await page.mouse.move(0, 0); // off the picture: the diagram shows the selected pixel
     await expect(page.locator('[data-inspector] [data-answer]')).toHaveText(answerFor(camera, 20, 10));
     await expect.poll(() => pixelsOf(diagram)).not.toBe(before);
@@ -128,7 +120,7 @@ test.describe('02 · the quadratic', () => {
     const start = await overlays.first().evaluate((o) => o.toDataURL());
 
     // click the discriminant map: all three crosshairs move there, the panel follows
-    await clickPixel(page, views.nth(1), 10, 30);
+    await clickPixel(views.nth(1), 10, 30);
     await expect(answer).toHaveText(answerFor(camera, 10, 30));
     expect(await sameSelection()).toBe(true);
     expect(await overlays.first().evaluate((o) => o.toDataURL())).not.toBe(start);
@@ -139,7 +131,7 @@ test.describe('02 · the quadratic', () => {
     expect(await sameSelection()).toBe(true);
 
     // and a click on the shaded picture
-    await clickPixel(page, views.nth(0), 50, 5);
+    await clickPixel(views.nth(0), 50, 5);
     await expect(answer).toHaveText(answerFor(camera, 50, 5));
     expect(await sameSelection()).toBe(true);
   });
@@ -212,7 +204,7 @@ test.describe('03 · the geometric approach', () => {
   test('both routes give the same t for the selected ray', async ({ page }) => {
     await page.goto(PAGE);
     await waitForDone(page);
-    await clickPixel(page, page.locator('[data-tracer]'), 36, 20);
+    await clickPixel(page.locator('[data-tracer]'), 36, 20);
     await expect(page.locator('[data-inspector] [data-answer]')).toHaveText(answerFor(new Camera({ width: 64, height: 48, fov: 30 }), 36, 20));
     const compare = page.locator('[data-compare]');
     for (const field of ['t0', 't1', 't']) {
@@ -236,7 +228,7 @@ test.describe('03 · the geometric approach', () => {
     expect(await states()).toContain('rendering');
     expect(await pixelsOf(canvas)).not.toBe(outside);
 
-    await clickPixel(page, canvas, 32, 24);
+    await clickPixel(canvas, 32, 24);
     await expect(page.locator('[data-inspector] [data-answer]')).toHaveText(/^Pixel: 32,24;/);
     const tca = Number(await value(page, 'geometric', 'tca'));
     const thc = Number(await value(page, 'geometric', 'thc'));

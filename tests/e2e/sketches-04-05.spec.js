@@ -3,7 +3,7 @@
 // add and remove spheres, share the scene as a link. Bad values must leave
 // the traced picture exactly as it was.
 import { test, expect } from '@playwright/test';
-import { expectQuietConsole, watchConsole, waitForDone } from './helpers.js';
+import { clickPixel, expectQuietConsole, watchConsole, waitForDone } from './helpers.js';
 
 const PINK = '/sketches/04-find-the-pink-pixel.html';
 const BOXES = '/sketches/05-value-boxes.html';
@@ -83,8 +83,7 @@ test.describe('04 · Find the pink pixel', () => {
 
   test('clicking a pixel fills the boxes and checks it', async ({ page }) => {
     await open(page, PINK);
-    const box = await page.locator('[data-tracer]').boundingBox();
-    await page.mouse.click(box.x + (0.5 * box.width) / 32, box.y + (0.5 * box.height) / 24);
+    await clickPixel(page.locator('[data-tracer]'), 0, 0);
     await expect(page.locator('input[name="x"]')).toHaveValue('0');
     await expect(page.locator('input[name="y"]')).toHaveValue('0');
     await expect(page.locator('[data-result]')).toHaveAttribute('data-result', 'not-pink');

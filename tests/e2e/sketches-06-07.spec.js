@@ -4,7 +4,7 @@
 // animation with its frame counter and Pause, and the Web Workers frames equal
 // to render()'s picture of the same moment.
 import { test, expect } from '@playwright/test';
-import { watchConsole, waitForDone } from './helpers.js';
+import { clickPixel, watchConsole, waitForDone } from './helpers.js';
 
 const SKETCH_06 = '/sketches/06-lights-shadows-reflections.html';
 const SKETCH_07 = '/sketches/07-original-examples.html';
@@ -34,12 +34,9 @@ function compare(before, after) {
   return { differ, brighter, darker };
 }
 
-/** Clicks the centre of traced pixel (x, y), whatever the canvas's on-screen scale. */
-async function clickPixel(page, x, y) {
-  const canvas = page.locator('[data-tracer]');
-  const box = await canvas.boundingBox();
-  const w = Number(await canvas.getAttribute('data-width')), h = Number(await canvas.getAttribute('data-height'));
-  await canvas.click({ position: { x: ((x + 0.5) * box.width) / w, y: ((y + 0.5) * box.height) / h } });
+/** Clicks traced pixel (x, y) and waits for the inspector's answer line to name it. */
+async function selectPixel(page, x, y) {
+  await clickPixel(page.locator('[data-tracer]'), x, y);
   await expect(page.locator('[data-answer]')).toHaveText(new RegExp(`^Pixel: ${x},${y}; H: -?\\d+\\.\\d; V: -?\\d+\\.\\d$`));
 }
 
@@ -64,7 +61,7 @@ test.describe('06 · lights, shadows and reflections', () => {
 
   test('shadows off: the floor in the lamp\'s shadow gets brighter, nothing gets darker; on again: the same picture', async ({ page }) => {
     const before = await pixels(page);
-    await clickPixel(page, 37, 82); // floor behind the mirror ball, in the lamp's shadow
+    await selectPixel(page, 37, 82); // floor behind the mirror ball, in the lamp's shadow
     await expect(hitObject(page)).toHaveText('floor');
     await expect(inShadow(page, 0)).toHaveAttribute('data-value', 'false'); // the point light reaches it
     await expect(inShadow(page, 1)).toHaveAttribute('data-value', 'true'); // the lamp does not
@@ -82,7 +79,7 @@ test.describe('06 · lights, shadows and reflections', () => {
 
   test('mirror bounces 0: the mirror ball shows only its own paint; 5 again: the mirror is back', async ({ page }) => {
     const before = await pixels(page);
-    await clickPixel(page, 35, 54);
+    await selectPixel(page, 35, 54);
     await expect(hitObject(page)).toHaveText('mirror');
     const slider = page.locator('input[type="range"]');
 
@@ -100,7 +97,7 @@ test.describe('06 · lights, shadows and reflections', () => {
 
   test('glass off: the glass ball turns opaque, the rest of the balls stay', async ({ page }) => {
     const before = await pixels(page);
-    await clickPixel(page, 125, 54);
+    await selectPixel(page, 125, 54);
     await expect(hitObject(page)).toHaveText('glass');
     const opaque = await retrace(page, () => page.getByLabel('glass', { exact: true }).uncheck());
     expect(rgb(opaque, 160, 125, 54)).not.toEqual(rgb(before, 160, 125, 54));
@@ -123,7 +120,7 @@ test.describe('06 · lights, shadows and reflections', () => {
 
     const acne = await retrace(page, () => offset.selectOption('0'));
     expect(compare(before, acne).darker).toBeGreaterThan(500); // surfaces shadowing themselves
-    await clickPixel(page, 100, 80);
+    await selectPixel(page, 100, 80);
     await expect(hitObject(page)).toHaveText('floor');
     await expect(inShadow(page, 1)).toHaveAttribute('data-value', 'true');
 
@@ -179,7 +176,7 @@ test.describe('07 · the original examples', () => {
     await expect(page.locator('[data-tracer]')).toHaveAttribute('data-width', '160');
     await expect(stats(page)).toBeHidden();
     expect(await canvasVersusRender(page, 'still')).toEqual({ differ: 0, length: 160 * 120 * 4 });
-    await clickPixel(page, 80, 60);
+    await selectPixel(page, 80, 60);
     await expect(hitObject(page)).toHaveText('pink');
   });
 
@@ -204,7 +201,7 @@ test.describe('07 · the original examples', () => {
 
     // The paused frame is render()'s picture of the scene at the time shown, and the panel explains it.
     expect(await canvasVersusRender(page, 'animated')).toEqual({ differ: 0, length: 320 * 240 * 4 });
-    await clickPixel(page, 160, 120);
+    await selectPixel(page, 160, 120);
     await expect(page.locator('[data-inspector] [data-field="hex"]')).toHaveText(await canvasHex(page, 160, 120));
   });
 
@@ -230,7 +227,7 @@ test.describe('07 · the original examples', () => {
     await waitForDone(page);
     await expect(page.locator('.about')).toHaveText(/the same, byte for byte ✓/);
     expect(await canvasVersusRender(page, 'workers')).toEqual({ differ: 0, length: 320 * 240 * 4 });
-    await clickPixel(page, 10, 230);
+    await selectPixel(page, 10, 230);
     await expect(page.locator('[data-inspector] [data-field="hex"]')).toHaveText(await canvasHex(page, 10, 230));
   });
 

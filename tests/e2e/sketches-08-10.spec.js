@@ -2,7 +2,7 @@
 // "not yet" on the starter, listing what fails, and "passed" on the reference
 // solution (?solution=1); the playground traces and its inspector answers.
 import { test, expect } from '@playwright/test';
-import { watchConsole, waitForDone } from './helpers.js';
+import { clickPixel, watchConsole, waitForDone } from './helpers.js';
 
 const HOMEWORK = [
   {
@@ -27,14 +27,6 @@ async function checkMyScene(page) {
   const results = page.locator('[data-check-results]');
   await expect(results).toHaveAttribute('data-check', /passed|not-yet/);
   return results;
-}
-
-/** Clicks the centre of pixel (x, y) of the traced picture, whatever its on-screen scale. */
-async function clickPixel(page, x, y) {
-  const canvas = page.locator('[data-tracer]');
-  const box = await canvas.boundingBox();
-  const w = Number(await canvas.getAttribute('data-width')), h = Number(await canvas.getAttribute('data-height'));
-  await page.mouse.click(box.x + ((x + 0.5) * box.width) / w, box.y + ((y + 0.5) * box.height) / h);
 }
 
 for (const hw of HOMEWORK) {
@@ -91,7 +83,7 @@ test('the traffic-signal solution: a click on a light says its colour', async ({
   const panel = page.locator('[data-inspector]');
   // Column 80 is the signal's middle; rows 25, 38 and 52 are the centres of its three lights.
   for (const [y, name] of [[25, 'red'], [38, 'yellow'], [52, 'green']]) {
-    await clickPixel(page, 80, y);
+    await clickPixel(page.locator('[data-tracer]'), 80, y);
     await expect(panel.locator('[data-answer]')).toHaveText(new RegExp(`^Pixel: 80,${y}; H: -?\\d+\\.\\d; V: -?\\d+\\.\\d$`));
     await expect(panel.locator('.rt-color-name')).toHaveText(name);
   }
@@ -105,12 +97,12 @@ test('the playground traces, and its inspector answers a click and the arrow key
   await expect(canvas).toHaveAttribute('data-width', '64');
   await expect(canvas).toHaveAttribute('data-height', '48');
   const panel = page.locator('[data-inspector]');
-  await clickPixel(page, 32, 24);
+  await clickPixel(page.locator('[data-tracer]'), 32, 24);
   await expect(panel.locator('[data-answer]')).toHaveText('Pixel: 32,24; H: 0.3; V: -0.3');
   await expect(panel).toContainText('two hits'); // the centre ray meets the sphere twice
   await page.keyboard.press('ArrowRight');
   await expect(panel.locator('[data-answer]')).toHaveText(/^Pixel: 33,24; H: /);
-  await clickPixel(page, 0, 0);
+  await clickPixel(page.locator('[data-tracer]'), 0, 0);
   await expect(panel.locator('[data-answer]')).toHaveText(/^Pixel: 0,0; H: -\d+\.\d; V: \d+\.\d$/);
   expect(errors).toEqual([]);
 });
