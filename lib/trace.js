@@ -73,29 +73,31 @@ function surfaceAt(f, ray) {
 
 /** Emission + ambient + every light the point can see (diffuse and specular). */
 function lightPoint(scene, object, f, ray, out, record) {
-  const m = object.material, c = m.color, a = scene.ambient;
+  const m = object.material, c = m.color, a = scene.ambient, lights = scene.lights;
   setColor(out, m.emission[0] + a * c[0], m.emission[1] + a * c[1], m.emission[2] + a * c[2]);
-  for (let i = 0; i < scene.lights.length; i++) {
-    const light = scene.lights[i];
+  for (let i = 0; i < lights.length; i++) {
+    const light = lights[i];
     if (light.object === object) continue; // a light does not light itself
     const distance = directionTo(f.toLight, f.point, light.position);
     const cos = dot(f.normal, f.toLight); // Lambert: light falls at an angle
-    const transmission = cos > 0 && scene.shadows ? shadowRay(scene, f, distance, light.object) : cos > 0 ? 1 : 0;
-    const diffuse = Math.max(0, cos) * transmission;
+    if (cos <= 0 && !record) continue; // the light is behind the surface
+    const transmission = cos <= 0 ? 0 : scene.shadows ? shadowRay(scene, f, distance, light.object) : 1;
+    if (transmission === 0 && !record) continue;
+    const diffuse = cos * transmission;
     const highlight = transmission > 0 && scene.specular && m.specular > 0 ? specular(m, f, ray) * transmission : 0;
     const e = light.emission;
     out[0] += e[0] * (c[0] * diffuse + highlight);
     out[1] += e[1] * (c[1] * diffuse + highlight);
     out[2] += e[2] * (c[2] * diffuse + highlight);
-    if (record) recordLight(record, light, cos, transmission, diffuse, highlight, c, distance);
+    if (record) recordLight(record, light, cos, transmission, Math.max(0, diffuse), highlight, c, distance);
   }
 }
 
 /** Unit vector from `from` toward `to` into `out`; returns the distance. */
 function directionTo(out, from, to) {
-  sub(out, to, from);
-  const distance = length(out);
-  scale(out, out, 1 / distance);
+  const x = to.x - from.x, y = to.y - from.y, z = to.z - from.z;
+  const distance = Math.sqrt(x * x + y * y + z * z), k = 1 / distance;
+  out.x = x * k; out.y = y * k; out.z = z * k;
   return distance;
 }
 
@@ -105,15 +107,16 @@ function directionTo(out, from, to) {
  * the light: whatever lies beyond it, or around it, casts no shadow.
  */
 function shadowRay(scene, f, distance, lightObject) {
-  const shadow = f.shadowRay, objects = scene.objects;
+  const shadow = f.shadowRay, objects = scene.objects, epsilon = scene.epsilon;
   scaleAndAdd(shadow.origin, f.point, f.normal, scene.bias); // step off the surface: no acne
   copy(shadow.direction, f.toLight);
   const reach = distance - scene.bias; // stop short of the light: a light on a face is not behind it
   let transmission = 1;
-  for (let i = 0; i < objects.length && transmission > 0; i++) {
+  for (let i = 0; i < objects.length; i++) {
     const o = objects[i];
-    if (o === lightObject) continue;
-    if (o.hit(shadow, scene.epsilon) < reach) transmission *= o.material.transparency;
+    if (o === lightObject || o.hit(shadow, epsilon) >= reach) continue;
+    transmission *= o.material.transparency;
+    if (transmission === 0) return 0;
   }
   return transmission;
 }
