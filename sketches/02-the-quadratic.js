@@ -47,7 +47,7 @@ new p5((p) => {
       p.redraw();
     });
 
-    const panel = p.createDiv('<h2>The sphere: drag a slider or type a number</h2>').class('fields').parent('left');
+    const panel = p.createDiv('<h2>The sphere: drag a slider or type a number</h2>').class('card fields').parent('left');
     for (const [name, label, min, max, step] of FIELDS) numberField(panel, name, label, min, max, step);
     p.createCanvas(560, 380).parent('left');
     p.pixelDensity(1);

@@ -32,7 +32,7 @@ new p5((p) => {
     const values = document.getElementById('values');
     values.parentElement.append(values); // under both: the boxes get the page's whole width
     values.parentElement.before(element('p', { class: 'notice', 'data-link-problem': '', role: 'alert' }, problem));
-    const panel = element('section', { class: 'panel' }, element('h2', {}, 'The values'));
+    const panel = element('section', { class: 'card' }, element('h2', {}, 'The values'));
     values.append(panel, shareTools());
     createSceneForm({ json: sceneToJSON(scene), parent: panel, onChange: (changed, json) => {
       view.setScene(changed);
@@ -60,7 +60,7 @@ new p5((p) => {
       share(codeBox.value, 'Code copied: paste it into a sketch.');
     });
     const copyLink = button('Copy link', () => share(location.href, 'Link copied: paste it into the chat.'));
-    return element('section', { class: 'panel share' }, copyCode, copyLink, status, codeBox);
+    return element('section', { class: 'card share' }, copyCode, copyLink, status, codeBox);
   }
 
   const button = (label, onClick) => {
