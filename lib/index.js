@@ -14,7 +14,7 @@ export { trace, nearestHit } from './trace.js';
 export { render, renderPixel, writePixel } from './render.js';
 export { inspectPixel } from './explain.js';
 export { toColor, toHex, colorToHex, colorName } from './color.js';
-export { classScene } from './scenes.js';
+export { classScene, classSceneAt } from './scenes.js';
 export * as vec3 from './vec3.js';
 export { ProgressiveRenderer } from './progressive.js';
 export { sceneToJSON, sceneFromJSON, cameraToJSON, cameraFromJSON, sceneToCode } from './serialize.js';

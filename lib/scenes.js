@@ -3,6 +3,7 @@
  */
 import { Scene } from './scene.js';
 import { Sphere } from './shapes/sphere.js';
+import { finiteNumber } from './check.js';
 
 /**
  * The class's example scene, from the original JavaScript library: a huge
@@ -21,5 +22,25 @@ export function classScene({ full = false } = {}) {
   scene.add(named(new Sphere([-5.5, 0, -15], 3, { color: [0.9, 0.9, 0.9], ...(full && { reflection: 0.5, specular: 0.5 }) }), 'white'));
   scene.add(named(new Sphere([0, 20, -30], 3, { color: [0, 0, 0], emission: 1.2 }), 'light 1'));
   scene.add(named(new Sphere([0, 10, 10], 3, { color: [0, 0, 0], emission: 1 }), 'light 2'));
+  return scene;
+}
+
+/**
+ * The class scene `t` seconds into the original animated example: the yellow,
+ * blue and white spheres circle the pink one (about its vertical axis), once
+ * every `secondsPerTurn` seconds; the rest stays put.
+ */
+export function classSceneAt(t, secondsPerTurn = 12) {
+  finiteNumber(t, 't');
+  if (finiteNumber(secondsPerTurn, 'secondsPerTurn') <= 0) throw new RangeError(`secondsPerTurn must be greater than 0, got ${secondsPerTurn}`);
+  const scene = classScene();
+  const pink = scene.objects.find((o) => o.name === 'pink').center;
+  const angle = (2 * Math.PI * t) / secondsPerTurn, turnX = Math.cos(angle), turnZ = Math.sin(angle);
+  for (const name of ['yellow', 'blue', 'white']) {
+    const c = scene.objects.find((o) => o.name === name).center;
+    const x = c.x - pink.x, z = c.z - pink.z;
+    c.x = pink.x + x * turnX - z * turnZ;
+    c.z = pink.z + x * turnZ + z * turnX;
+  }
   return scene;
 }

@@ -1,0 +1,95 @@
+/**
+ * Buttons for a page of examples that share one picture, as in sketch 07
+ * (still, animated, workers): the chosen one is pressed. An example that
+ * plays an Animation shows a row with Pause / Play (and, on the workers, how
+ * many), and under the picture the frame counter and a note on what is shown.
+ *
+ *   const picker = createExamplePicker(column, EXAMPLES, choose); // EXAMPLES: { name: { note, thread? } }
+ *   const view = createTracerView(p, { …, parent: column });      // the picture goes under the buttons
+ *   picker.attach(new Animation(view, { sceneAt, camera }));
+ *   picker.choose(exampleInLink(location.search, EXAMPLES).name);
+ *
+ * exampleInLink needs no page.
+ */
+import { element } from './dom.js';
+import { workerCountBox } from './animation.js';
+
+/**
+ * The example a link asks for with `?example=…`: when it names none of the
+ * examples, the first one, and a `problem` saying why.
+ * @param {string} search the link's query, e.g. `location.search`
+ * @param {Record<string, object>} examples by name, in order
+ * @returns {{ name: string, problem: string }}
+ */
+export function exampleInLink(search, examples) {
+  const names = Object.keys(examples);
+  const asked = new URLSearchParams(search).get('example');
+  if (asked === null || names.includes(asked)) return { name: asked ?? names[0], problem: '' };
+  return { name: names[0], problem: `example must be ${names.join(', ')}; got "${asked}", so here is the ${names[0]} scene.` };
+}
+
+/**
+ * @param {HTMLElement|{elt: HTMLElement}} parent where the buttons go (an element or a p5.Element)
+ * @param {Record<string, { note: string, thread?: 'main'|'workers' }>} examples by name, in order:
+ *   the note under the picture, and for an animated one the thread its frames are traced on
+ * @param {(name: string, example: object) => void} onChoose shows the chosen example
+ * @returns {{ attach: Function, choose: Function, say: Function }}
+ */
+export function createExamplePicker(parent, examples, onChoose) {
+  const host = parent.elt ?? parent;
+  const buttons = Object.keys(examples).map((name) => element('button', { class: 'rt-button', 'data-example': name }, name));
+  const pause = element('button', { class: 'rt-button', 'data-pause': '' }, 'Pause');
+  const row = element('div', { class: 'controls' }, pause);
+  const error = element('p', { class: 'error', role: 'alert', 'data-error': 'example' });
+  const stats = element('p', { class: 'stats', 'data-stats': '' });
+  const note = element('p', { class: 'about' });
+  host.append(element('div', { class: 'tabs' }, ...buttons), row, error);
+  let chosen, workers;
+
+  const picker = {
+    /**
+     * Hands the controls to an animation (sets its stats, onPlay, onPause and
+     * onError): Pause plays and pauses it, the box sets its worker count.
+     * Call once the picture is under the buttons: the stats and the note go under it.
+     */
+    attach(animation) {
+      Object.assign(animation, {
+        stats,
+        onPlay: (on) => {
+          pause.textContent = on ? 'Pause' : 'Play';
+          if (on) note.textContent = examples[chosen].note;
+        },
+        onPause: ({ same }) => {
+          note.textContent = same === undefined ? 'Paused: click a pixel of this frame to see its story.'
+            : `Paused. Traced again on one thread, this frame is ${same ? 'the same, byte for byte ✓' : 'DIFFERENT ✗'}`;
+        },
+        onError: (problem) => picker.say(String(problem.message ?? problem)),
+      });
+      pause.addEventListener('click', () => animation.play(!animation.playing));
+      const box = workerCountBox(animation); // "workers (1–8)", a message when the count is bad
+      row.append(box.label, box.message);
+      workers = box.label;
+      host.append(stats, note);
+    },
+
+    /** Shows example `name`: its button pressed, an animation's controls only for an animation, its note. */
+    choose(name) {
+      chosen = name;
+      const { thread, note: words } = examples[name];
+      for (const button of buttons) button.setAttribute('aria-pressed', String(button.dataset.example === name));
+      row.style.display = thread ? '' : 'none';
+      if (workers) workers.style.display = thread === 'workers' ? '' : 'none';
+      stats.style.display = thread ? '' : 'none';
+      picker.say('');
+      onChoose(name, examples[name]);
+      note.textContent = words;
+    },
+
+    /** Writes a message in the error line as plain text (it may quote what someone typed); '' hides it. */
+    say(message) {
+      error.textContent = message;
+    },
+  };
+  for (const button of buttons) button.addEventListener('click', () => picker.choose(button.dataset.example));
+  return picker;
+}
