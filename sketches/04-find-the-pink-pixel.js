@@ -10,24 +10,30 @@
  * see every pink pixel at once: each one is a right answer.
  */
 import p5 from 'p5';
-import { Camera, classScene, inspectPixel, colorName, toHex } from '../lib/index.js';
-import { createTracerView, createInspector, answerLine, createAnswerForm, createPixelMarks, findPixels } from '../lib/p5/index.js';
-import { element } from '../lib/p5/dom.js';
+import { Camera, classScene, inspectPixel, colorName, toHex, pinkPixelVerdict } from '../lib/index.js';
+import { createTracerView, createInspector, answerLine, createAnswerForm, createPixelHighlight } from '../lib/p5/index.js';
 
 // The screen and where the camera starts: change them and find pink again.
 const WIDTH = 32;
 const HEIGHT = 24;
 const FOV = 30; // vertical field of view, degrees
 const START = { x: 10, y: 12, h: 0, v: 0 };
+const NOTE = 'Camera H turns the camera right (negative: left) and camera V tilts it up (negative: down), in degrees: they say where the MIDDLE of the picture points. Each pixel\'s ray points a little to the side of that, so the H and V in your answer are the ray\'s own angles for that pixel (the camera\'s angles plus the pixel\'s offset) — the numbers the inspector shows when you click the pixel. The eye stays put, so a ray\'s H and V alone say where it goes.';
 
 const cameraFor = (h, v) => new Camera({ width: WIDTH, height: HEIGHT, fov: FOV, yaw: h, pitch: v });
 
 new p5((p) => {
-  let view, form, marks, showPink, pinkCount, pink = null;
+  let view, form, pinkOnes;
 
   p.setup = () => {
     view = createTracerView(p, { scene: classScene(), camera: cameraFor(START.h, START.v), parent: 'picture', grid: true, label: `The class scene: ${WIDTH} × ${HEIGHT} pixels` });
-    marks = createPixelMarks(p, view, 'pink-marks'); // this sketch's canvas lies over the picture; the traced one stays as traced
+    // The reverse question: every pink pixel, marked on this sketch's canvas laid over the picture.
+    pinkOnes = createPixelHighlight(p, view, {
+      name: 'pink',
+      label: 'Highlight every pink pixel (the reverse question)',
+      test: (rgb) => colorName(rgb) === 'pink',
+      describe: (count, total) => `${count} of ${total} pixels are pink: each one is a right answer for this camera.`,
+    });
 
     form = createAnswerForm({
       parent: 'activity',
@@ -38,31 +44,28 @@ new p5((p) => {
         v: { label: 'Camera V', value: START.v, rule: { min: -90, max: 90 } },
       },
       onCheck: check,
-      note: 'Camera H turns the camera right (negative: left) and camera V tilts it up (negative: down), in degrees: they say where the MIDDLE of the picture points. Each pixel\'s ray points a little to the side of that, so the H and V in your answer are the ray\'s own angles for that pixel (the camera\'s angles plus the pixel\'s offset) — the numbers the inspector shows when you click the pixel. The eye stays put, so a ray\'s H and V alone say where it goes.',
+      note: NOTE,
     });
     for (const b of [form.boxes.h, form.boxes.v]) b.input.addEventListener('change', turnCamera);
-    showPink = element('input', { type: 'checkbox', 'data-show-pink': '' });
-    pinkCount = element('span', { 'data-pink-count': '' });
-    view.figure.after(element('div', { class: 'controls' }, element('label', {}, showPink, 'Highlight every pink pixel (the reverse question)'), pinkCount));
 
     createInspector({ view, parent: 'activity' });
     view.onSelect((s) => s && explain(s)); // clicks, arrow keys and Check all end here
     check();
   };
 
+  p.draw = () => pinkOnes.draw();
+
   // Reads the four boxes; a bad one keeps its message and the picture stays as it was.
   function check() {
     const values = form.read();
     if (!values) return;
     if (values.h !== view.camera.yaw || values.v !== view.camera.pitch) view.setCamera(cameraFor(values.h, values.v));
-    pink = null;
     view.select(values.x, values.y);
   }
 
   function turnCamera() {
     const h = form.boxes.h.read(), v = form.boxes.v.read();
     if (h === undefined || v === undefined || (h === view.camera.yaw && v === view.camera.pitch)) return;
-    pink = null;
     view.setCamera(cameraFor(h, v)); // the selected pixel is explained again through the new camera
   }
 
@@ -70,28 +73,7 @@ new p5((p) => {
   function explain({ x, y }) {
     form.fill({ x, y });
     const record = inspectPixel(view.scene, view.camera, x, y);
-    const name = colorName(record.color);
-    const object = record.hit?.object.name;
-    const why = name === 'pink' ? `Pink! Pixel ${x},${y} shows the pink sphere.`
-      : object === 'pink' ? `That pixel is ${name}: it is on the pink sphere, but too dark there to look pink.`
-        : `That pixel is ${name}: ${object ? whatIs(object) : 'the ray hits nothing, so it gets the background'}.`;
-    form.show({ ok: name === 'pink', message: why, color: toHex(record.color), data: { result: name === 'pink' ? 'pink' : 'not-pink', colorName: name }, answer: answerLine(record) });
+    const { pink, colorName: name, message } = pinkPixelVerdict(record);
+    form.show({ ok: pink, message, color: toHex(record.color), data: { result: pink ? 'pink' : 'not-pink', colorName: name }, answer: answerLine(record) });
   }
-
-  const whatIs = (name) => (name === 'ground' ? 'the ground' : name.startsWith('light') ? `${name}, a light` : `the ${name} sphere`);
-
-  // Every pixel the renderer made pink, read from the finished picture.
-  function findPink() {
-    const found = findPixels(view.renderer.buffer, WIDTH, HEIGHT, (rgb) => colorName(rgb) === 'pink');
-    pinkCount.textContent = `${found.length} of ${WIDTH * HEIGHT} pixels are pink: each one is a right answer for this camera.`;
-    pinkCount.dataset.pinkCount = String(found.length);
-    return found;
-  }
-
-  p.draw = () => {
-    if (!showPink.checked) { marks.clear(); pink = null; pinkCount.textContent = ''; return; }
-    if (!view.done) return marks.clear();
-    pink ??= findPink();
-    marks.draw(pink);
-  };
 }, document.getElementById('sketch'));

@@ -12,6 +12,6 @@ export { drawSideView, drawTopView, drawGeometricConstruction, drawParabola, dra
 export { Animation, FrameCounter, framesPerSecond, statsLine, readWorkerCount, sameBytes, blit, workerCountBox } from './animation.js';
 // An activity's answer form (checked boxes, Check, ✔/✘, the answer line) and marks over chosen pixels:
 export { createAnswerForm, readBoxes } from './answer-form.js';
-export { createPixelMarks, findPixels } from './pixel-marks.js';
+export { createPixelMarks, createPixelHighlight, findPixels } from './pixel-marks.js';
 // Controls a sketch builds its page from: slider fields, a panel of switches, a picker of examples:
 export { createExamplePicker, exampleInLink } from './example-picker.js';

@@ -4,7 +4,13 @@
  *
  *   const marks = createPixelMarks(p, view, 'pink-marks');
  *   p.draw = () => marks.draw(findPixels(view.renderer.buffer, 32, 24, isPink));
+ *
+ * Or all of it behind a tick box under the picture, with a count:
+ *
+ *   const pinkOnes = createPixelHighlight(p, view, { name: 'pink', label: 'Highlight every pink pixel', test: isPink, describe });
+ *   p.draw = () => pinkOnes.draw();
  */
+import { element } from './dom.js';
 
 /**
  * Every pixel `{ x, y }` of an RGBA buffer whose `[r, g, b]` (0–255) passes
@@ -47,4 +53,45 @@ export function createPixelMarks(p, view, name = 'pixel-marks') {
     },
   };
   return marks;
+}
+
+/**
+ * A tick box under a view's picture that marks every pixel of the finished
+ * picture passing `test`, and a line saying how many. The marks are found once
+ * per picture: again after the scene or the camera changes.
+ * @param {p5} p the sketch: its canvas becomes the marks' overlay (see createPixelMarks)
+ * @param {import('./tracer-view.js').TracerView} view
+ * @param {object} options
+ * @param {string} options.name names the parts: the box has `data-show-<name>`, the line
+ *   `data-<name>-count` (set to the count), the overlay the class `<name>-marks`
+ * @param {string} options.label the words beside the box
+ * @param {(rgb: number[]) => boolean} options.test which pixels to mark (`[r, g, b]`, 0–255)
+ * @param {(count: number, total: number) => string} options.describe the line, from the count and the number of pixels
+ * @returns {{ draw: () => void }} call draw() from the sketch's draw()
+ */
+export function createPixelHighlight(p, view, { name, label, test, describe }) {
+  const marks = createPixelMarks(p, view, `${name}-marks`);
+  const box = element('input', { type: 'checkbox', [`data-show-${name}`]: '' });
+  const count = element('span', { [`data-${name}-count`]: '' });
+  view.figure.after(element('div', { class: 'controls' }, element('label', {}, box, label), count));
+  let found = null, foundIn = null; // the marked pixels, and the { scene, camera } of their picture
+
+  return {
+    draw() {
+      if (!box.checked) {
+        marks.clear();
+        found = null;
+        count.textContent = '';
+        return;
+      }
+      if (!view.done) return marks.clear();
+      if (!found || foundIn.scene !== view.scene || foundIn.camera !== view.camera) {
+        found = findPixels(view.renderer.buffer, view.width, view.height, test);
+        foundIn = { scene: view.scene, camera: view.camera };
+        count.textContent = describe(found.length, view.width * view.height);
+        count.setAttribute(`data-${name}-count`, String(found.length));
+      }
+      marks.draw(found);
+    },
+  };
 }
