@@ -12,7 +12,7 @@
  */
 import p5 from 'p5';
 import { Camera, Scene, Sphere, PointLight, inspectPixel } from '../lib/index.js';
-import { createTracerView, createInspector } from '../lib/p5/index.js';
+import { createTracerView, createInspector, createSliderField } from '../lib/p5/index.js';
 import { drawParabola } from '../lib/p5/diagrams.js';
 
 // The sphere (the worksheet's: centre (0, 0, −20), radius 4) and the screen.
@@ -20,6 +20,7 @@ const SPHERE = { x: 0, y: 0, z: -20, r: 4 };
 const COLOR = [1, 0.32, 0.36];
 const LIGHT = [-10, 10, 10];
 const WIDTH = 64, HEIGHT = 48, SCALE = 6;
+const VIEWS = { shaded: 'Shaded', discriminant: 'Discriminant B² − 4AC', roots: 'Roots: 0, 1 or 2' }; // mode: label
 const FIELDS = [ // [name, label, slider min, max, step]
   ['x', 'Centre x (Xc)', -15, 15, 0.5],
   ['y', 'Centre y (Yc)', -12, 12, 0.5],
@@ -39,8 +40,8 @@ new p5((p) => {
   p.setup = () => {
     const eye = new Camera({ width: WIDTH, height: HEIGHT });
     const scene = makeScene(good);
-    views = ['shaded', 'discriminant', 'roots'].map((mode) =>
-      createTracerView(p, { scene, camera: eye, mode, scale: SCALE, parent: 'views', label: mode === 'shaded' ? 'Shaded' : mode === 'roots' ? 'Roots: 0, 1 or 2' : 'Discriminant B² − 4AC' }));
+    views = Object.entries(VIEWS).map(([mode, label]) =>
+      createTracerView(p, { scene, camera: eye, mode, scale: SCALE, parent: 'views', label }));
     // One selected pixel for all three pictures.
     for (const view of views) view.onSelect((s) => {
       for (const other of views) if (other.selected?.x !== s?.x || other.selected?.y !== s?.y) other.select(s ? s.x : null, s?.y);
@@ -48,7 +49,9 @@ new p5((p) => {
     });
 
     const panel = p.createDiv('<h2>The sphere: drag a slider or type a number</h2>').class('card fields').parent('left');
-    for (const [name, label, min, max, step] of FIELDS) numberField(panel, name, label, min, max, step);
+    for (const [name, label, min, max, step] of FIELDS) {
+      createSliderField(p, panel, { name, label, min, max, step, value: good[name], use: (value) => setSphere(name, value) });
+    }
     p.createCanvas(560, 380).parent('left');
     p.pixelDensity(1);
     createInspector({ view: views[0], parent: 'sketch' });
@@ -56,30 +59,11 @@ new p5((p) => {
     p.noLoop();
   };
 
-  /** A slider and a text box for one number; a bad number gets a message and the picture stays. */
-  function numberField(panel, name, label, min, max, step) {
-    const id = `field-${name}`;
-    p.createElement('label', label).attribute('for', id).parent(panel);
-    const slider = p.createSlider(min, max, good[name], step).parent(panel).attribute('aria-label', `${label} slider`);
-    const textBox = p.createInput(String(good[name])).parent(panel).id(id).attribute('inputmode', 'decimal');
-    const message = p.createDiv('').class('message').parent(panel).attribute('role', 'alert').attribute('data-message-for', name);
-    const use = (text) => {
-      const value = text.trim() === '' ? NaN : Number(text);
-      try {
-        if (!Number.isFinite(value)) throw new TypeError(`must be a number, got "${text}"`);
-        const scene = makeScene({ ...good, [name]: value }); // the Sphere checks the radius
-        good[name] = value;
-        for (const view of views) view.setScene(scene);
-        message.html(''); textBox.attribute('aria-invalid', 'false');
-        return true;
-      } catch (error) {
-        message.elt.textContent = `${label}: ${error.message.replace(/^radius /, '')}. The picture keeps the last good value.`;
-        textBox.attribute('aria-invalid', 'true');
-        return false;
-      }
-    };
-    slider.input(() => { textBox.value(String(slider.value())); use(String(slider.value())); });
-    textBox.input(() => { if (use(textBox.value())) slider.value(good[name]); });
+  /** A new number for the sphere: all three pictures are traced again. A bad radius throws, and nothing changes. */
+  function setSphere(name, value) {
+    const scene = makeScene({ ...good, [name]: value }); // the Sphere checks the radius
+    good[name] = value;
+    for (const view of views) view.setScene(scene);
   }
 
   p.draw = () => {

@@ -1,0 +1,69 @@
+/**
+ * A number a student can drag or type, as in sketch 02: a label, a slider and
+ * a text box side by side (cells of the parent's grid), then a line for a bad
+ * number; the picture keeps the last good value.
+ *
+ *   createSliderField(p, panel, { name: 'r', label: 'Radius r', min: 0.5, max: 12, step: 0.5, value: 4,
+ *     use: (r) => view.setScene(sceneWith(r)) }); // use() throws for a value it cannot take
+ *
+ * readTypedNumber and fieldMessage need no page.
+ */
+
+/** The number typed in a text box, else a TypeError: empty or "abc" is no number. */
+export function readTypedNumber(text) {
+  const value = text.trim() === '' ? NaN : Number(text);
+  if (!Number.isFinite(value)) throw new TypeError(`must be a number, got "${text}"`);
+  return value;
+}
+
+/**
+ * The line under a field with a bad value: its label, what is wrong, and that
+ * the picture stays. The library's messages start with the field's own name
+ * ("radius must be …"): the label says it better, so the name goes.
+ */
+export function fieldMessage(label, error) {
+  return `${label}: ${error.message.replace(/^\S+ (?=must )/, '')}. The picture keeps the last good value.`;
+}
+
+/**
+ * @param {p5} p the sketch (its DOM functions make the parts)
+ * @param {p5.Element} parent the grid the label, slider, text box and message go into
+ * @param {object} field
+ * @param {string} field.name the text box's id is `field-<name>`, the message's `data-message-for` is `<name>`
+ * @param {string} field.label what the field is called
+ * @param {number} field.min the slider's range…
+ * @param {number} field.max
+ * @param {number} field.step
+ * @param {number} field.value …and its value at first
+ * @param {(value: number) => void} field.use puts a number to use, or throws an Error saying why it cannot
+ */
+export function createSliderField(p, parent, { name, label, min, max, step, value, use }) {
+  const id = `field-${name}`;
+  p.createElement('label', label).attribute('for', id).parent(parent);
+  const slider = p.createSlider(min, max, value, step).parent(parent).attribute('aria-label', `${label} slider`);
+  const textBox = p.createInput(String(value)).parent(parent).id(id).attribute('inputmode', 'decimal');
+  const message = p.createDiv('').class('message').parent(parent).attribute('role', 'alert').attribute('data-message-for', name);
+
+  /** Uses the number in `text`: the number, or undefined after saying why not. */
+  const tryUse = (text) => {
+    try {
+      const number = readTypedNumber(text);
+      use(number);
+      message.html('');
+      textBox.attribute('aria-invalid', 'false');
+      return number;
+    } catch (error) {
+      message.elt.textContent = fieldMessage(label, error);
+      textBox.attribute('aria-invalid', 'true');
+      return undefined;
+    }
+  };
+  slider.input(() => {
+    textBox.value(String(slider.value()));
+    tryUse(String(slider.value()));
+  });
+  textBox.input(() => {
+    const number = tryUse(textBox.value());
+    if (number !== undefined) slider.value(number);
+  });
+}
