@@ -7,7 +7,7 @@
  */
 import p5 from 'p5';
 import { Scene, Sphere, Plane, PointLight, Camera, EPSILON } from '../lib/index.js';
-import { createTracerView, createInspector } from '../lib/p5/index.js';
+import { createTracerView, createInspector, createSwitches } from '../lib/p5/index.js';
 
 const WIDTH = 160, HEIGHT = 120;    // traced pixels
 const SMALL_OFFSET = 1e-4;          // ε: how far a shadow ray starts off the surface
@@ -29,63 +29,35 @@ function makeScene() {
 }
 
 new p5((p) => {
-  let view;
   const scene = makeScene();
   const glass = scene.objects.find((o) => o.name === 'glass');
 
   p.setup = () => {
     p.noCanvas(); // the tracer view brings its own canvas
     const column = p.createDiv().addClass('column'); // the picture, its switches below
-    view = createTracerView(p, { scene, camera: new Camera({ width: WIDTH, height: HEIGHT, position: [0, 1.6, 2], pitch: -9 }), parent: column });
+    const view = createTracerView(p, { scene, camera: new Camera({ width: WIDTH, height: HEIGHT, position: [0, 1.6, 2], pitch: -9 }), parent: column });
     createInspector({ view, parent: p._userNode });
 
-    const panel = p.createElement('fieldset').addClass('switches').parent(column);
-    panel.child(p.createElement('legend', 'One switch per idea'));
-    const shadows = toggle(panel, 'shadows', 'a shadow ray from each hit point to each light: blocked means dark (scene.shadows).');
-    const offset = p.createSelect();
-    offset.option(`${SMALL_OFFSET} (a small ε)`, String(SMALL_OFFSET));
-    offset.option('0 (none: acne)', '0');
-    offset.option(`${BIG_OFFSET} (too big)`, String(BIG_OFFSET));
-    const offsetLabel = p.createElement('label', 'shadow-ray offset ');
-    offsetLabel.child(offset);
-    control(panel, offsetLabel, 'a shadow or mirror ray starts this far off the surface, so that rounding ' +
-      'cannot make it hit the very surface it starts on. At 0 (and with no smallest t either) the surfaces ' +
-      'fill with dark speckles: "shadow acne". Too big, and shadows come loose from what casts them ' +
-      '(scene.bias, scene.epsilon).');
-    const bounces = p.createSlider(0, MAX_BOUNCES, MAX_BOUNCES, 1);
-    const bouncesLabel = p.createElement('label', `mirror bounces: ${MAX_BOUNCES} `);
-    bouncesLabel.child(bounces);
-    control(panel, bouncesLabel, '0: mirrors and glass look like plain paint; each bounce lets the ray go on once more (scene.maxDepth).');
-    const specular = toggle(panel, 'highlights', 'the shiny spot where a light is mirrored toward the eye (scene.specular).');
-    const seeThrough = toggle(panel, 'glass', `the right ball lets ${GLASS * 100}% of the light through, bent (its material.transparency).`);
+    const panel = createSwitches(p, column, 'One switch per idea');
+    const shadows = panel.toggle('shadows', 'a shadow ray from each hit point to each light: blocked means dark (scene.shadows).');
+    const offset = panel.choice('shadow-ray offset', [[`${SMALL_OFFSET} (a small ε)`, SMALL_OFFSET], ['0 (none: acne)', 0], [`${BIG_OFFSET} (too big)`, BIG_OFFSET]],
+      'a shadow or mirror ray starts this far off the surface, so that rounding cannot make it hit the very surface it starts on. ' +
+      'At 0 (and with no smallest t either) the surfaces fill with dark speckles: "shadow acne". Too big, and shadows come loose ' +
+      'from what casts them (scene.bias, scene.epsilon).');
+    const bounces = panel.slider('mirror bounces', { min: 0, max: MAX_BOUNCES, value: MAX_BOUNCES },
+      '0: mirrors and glass look like plain paint; each bounce lets the ray go on once more (scene.maxDepth).');
+    const specular = panel.toggle('highlights', 'the shiny spot where a light is mirrored toward the eye (scene.specular).');
+    const seeThrough = panel.toggle('glass', `the right ball lets ${GLASS * 100}% of the light through, bent (its material.transparency).`);
 
-    /** Reads every switch into the scene and traces it again. */
-    const retrace = () => {
+    // Any switch: read every switch into the scene and trace it again.
+    panel.onChange(() => {
       scene.shadows = shadows.checked();
       scene.bias = Number(offset.value());
       scene.epsilon = scene.bias === 0 ? 0 : EPSILON; // no guard at all: acne shows
       scene.maxDepth = Number(bounces.value());
       scene.specular = specular.checked();
       glass.material.transparency = seeThrough.checked() ? GLASS : 0;
-      bouncesLabel.elt.firstChild.textContent = `mirror bounces: ${scene.maxDepth} `;
       view.restart();
-    };
-    for (const input of [shadows, offset, specular, seeThrough]) input.changed(retrace);
-    bounces.input(retrace);
+    });
   };
-
-  /** A checkbox, on at first, with a line saying what it does. */
-  function toggle(panel, name, why) {
-    const checkbox = p.createCheckbox(` ${name}`, true);
-    checkbox.attribute('data-switch', name);
-    control(panel, checkbox, why);
-    return checkbox;
-  }
-
-  function control(panel, input, why) {
-    const item = p.createDiv().addClass('switch');
-    item.child(input);
-    item.child(p.createP(why).addClass('why'));
-    panel.child(item);
-  }
 }, document.getElementById('sketch'));

@@ -15,4 +15,5 @@ export { createAnswerForm, readBoxes } from './answer-form.js';
 export { createPixelMarks, createPixelHighlight, findPixels } from './pixel-marks.js';
 // Controls a sketch builds its page from: slider fields, a panel of switches, a picker of examples:
 export { createSliderField, readTypedNumber, fieldMessage } from './slider-field.js';
+export { createSwitches } from './switches.js';
 export { createExamplePicker, exampleInLink } from './example-picker.js';
