@@ -1,6 +1,10 @@
-// The diagrams' labels: the placer's rules, on a recording stand-in for p5.
+// The diagrams' labels: the placer's rules, and the side and top views drawn
+// into a recording stand-in for p5 for pixels all over the class scene and
+// sketch 01's scene, where no label may land on another or leave the view.
 import { describe, it, expect } from 'vitest';
+import { drawSideView, drawTopView } from '../../lib/p5/diagrams.js';
 import { labelPlacer, ON_THICK } from '../../lib/p5/diagrams/labels.js';
+import { classScene, Camera, Scene, Sphere, PointLight, inspectPixel } from '../../lib/index.js';
 
 const sizeOf = (font) => Number(/([\d.]+)px/.exec(font)[1]);
 const widthOf = (text, font) => text.length * sizeOf(font) * 0.56;
@@ -31,6 +35,45 @@ function recordingSketch() {
 }
 
 const overlap = (a, b) => a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+
+/** What is wrong with the labels of one view drawn in the box { x, y, w, h }: overlaps and labels out of it. */
+function labelFaults(draw, options) {
+  const { p, texts } = recordingSketch();
+  draw(p, options);
+  const { x, y, w, h } = options;
+  const area = { x: x + 4, y: y + 30, w: w - 8, h: h - 34 - 26 }; // under the title, above the line key
+  const faults = [];
+  texts.forEach((a, i) => {
+    if (a.x < area.x || a.y < area.y || a.x + a.w > area.x + area.w || a.y + a.h > area.y + area.h) faults.push(`"${a.text}" leaves the view`);
+    for (const b of texts.slice(i + 1)) if (overlap(a, b)) faults.push(`"${a.text}" on "${b.text}"`);
+  });
+  return faults;
+}
+
+/** Every `step`-th pixel of a camera, both views: the faults, each with its pixel and view. */
+function sweep(scene, camera, box, step) {
+  const faults = [];
+  for (let py = 0; py < camera.height; py += step) {
+    for (let px = 0; px < camera.width; px += step) {
+      const record = inspectPixel(scene, camera, px, py);
+      for (const [name, draw] of [['side', drawSideView], ['top', drawTopView]]) {
+        for (const f of labelFaults(draw, { scene, camera, record, ...box })) faults.push(`${name} ${px},${py}: ${f}`);
+      }
+    }
+  }
+  return faults;
+}
+
+/** Sketch 01's scene (sketches/01-rays-through-pixels.js). */
+function sketch01Scene() {
+  const scene = new Scene({ background: [0.85, 0.92, 1], ambient: 0.2 });
+  const spheres = [
+    ['pink', [0, 0, -20], 4, [1, 0.32, 0.36]], ['blue', [7, 1, -30], 3, [0.45, 0.6, 0.95]],
+    ['ground', [0, -10004, -20], 10000, [0.55, 0.55, 0.55]],
+  ];
+  for (const [name, center, radius, color] of spheres) scene.add(Object.assign(new Sphere(center, radius, { color }), { name }));
+  return scene.add(new PointLight([-10, 20, 8]));
+}
 
 describe('labelPlacer', () => {
   // on the stand-in, a character is 0.56 em wide
@@ -73,5 +116,24 @@ describe('labelPlacer', () => {
     const a = labels.put('ground', [[100, 100, 'left']]);
     const b = labels.put('plane', [[a.x + a.w + 2, 100, 'left'], [a.x + a.w + 12, 100, 'left']]); // a box starts 3 px left of its anchor
     expect(b.x - (a.x + a.w)).toBeGreaterThanOrEqual(8);
+  });
+});
+
+describe('side and top views: labels', () => {
+  it('the class scene, every 4th pixel, in the diagram tests\' 440 × 330 box: no label on another or out of the view', () => {
+    const camera = new Camera({ width: 64, height: 48, fov: 30 });
+    expect(sweep(classScene(), camera, { x: 0, y: 0, w: 440, h: 330 }, 4)).toEqual([]);
+  });
+
+  it('the class scene from inside the pink sphere, and before any click', () => {
+    const scene = classScene();
+    const inside = new Camera({ width: 64, height: 48, fov: 30, position: [0, 0, -17], yaw: 60 });
+    expect(sweep(scene, inside, { x: 0, y: 0, w: 440, h: 330 }, 8)).toEqual([]);
+    for (const draw of [drawSideView, drawTopView]) expect(labelFaults(draw, { scene, camera: inside, record: null, x: 0, y: 0, w: 440, h: 330 })).toEqual([]);
+  });
+
+  it('sketch 01\'s scene, every 2nd pixel, in its 600 × 315 boxes: no label on another or out of the view', () => {
+    const camera = new Camera({ width: 32, height: 24, fov: 30 });
+    expect(sweep(sketch01Scene(), camera, { x: 0, y: 325, w: 600, h: 315 }, 2)).toEqual([]);
   });
 });

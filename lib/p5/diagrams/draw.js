@@ -1,9 +1,13 @@
 /** Shared drawing helpers of the diagrams: the card, the world-to-screen mapping, lines, arrows, marks. */
-import { INK, FAINT, PAPER, FONT } from './style.js';
+import { INK, MUTED, FAINT, PAPER, FONT } from './style.js';
 import { label } from './labels.js';
 
-/** A white card with a title; returns the content box under the title. */
-export function panel(p, x, y, w, h, title) {
+/**
+ * A white card with a title, and `note` (in small grey type) at the right
+ * end of the title line when both fit; returns the content box under the
+ * title, with `noteShown`.
+ */
+export function panel(p, x, y, w, h, title, note = null) {
   p.push();
   p.drawingContext.save();
   p.fill(PAPER); p.stroke(FAINT); p.strokeWeight(1);
@@ -11,8 +15,15 @@ export function panel(p, x, y, w, h, title) {
   p.noStroke(); p.fill(INK); p.textFont(FONT); p.textStyle(p.BOLD); p.textSize(15);
   p.textAlign(p.LEFT, p.TOP);
   p.text(title, x + 10, y + 8);
+  const titleWidth = p.textWidth(title);
   p.textStyle(p.NORMAL);
-  return { x: x + 4, y: y + 30, w: w - 8, h: h - 34 };
+  let noteShown = false;
+  if (note) {
+    p.textSize(12);
+    noteShown = 10 + titleWidth + 24 + p.textWidth(note) + 10 <= w;
+    if (noteShown) { p.fill(MUTED); p.textAlign(p.RIGHT, p.TOP); p.text(note, x + w - 10, y + 11); }
+  }
+  return { x: x + 4, y: y + 30, w: w - 8, h: h - 34, noteShown };
 }
 
 export function closePanel(p) {
@@ -24,12 +35,19 @@ export function placeholder(p, content, text) {
   message(p, content, text);
 }
 
+/** `text` on a white card in the middle of `area`. */
 export function message(p, area, text) {
+  const { w, h } = messageBox(), x = area.x + area.w / 2, y = area.y + area.h / 2;
   p.push();
   p.noStroke(); p.fill(255, 255, 255, 200);
-  p.rect(area.x + area.w / 2 - 150, area.y + area.h / 2 - 22, 300, 44, 8);
+  p.rect(x - w / 2, y - h / 2, w, h, 8);
   p.pop();
-  label(p, text, area.x + area.w / 2, area.y + area.h / 2, { color: INK, size: 16, bold: true });
+  label(p, text, x, y, { color: INK, size: 16, bold: true });
+}
+
+/** The size of `message`'s card. */
+export function messageBox() {
+  return { w: 300, h: 44 };
 }
 
 /** World (u, v) → screen with one scale for both axes (v up), fitted to `area`. */

@@ -3,10 +3,13 @@
  * the image plane, the spheres, the lights and the selected ray.
  */
 import { isHuge } from '../../modes.js';
-import { MUTED, RAY, NORMAL } from './style.js';
+import { MUTED, RAY } from './style.js';
 import { fmt } from './format.js';
-import { panel, closePanel, placeholder, message, mapping, clip, unclip, line, arrow, dot, offset, norm2 } from './draw.js';
-import { imagePlane, sphereCircle, hugeArc, shadowRayLine, angleArc, eyeGlyph, lightGlyph, lineKey, axesKey, edgeNote } from './plane-marks.js';
+import { labelPlacer, ON_LABEL, ON_THICK, ON_THIN } from './labels.js';
+import { panel, closePanel, placeholder, message, messageBox, mapping, clip, unclip, dot, offset, norm2 } from './draw.js';
+import {
+  markLine, imagePlane, sphereCircle, hugeArc, shadowRayLine, normalArrow, angleArc, eyeGlyph, lightGlyph, lineKey, axesText, edgeLabel, rayEndNote, toEdge,
+} from './plane-marks.js';
 
 /**
  * The side view: the scene cut along the y–z plane, seen from the right of
@@ -53,82 +56,118 @@ const TOP = {
 
 function drawPlaneView(p, o, view) {
   const { scene, camera, record = null, x, y, w, h } = o;
-  const content = panel(p, x, y, w, h, view.title + (record ? `  ·  pixel ${record.x},${record.y}` : ''));
+  const axes = axesText(view.axes);
+  const content = panel(p, x, y, w, h, view.title + (record ? `  ·  pixel ${record.x},${record.y}` : ''), axes);
   if (!scene || !camera) {
     placeholder(p, content, 'Pass a scene and a camera to draw this view.');
     return closePanel(p);
   }
-  const pr = (q) => ({ u: view.u(q), v: view.v(q) });
-  const eye = pr(camera.position);
-
-  const box = o.bounds ? { ...o.bounds } : fitBounds(scene, record, pr, eye, view.ahead);
   const keyHeight = 26;
   const area = { x: content.x, y: content.y, w: content.w, h: content.h - keyHeight };
+  const pr = (q) => ({ u: view.u(q), v: view.v(q) });
+  const eye = pr(camera.position);
+  const box = o.bounds ? { ...o.bounds } : fitBounds(scene, record, pr, eye, view.ahead);
   const m = mapping(box, area, 0.05);
-  const span = Math.max(box.umax - box.umin, box.vmax - box.vmin);
-  const inArea = (q) => m.sx(q.u) > area.x + 4 && m.sx(q.u) < area.x + area.w - 4 && m.sy(q.v) > area.y + 4 && m.sy(q.v) < area.y + area.h - 4;
+  const v = { p, view, m, pr, eye, box, area, span: Math.max(box.umax - box.umin, box.vmax - box.vmin), labels: labelPlacer(p, area, { spacing: 8 }) };
+  v.ex = m.sx(eye.u); v.ey = m.sy(eye.v);
   clip(p, area);
 
-  // Huge spheres first (the ground), then the frustum and image plane, then spheres.
-  for (const s of scene.spheres) if (isHuge(s)) hugeArc(p, m, pr(s.center), s.radius, eye, s, s === record?.hit?.object);
+  // Every mark first, each kept clear of labels, in drawing order: the
+  // ground, the camera's frustum, the spheres, the lights, the image plane,
+  // the eye, the ray. Each returns its label(s), placed after.
+  const grounds = scene.spheres.filter(isHuge).map((s) => hugeArc(p, m, v.labels, pr(s.center), s.radius, eye, s, s === record?.hit?.object));
+  const { top, bottom } = frustum(v, scene, camera);
+  const spheres = scene.spheres.filter((s) => !isHuge(s) && !s.material.isEmissive)
+    .map((s) => sphereCircle(p, m, v.labels, pr(s.center), s.radius, s, s === record?.hit?.object));
+  const lights = scene.lights.map((light) => lightMark(v, light, record));
+  const plane = imagePlane(p, m, v.labels, top, bottom, camera[view.cells], record ? view.cellOf(record) : null, record?.color, view);
+  const eyeName = eyeGlyph(p, v.labels, v.ex, v.ey);
+  const ray = record ? rayMarks(v, record) : { note: null, angle: null, normal: null };
+  const card = record ? null : placeCard(v.labels, area);
 
-  // The image plane at a display distance: any distance gives the same rays
-  // (similar triangles), so put it between the eye and the nearest sphere.
-  const D = imagePlaneDistance(scene, pr, eye, span);
-  const f = camera.forward, a = camera[view.across], half = camera[view.half] * D;
-  const centre = offset(camera.position, f, D);
-  const top = pr(offset(centre, a, half)), bottom = pr(offset(centre, a, -half));
-  const far = 4 * span;
-  for (const end of [top, bottom]) {
-    const dir = norm2(end.u - eye.u, end.v - eye.v);
-    line(p, m, eye, { u: eye.u + dir.u * far, v: eye.v + dir.v * far }, MUTED, 1.5, [6, 5]);
+  // The labels, most telling first: each takes the free place nearest its mark.
+  const axesLabel = content.noteShown ? null : edgeLabel(area, axes, { color: MUTED, size: 12 });
+  for (const l of [ray.note, eyeName, ray.angle, plane, ray.normal, axesLabel, ...spheres, ...lights, ...grounds]) {
+    if (l) v.labels.put(l.text, l.places, l.style, l);
   }
-  // straight ahead: the axis the angle is measured from
-  line(p, m, eye, { u: eye.u + view.ahead.u * span * 0.35, v: eye.v + view.ahead.v * span * 0.35 }, MUTED, 1, [2, 4]);
-
-  for (const s of scene.spheres) {
-    if (!isHuge(s) && !s.material.isEmissive) sphereCircle(p, m, pr(s.center), s.radius, s, s === record?.hit?.object);
-  }
-  // Lights: drawn where they are, or, when far off the view, as a marker on
-  // its edge in their direction (the shadow rays still point at them).
-  const hitAt = record?.hit ? pr(record.hit.point) : null;
-  for (const light of scene.lights) {
-    const at = pr(light.position), name = light.source?.name || 'light';
-    if (inArea(at)) {
-      if (light.object && !isHuge(light.object)) sphereCircle(p, m, at, light.object.radius, light.object, false);
-      else lightGlyph(p, m.sx(at.u), m.sy(at.v), name);
-    } else {
-      const from = hitAt ?? { u: (box.umin + box.umax) / 2, v: (box.vmin + box.vmax) / 2 };
-      const edge = toEdge(m.sx(from.u), m.sy(from.v), m.sx(at.u), m.sy(at.v), area, 16);
-      lightGlyph(p, edge.x, edge.y, `${name} (off view)`, area);
-    }
-  }
-
-  imagePlane(p, m, top, bottom, camera[view.cells], record ? view.cellOf(record) : null, record?.color, view);
-  eyeGlyph(p, m.sx(eye.u), m.sy(eye.v));
-
-  if (record) {
-    const ray = record.ray, hit = record.hit;
-    const end = hit ? hitAt : pr(offset(ray.origin, ray.direction, far));
-    if (hit) {
-      for (const l of hit.lights) shadowRayLine(p, m, hitAt, pr(l.position), l);
-      arrow(p, m, hitAt, pr(offset(hit.point, hit.normal, 0.1 * span)), NORMAL, 3, 'N');
-    }
-    line(p, m, eye, end, RAY, 3.5, hit ? [] : [10, 6]);
-    if (hit) {
-      dot(p, m.sx(end.u), m.sy(end.v), 5, RAY);
-      if (!inArea(end)) edgeNote(p, area, `hit at t = ${fmt(hit.t)}, off the view →`);
-    } else {
-      edgeNote(p, area, 'no hit: the background colour');
-    }
-    angleArc(p, m, eye, view, pr(offset(ray.origin, ray.direction, 1)), view.angle(record));
-  } else {
-    message(p, area, 'Click a pixel to see its ray');
-  }
+  if (card) message(p, card, 'Click a pixel to see its ray');
   unclip(p);
-  axesKey(p, area, view.axes);
   lineKey(p, { x: content.x, y: content.y + content.h - keyHeight + 4, w: content.w });
   closePanel(p);
+}
+
+/**
+ * The frustum's edges and the straight-ahead axis; returns the image
+ * plane's ends. The image plane sits at a display distance: any distance
+ * gives the same rays (similar triangles), so it goes between the eye and
+ * the nearest sphere.
+ */
+function frustum(v, scene, camera) {
+  const { p, m, labels, pr, eye, span, view } = v;
+  const D = imagePlaneDistance(scene, pr, eye, span);
+  const a = camera[view.across], half = camera[view.half] * D;
+  const centre = offset(camera.position, camera.forward, D);
+  const top = pr(offset(centre, a, half)), bottom = pr(offset(centre, a, -half));
+  for (const end of [top, bottom]) {
+    const dir = norm2(end.u - eye.u, end.v - eye.v);
+    markLine(p, m, labels, eye, { u: eye.u + dir.u * 4 * span, v: eye.v + dir.v * 4 * span }, MUTED, 1.5, [6, 5], ON_THIN);
+  }
+  // straight ahead: the axis the angle is measured from
+  markLine(p, m, labels, eye, { u: eye.u + view.ahead.u * span * 0.35, v: eye.v + view.ahead.v * span * 0.35 }, MUTED, 1, [2, 4], ON_THIN);
+  return { top, bottom };
+}
+
+/**
+ * A light drawn where it is, or, when far off the view, as a marker on its
+ * edge in its direction from the hit (the shadow rays still point at it).
+ */
+function lightMark(v, light, record) {
+  const { p, m, labels, pr, box, area } = v;
+  const at = pr(light.position), name = light.source?.name || 'light';
+  const x = m.sx(at.u), y = m.sy(at.v);
+  if (x > area.x + 4 && x < area.x + area.w - 4 && y > area.y + 4 && y < area.y + area.h - 4) {
+    if (light.object && !isHuge(light.object)) return sphereCircle(p, m, labels, at, light.object.radius, light.object, false);
+    return lightGlyph(p, labels, x, y, name);
+  }
+  const from = record?.hit ? pr(record.hit.point) : { u: (box.umin + box.umax) / 2, v: (box.vmin + box.vmax) / 2 };
+  const edge = toEdge(m.sx(from.u), m.sy(from.v), x, y, area, 16);
+  return lightGlyph(p, labels, edge.x, edge.y, name, area);
+}
+
+/** The ray, its shadow rays, the normal and the angle; returns their labels. */
+function rayMarks(v, record) {
+  const { p, m, labels, pr, eye, span, area, view } = v;
+  const { ray, hit } = record;
+  const end = hit ? pr(hit.point) : pr(offset(ray.origin, ray.direction, 4 * span));
+  const x1 = m.sx(end.u), y1 = m.sy(end.v);
+  let normal = null;
+  if (hit) {
+    for (const l of hit.lights) shadowRayLine(p, m, labels, end, pr(l.position), l);
+    const tip = pr(offset(hit.point, hit.normal, 0.1 * span));
+    normal = normalArrow(p, labels, x1, y1, m.sx(tip.u), m.sy(tip.v));
+  }
+  markLine(p, m, labels, eye, end, RAY, 3.5, hit ? [] : [10, 6], ON_THICK);
+  const inView = x1 > area.x + 4 && x1 < area.x + area.w - 4 && y1 > area.y + 4 && y1 < area.y + area.h - 4;
+  if (hit) {
+    dot(p, x1, y1, 5, RAY);
+    labels.keepClearCircle(x1, y1, 6, ON_LABEL, { disc: true });
+  }
+  const note = !hit ? 'no hit: the background colour' : inView ? null : `hit at t = ${fmt(hit.t)}, off the view →`;
+  const along = pr(ray.direction);
+  return {
+    note: note && rayEndNote(area, v.ex, v.ey, x1, y1, note),
+    angle: angleArc(p, labels, v.ex, v.ey, view, along, view.angle(record)),
+    normal,
+  };
+}
+
+/** Where the card asking for a click goes: the middle, else above, below, at the bottom or top, off the eye and the plane. */
+function placeCard(labels, area) {
+  const { w, h } = messageBox(), mx = area.x + area.w / 2, my = area.y + area.h / 2;
+  const heights = [my, my - area.h / 4, my + area.h / 4, area.y + area.h - h / 2 - 6, area.y + h / 2 + 6];
+  const card = labels.find(w, h, [0, -1, 1].flatMap((k) => heights.map((cy) => [mx + (k * area.w) / 5, cy]))).box;
+  labels.take(card);
+  return card;
 }
 
 /**
@@ -181,17 +220,4 @@ function imagePlaneDistance(scene, pr, eye, span) {
   }
   const D = Number.isFinite(nearest) && nearest > 0 ? 0.4 * nearest : 0.15 * span;
   return Math.min(0.25 * span, Math.max(0.08 * span, D));
-}
-
-/** The point where the segment from (x0, y0) toward (x1, y1) leaves `area` shrunk by `inset`. */
-function toEdge(x0, y0, x1, y1, area, inset) {
-  const left = area.x + inset, right = area.x + area.w - inset, top = area.y + inset, bottom = area.y + area.h - inset;
-  x0 = Math.min(right, Math.max(left, x0)); y0 = Math.min(bottom, Math.max(top, y0));
-  const dx = x1 - x0, dy = y1 - y0;
-  let s = 1;
-  if (dx > 0) s = Math.min(s, (right - x0) / dx);
-  if (dx < 0) s = Math.min(s, (left - x0) / dx);
-  if (dy > 0) s = Math.min(s, (bottom - y0) / dy);
-  if (dy < 0) s = Math.min(s, (top - y0) / dy);
-  return { x: x0 + dx * s, y: y0 + dy * s };
 }
