@@ -1,7 +1,7 @@
 // The diagrams of lib/p5/diagrams.js for the class scene: each canvas draws
 // without console errors, and matches its reference screenshot.
 import { test, expect } from '@playwright/test';
-import { watchConsole, waitForDone } from './helpers.js';
+import { expectCanvasScreenshot, watchConsole, waitForDone } from './helpers.js';
 
 const PAGE = '/tests/e2e/pages/diagrams.html';
 
@@ -37,6 +37,6 @@ for (const [diagram, kase] of CANVASES) {
   test(`${diagram} diagram, ${kase}: matches its screenshot`, async ({ page }) => {
     await page.goto(PAGE);
     await waitForDone(page);
-    await expect(page.locator(`canvas[data-diagram="${diagram}"][data-case="${kase}"]`)).toHaveScreenshot(`diagram-${diagram}-${kase}.png`);
+    await expectCanvasScreenshot(page.locator(`canvas[data-diagram="${diagram}"][data-case="${kase}"]`), `diagram-${diagram}-${kase}.png`);
   });
 }

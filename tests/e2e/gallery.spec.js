@@ -2,7 +2,7 @@
 // console errors, and each traced view matches its reference screenshot.
 import { test, expect } from '@playwright/test';
 import { readdirSync } from 'node:fs';
-import { watchConsole, waitForDone } from './helpers.js';
+import { expectCanvasScreenshot, watchConsole, waitForDone } from './helpers.js';
 
 const sketchPages = readdirSync('sketches').filter((f) => f.endsWith('.html')).sort();
 
@@ -26,7 +26,7 @@ for (const file of sketchPages) {
     for (let i = 0; i < count; i++) {
       const view = views.nth(i);
       expect(Number(await view.getAttribute('data-width'))).toBeGreaterThan(0);
-      await expect(view).toHaveScreenshot(`${file.replace('.html', '')}-view${i}.png`);
+      await expectCanvasScreenshot(view, `${file.replace('.html', '')}-view${i}.png`);
     }
     expect(errors).toEqual([]);
   });

@@ -1,8 +1,11 @@
 /**
- * Shared steps of the browser tests: console-error capture and waiting for
- * the page contract's body[data-render="done"].
+ * Shared steps of the browser tests: console-error capture, waiting for
+ * the page contract's body[data-render="done"], clicking a traced pixel and
+ * screenshots of a canvas.
  */
-import { expect } from '@playwright/test';
+import { test, expect } from '@playwright/test';
+import { readFileSync } from 'node:fs';
+import { PNG } from 'pngjs';
 
 /**
  * Collects console errors, warnings and logs (p5's friendly errors are logs)
@@ -42,4 +45,50 @@ export async function clickPixel(canvas, x, y) {
   const width = Number(await canvas.getAttribute('data-width'));
   const height = Number(await canvas.getAttribute('data-height'));
   await canvas.click({ position: { x: ((x + 0.5) * box.width) / width, y: ((y + 0.5) * box.height) / height } });
+}
+
+/**
+ * Matches a canvas against its reference screenshot, capturing exactly the
+ * screen pixels the canvas covers, then checks that the reference holds the
+ * canvas's own pixels and nothing else. Use it for every canvas screenshot.
+ *
+ * Why not expect(canvas).toHaveScreenshot: Chromium paints a canvas at its
+ * rounded position, but an element screenshot rounds its clip outwards, so a
+ * canvas at a fractional y (text of fractional height above it) would gain a
+ * row of the frame around it. Snapping the clip here holds wherever the page
+ * puts the canvas; the check makes any capture that is not the canvas fail.
+ */
+export async function expectCanvasScreenshot(canvas, name) {
+  const page = canvas.page();
+  await page.evaluate(() => document.fonts.ready); // late fonts would move the canvas after we measure
+  await canvas.scrollIntoViewIfNeeded();
+  const { clip, cssWidth, cssHeight } = await canvas.evaluate(paintedClip);
+  await expect(page).toHaveScreenshot(name, { clip });
+  const reference = PNG.sync.read(readFileSync(test.info().snapshotPath(name, { kind: 'screenshot' })));
+  expect([reference.width, reference.height], `${name} is the canvas's CSS size`).toEqual([cssWidth, cssHeight]);
+  const own = PNG.sync.read(Buffer.from((await canvas.evaluate((c) => c.toDataURL('image/png'))).split(',')[1], 'base64'));
+  expect(firstForeignRow(reference, own), `${name}: first row that is not the canvas's pixels`).toBe(-1);
+}
+
+/** In the page: the screen pixels the canvas is painted on (its edges rounded, as Chromium paints it). */
+function paintedClip(canvas) {
+  const r = canvas.getBoundingClientRect();
+  const x = Math.round(r.left), y = Math.round(r.top);
+  return { clip: { x, y, width: Math.round(r.right) - x, height: Math.round(r.bottom) - y }, cssWidth: r.width, cssHeight: r.height };
+}
+
+/**
+ * The first row of a screenshot that differs from the canvas's own pixels
+ * (each a scale × scale block on screen), or -1 when every row matches.
+ */
+function firstForeignRow(shot, own) {
+  const scale = shot.width / own.width;
+  expect(Number.isInteger(scale) && shot.height === own.height * scale, 'a whole number of screen pixels per canvas pixel').toBe(true);
+  for (let y = 0; y < shot.height; y++) {
+    for (let x = 0; x < shot.width; x++) {
+      const s = (y * shot.width + x) * 4, o = (Math.floor(y / scale) * own.width + Math.floor(x / scale)) * 4;
+      for (let k = 0; k < 4; k++) if (shot.data[s + k] !== own.data[o + k]) return y;
+    }
+  }
+  return -1;
 }

@@ -4,7 +4,7 @@
 // selection, body[data-render] follows every (re)render, and the canvas
 // holds the traced picture only.
 import { test, expect } from '@playwright/test';
-import { clickPixel, expectQuietConsole, waitForDone } from './helpers.js';
+import { clickPixel, expectCanvasScreenshot, expectQuietConsole, waitForDone } from './helpers.js';
 
 const PAGE = '/tests/e2e/pages/inspector.html';
 const WIDTH = 64, HEIGHT = 48;
@@ -213,11 +213,11 @@ test('Copy CSV puts the pixel\'s table in the panel (header + one row per sphere
 test('the traced canvas screenshot holds the picture only (no grid, no crosshair)', async ({ page }) => {
   await open(page, '?scale=8');
   const canvas = page.locator('canvas[data-tracer]');
-  await expect(canvas).toHaveScreenshot('class-scene-64x48.png');
+  await expectCanvasScreenshot(canvas, 'class-scene-64x48.png');
   // With the grid and a selection the overlay draws on top; hidden, the picture beneath is unchanged.
   await page.evaluate(() => { window.view.setGrid(true); window.view.select(40, 30); });
   await page.addStyleTag({ content: '[data-overlay] { visibility: hidden !important; }' });
-  await expect(canvas).toHaveScreenshot('class-scene-64x48.png');
+  await expectCanvasScreenshot(canvas, 'class-scene-64x48.png');
 });
 
 /** In the page: does the data-tracer canvas hold exactly render(scene, camera)? */

@@ -1,7 +1,7 @@
 // Every visual mode of the tracer view, on the class scene: a reference
 // screenshot of the traced canvas, its legend shown, and no console errors.
 import { test, expect } from '@playwright/test';
-import { watchConsole, waitForDone } from './helpers.js';
+import { expectCanvasScreenshot, watchConsole, waitForDone } from './helpers.js';
 import { MODES } from '../../lib/modes.js';
 
 for (const { name } of MODES) {
@@ -12,7 +12,7 @@ for (const { name } of MODES) {
     const canvas = page.locator('[data-tracer]');
     await expect(canvas).toHaveAttribute('data-width', '64');
     if (name !== 'shaded') await expect(page.locator('.rt-legend')).toBeVisible();
-    await expect(canvas).toHaveScreenshot(`mode-${name}.png`);
+    await expectCanvasScreenshot(canvas, `mode-${name}.png`);
     expect(errors).toEqual([]);
   });
 }

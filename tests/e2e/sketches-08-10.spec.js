@@ -2,7 +2,7 @@
 // "not yet" on the starter, listing what fails, and "passed" on the reference
 // solution (?solution=1); the playground traces and its inspector answers.
 import { test, expect } from '@playwright/test';
-import { clickPixel, watchConsole, waitForDone } from './helpers.js';
+import { clickPixel, expectCanvasScreenshot, watchConsole, waitForDone } from './helpers.js';
 
 const HOMEWORK = [
   {
@@ -58,7 +58,7 @@ for (const hw of HOMEWORK) {
       await expect(results.locator('.hw-headline')).toHaveText(/^Passed!/);
       await expect(results.locator('[data-check-item="passed"]')).toHaveCount(hw.checks);
       await expect(results.locator('[data-check-item]:not([data-check-item="passed"])')).toHaveCount(0);
-      await expect(page.locator('[data-tracer]')).toHaveScreenshot(`${hw.page.replace('.html', '')}-solution.png`);
+      await expectCanvasScreenshot(page.locator('[data-tracer]'), `${hw.page.replace('.html', '')}-solution.png`);
       expect(errors).toEqual([]);
     });
 
