@@ -3,7 +3,8 @@
  * Vite dev server's unbundled modules instead of a production build).
  *
  * Builds bench/browser/bench.html with `vite build` into a temporary folder,
- * serves it with `vite preview` on port 5178 (stopped at the end by its PID),
+ * serves it with `vite preview` on port 5178, or BENCH_PORT / `--port N`
+ * (stopped at the end by its PID),
  * and drives headless Chromium (@playwright/test, the browser that
  * scripts/find-browser.js finds) through three measurements:
  *   1. the class scene at 640×480 traced progressively in a tracer view
@@ -18,7 +19,8 @@
  * Times are printed, never asserted; the exit code is 1 only when something
  * is broken (a page error, a picture that differs, no browser).
  *
- * Options: --dev (the dev server instead of build + preview); BENCH_TRACE=file
+ * Options: --dev (the dev server instead of build + preview); --port N or
+ * BENCH_PORT=N (the server's port, default 5178); BENCH_TRACE=file
  * writes the Chromium trace of part 1 (open it in ui.perfetto.dev), and
  * BENCH_TRACE_CATEGORIES=devtools.timeline,v8 adds detail to it.
  *
@@ -49,7 +51,7 @@ import { join, resolve } from 'node:path';
 import { chromium } from '@playwright/test';
 import { findBrowser, HOW_TO_GET_ONE } from '../scripts/find-browser.js';
 
-const PORT = 5178;
+const PORT = port(option('--port') ?? process.env.BENCH_PORT);
 const ROOT = resolve(import.meta.dirname, '..');
 const PAGE = 'bench/browser/bench.html';
 const DEV = process.argv.includes('--dev');
@@ -67,6 +69,18 @@ const quantile = (values, q) => {
   const sorted = [...values].sort((a, b) => a - b);
   return sorted[Math.min(sorted.length - 1, Math.floor(q * sorted.length))];
 };
+/** The value after `name` on the command line, or undefined. */
+function option(name) {
+  const i = process.argv.indexOf(name);
+  return i >= 0 ? process.argv[i + 1] : undefined;
+}
+/** The server's port: the one asked for (a whole number 1–65535), else 5178. */
+function port(asked) {
+  if (asked === undefined || asked === '') return 5178;
+  const n = Number(asked);
+  if (!Number.isInteger(n) || n < 1 || n > 65535) throw new RangeError(`port must be a whole number from 1 to 65535, got ${JSON.stringify(asked)}`);
+  return n;
+}
 const ms = (value) => (Number.isFinite(value) ? value.toFixed(1) : '–');
 
 /* ---------------- server ---------------- */
