@@ -1,12 +1,27 @@
 /**
- * 3-vectors as plain `{x, y, z}` objects, gl-matrix style: every function that
+ * 3-vectors as objects with x, y, z (Vec3), gl-matrix style: every function that
  * makes a vector writes into an `out` argument, so hot loops allocate nothing.
  */
 import { finiteNumber, show } from './check.js';
 
+/**
+ * A vector's fields. A class, not a `{ x, y, z }` literal, on purpose: V8
+ * gives every literal with the same keys one shared hidden class, so a single
+ * literal anywhere on the page holding a non-number in x, y or z (importing
+ * p5 2.3 is enough) turns those fields into "any value", and then every
+ * coordinate written allocates a boxed number: rendering on the page's main
+ * thread ran 2.5–4× slower than in a worker. A class's instances share their
+ * hidden class with no one else's objects.
+ */
+export class Vec3 {
+  constructor(x = 0, y = 0, z = 0) {
+    this.x = x; this.y = y; this.z = z;
+  }
+}
+
 /** A new vector. */
 export function vec3(x = 0, y = 0, z = 0) {
-  return { x, y, z };
+  return new Vec3(x, y, z);
 }
 
 /** out = (x, y, z). */
