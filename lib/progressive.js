@@ -7,9 +7,12 @@
  *   'slow'     scanline order, a fixed number of rays per step, so a diagram
  *              can follow the current ray.
  * Every pixel is traced exactly once, by the same shader as `render`, so the
- * finished buffer is byte for byte `render(scene, camera)`'s.
+ * finished buffer is byte for byte `render(scene, camera)`'s; with that
+ * default shader, each primary ray is tested only against its tile's
+ * candidate shapes, as `render` does (lib/bounds.js).
  */
 import { renderPixel } from './render.js';
+import { tileCandidates, TILE } from './bounds.js';
 import { positiveInteger, finiteNumber, show } from './check.js';
 
 /** The render orders a ProgressiveRenderer knows. */
@@ -30,6 +33,8 @@ export class ProgressiveRenderer {
   #traced = 0;
   #tracingMs = 0;
   #done = false;
+  /** The default shader's per-tile candidate shapes, `{ columns, lists }`; null for another shader. */
+  #tiles = null;
 
   /**
    * @param {object} options
@@ -82,6 +87,7 @@ export class ProgressiveRenderer {
     const size = this.width * this.height * 4;
     if (this.buffer?.length === size) this.buffer.fill(0); // alpha 0: not traced yet
     else this.buffer = new Uint8ClampedArray(size);
+    this.#tiles = shader === renderPixel ? tileCandidates(scene, camera) : null;
 
     this.#passes = mode === 'coarse' ? COARSE_PASSES : FULL_RESOLUTION;
     this.#passIndex = 0;
@@ -158,8 +164,13 @@ export class ProgressiveRenderer {
 
   /** Traces one pixel with the shader and, in a coarse pass, paints its whole block. */
   #tracePixel(x, y) {
-    const buffer = this.buffer, width = this.width;
-    this.shader(this.scene, this.camera, x, y, buffer);
+    const buffer = this.buffer, width = this.width, tiles = this.#tiles;
+    if (tiles) {
+      const objects = tiles.lists[Math.floor(y / TILE) * tiles.columns + Math.floor(x / TILE)];
+      renderPixel(this.scene, this.camera, x, y, buffer, objects);
+    } else {
+      this.shader(this.scene, this.camera, x, y, buffer);
+    }
     const size = this.#passes[this.#passIndex];
     if (size === 1) return;
     const i = (y * width + x) * 4;

@@ -43,11 +43,14 @@ function renderTile(scene, camera, target, objects, x0, y0, x1, y1) {
   }
 }
 
-/** Traces pixel (x, y) and writes its RGBA bytes into `target` at the pixel's place. */
-export function renderPixel(scene, camera, x, y, target) {
+/**
+ * Traces pixel (x, y) and writes its RGBA bytes into `target` at the pixel's place.
+ * @param {object[]} [objects=scene.objects] the shapes its ray may hit: all, or its tile's candidates (the same colour)
+ */
+export function renderPixel(scene, camera, x, y, target, objects = scene.objects) {
   copy(_ray.origin, camera.position);
   camera.directionAt(x, y, _ray.direction);
-  trace(scene, _ray, _color);
+  trace(scene, _ray, _color, undefined, 0, objects);
   writePixel(target, (y * camera.width + x) * 4, _color);
 }
 

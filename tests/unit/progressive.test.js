@@ -52,6 +52,57 @@ describe('ProgressiveRenderer: the finished picture is render()\'s, byte for byt
   }
 });
 
+describe('with the default shader, each primary ray meets only its tile\'s candidate shapes, as in render()', () => {
+  /** Counts every ray–shape test the scene's shapes make. */
+  function countTests(scene) {
+    const counter = { tests: 0 };
+    for (const object of scene.objects) {
+      const hit = object.hit;
+      object.hit = function (...args) { counter.tests++; return hit.apply(this, args); };
+    }
+    return counter;
+  }
+
+  it('finishes with render()\'s picture, byte for byte, in every mode', () => {
+    for (const scene of Object.values(SCENES)) {
+      for (const [width, height] of [...SIZES, [64, 48]]) {
+        const camera = new Camera({ width, height, fov: 50, position: [-1, 2, 1], yaw: 8, pitch: -10 });
+        const expected = render(scene, camera);
+        for (const mode of MODES) {
+          const p = new ProgressiveRenderer({ scene, camera, mode, slowRaysPerStep: 7 });
+          expect(finish(p, 0)).toEqual(expected);
+        }
+      }
+    }
+  });
+
+  it('makes exactly the ray–shape tests render() makes; another shader tests every shape', () => {
+    const scene = classScene(), camera = new Camera({ width: 64, height: 48, pitch: -3 });
+    const counter = countTests(scene);
+    render(scene, camera);
+    const byRender = counter.tests;
+    for (const mode of MODES) {
+      counter.tests = 0;
+      finish(new ProgressiveRenderer({ scene, camera, mode, slowRaysPerStep: 100 }), 1e9);
+      expect(counter.tests).toBe(byRender);
+    }
+    counter.tests = 0;
+    const shader = (...args) => renderPixel(...args); // the same colours, but not the default shader
+    finish(new ProgressiveRenderer({ scene, camera, shader }), 1e9);
+    expect(counter.tests).toBeGreaterThan(byRender + 64 * 48);
+  });
+
+  it('a scene changed in place traces anew on restart(), with its new shapes', () => {
+    const scene = classScene(), camera = new Camera({ width: 40, height: 30 });
+    const p = new ProgressiveRenderer({ scene, camera });
+    finish(p, 0);
+    scene.add(new Sphere([-2, 2, -12], 1, { color: 'orange' }));
+    scene.objects[1].center.x = 3; // the pink sphere moves right
+    p.restart();
+    expect(finish(p, 0)).toEqual(render(scene, camera));
+  });
+});
+
 describe('coarse passes', () => {
   const scene = classScene();
 
