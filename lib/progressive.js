@@ -28,8 +28,14 @@ export const CHECK_EVERY = 16;
 export class ProgressiveRenderer {
   #passes = COARSE_PASSES;
   #passIndex = 0;
+  /** The pass's block size, and the step from one traced pixel of the row to the next. */
+  #size = 1;
+  #stride = 1;
+  /** The next pixel to trace, and the one traced last. */
   #x = 0;
   #y = 0;
+  #lastX = 0;
+  #lastY = 0;
   #traced = 0;
   #tracingMs = 0;
   #done = false;
@@ -91,13 +97,14 @@ export class ProgressiveRenderer {
 
     this.#passes = mode === 'coarse' ? COARSE_PASSES : FULL_RESOLUTION;
     this.#passIndex = 0;
+    this.#size = this.#passes[0];
     this.#y = 0;
-    this.#x = this.#rowStart(0);
+    this.#startRow();
     this.#traced = 0;
     this.#tracingMs = 0;
     this.#done = false;
     this.current = null;
-    this.#seek();
+    this.#nextRow(); // a row with nothing to trace (1 px wide, later passes): on to one with something
     return this;
   }
 
@@ -111,21 +118,15 @@ export class ProgressiveRenderer {
   step(budgetMs = this.budgetMs) {
     budget(budgetMs, 'budgetMs');
     if (this.#done) return { changed: false, done: true };
-    const slow = this.mode === 'slow';
+    const slow = this.mode === 'slow', perStep = this.slowRaysPerStep;
     const start = this.now();
-    let count = 0, x = 0, y = 0;
-    while (!this.#done) {
-      x = this.#x; y = this.#y;
-      this.#tracePixel(x, y);
-      count++;
-      this.#advance();
-      if (slow) {
-        if (count === this.slowRaysPerStep) break;
-      } else if (count % CHECK_EVERY === 0 && this.now() - start >= budgetMs) break;
-    }
+    let count = 0;
+    do {
+      count += this.#traceRun(slow ? perStep - count : CHECK_EVERY);
+    } while (!this.#done && (slow ? count < perStep : this.now() - start < budgetMs));
     this.#tracingMs += this.now() - start;
     this.#traced += count;
-    if (this.mode !== 'coarse') this.current = { x, y };
+    if (this.mode !== 'coarse') this.current = { x: this.#lastX, y: this.#lastY };
     return { changed: true, done: this.#done };
   }
 
@@ -162,17 +163,40 @@ export class ProgressiveRenderer {
     return this.#done ? this.height : this.#y;
   }
 
+  /**
+   * Traces the next n pixels in this render's order (fewer when the picture
+   * is done first), a row's run at a time; returns how many it traced.
+   */
+  #traceRun(n) {
+    let traced = 0;
+    while (traced < n && !this.#done) {
+      const y = this.#y, size = this.#size, stride = this.#stride;
+      const end = Math.min(this.width, this.#x + (n - traced) * stride);
+      let x = this.#x;
+      for (; x < end; x += stride, traced++) this.#tracePixel(x, y, size);
+      this.#lastX = x - stride;
+      this.#lastY = y;
+      this.#x = x;
+      if (x >= this.width) this.#nextRow();
+    }
+    return traced;
+  }
+
   /** Traces one pixel with the shader and, in a coarse pass, paints its whole block. */
-  #tracePixel(x, y) {
-    const buffer = this.buffer, width = this.width, tiles = this.#tiles;
+  #tracePixel(x, y, size) {
+    const tiles = this.#tiles;
     if (tiles) {
       const objects = tiles.lists[Math.floor(y / TILE) * tiles.columns + Math.floor(x / TILE)];
-      renderPixel(this.scene, this.camera, x, y, buffer, objects);
+      renderPixel(this.scene, this.camera, x, y, this.buffer, objects);
     } else {
-      this.shader(this.scene, this.camera, x, y, buffer);
+      this.shader(this.scene, this.camera, x, y, this.buffer);
     }
-    const size = this.#passes[this.#passIndex];
-    if (size === 1) return;
+    if (size > 1) this.#paintBlock(x, y, size);
+  }
+
+  /** Gives the size × size block at (x, y) (cut at the edges) the colour of pixel (x, y). */
+  #paintBlock(x, y, size) {
+    const buffer = this.buffer, width = this.width;
     const i = (y * width + x) * 4;
     const r = buffer[i], g = buffer[i + 1], b = buffer[i + 2], a = buffer[i + 3];
     const right = Math.min(x + size, width), bottom = Math.min(y + size, this.height);
@@ -184,26 +208,20 @@ export class ProgressiveRenderer {
   }
 
   /**
-   * First x of row y in the current pass. A later pass skips the pixels an
+   * Where row #y starts and how it steps. A later pass skips the pixels an
    * earlier one traced: on rows that are multiples of 2·size, every other one.
    */
-  #rowStart(y) {
-    const size = this.#passes[this.#passIndex];
-    return this.#passIndex > 0 && y % (2 * size) === 0 ? size : 0;
-  }
-
-  /** Moves to the next pixel of this pass's pattern. */
-  #advance() {
-    const size = this.#passes[this.#passIndex];
+  #startRow() {
+    const size = this.#size;
     const skipping = this.#passIndex > 0 && this.#y % (2 * size) === 0;
-    this.#x += skipping ? 2 * size : size;
-    this.#seek();
+    this.#x = skipping ? size : 0;
+    this.#stride = skipping ? 2 * size : size;
   }
 
   /** Moves on from a finished row, or pass, to the next pixel there is (or to done). */
-  #seek() {
+  #nextRow() {
     while (this.#x >= this.width) {
-      this.#y += this.#passes[this.#passIndex];
+      this.#y += this.#size;
       if (this.#y >= this.height) {
         if (this.#passIndex === this.#passes.length - 1) {
           this.#done = true;
@@ -212,9 +230,10 @@ export class ProgressiveRenderer {
           return;
         }
         this.#passIndex++;
+        this.#size = this.#passes[this.#passIndex];
         this.#y = 0;
       }
-      this.#x = this.#rowStart(this.#y);
+      this.#startRow();
     }
   }
 }
