@@ -36,6 +36,8 @@ export class ProgressiveRenderer {
   #y = 0;
   #lastX = 0;
   #lastY = 0;
+  /** The buffer as one 32-bit word per pixel: a coarse block is painted a word, not four bytes, at a time (the bytes move together, whatever the byte order). */
+  #words = null;
   #traced = 0;
   #tracingMs = 0;
   #done = false;
@@ -92,7 +94,10 @@ export class ProgressiveRenderer {
     this.height = camera.height;
     const size = this.width * this.height * 4;
     if (this.buffer?.length === size) this.buffer.fill(0); // alpha 0: not traced yet
-    else this.buffer = new Uint8ClampedArray(size);
+    else {
+      this.buffer = new Uint8ClampedArray(size);
+      this.#words = new Uint32Array(this.buffer.buffer);
+    }
     this.#tiles = shader === renderPixel ? tileCandidates(scene, camera) : null;
 
     this.#passes = mode === 'coarse' ? COARSE_PASSES : FULL_RESOLUTION;
@@ -196,14 +201,11 @@ export class ProgressiveRenderer {
 
   /** Gives the size × size block at (x, y) (cut at the edges) the colour of pixel (x, y). */
   #paintBlock(x, y, size) {
-    const buffer = this.buffer, width = this.width;
-    const i = (y * width + x) * 4;
-    const r = buffer[i], g = buffer[i + 1], b = buffer[i + 2], a = buffer[i + 3];
+    const words = this.#words, width = this.width;
+    const color = words[y * width + x];
     const right = Math.min(x + size, width), bottom = Math.min(y + size, this.height);
     for (let by = y; by < bottom; by++) {
-      for (let j = (by * width + x) * 4, end = (by * width + right) * 4; j < end; j += 4) {
-        buffer[j] = r; buffer[j + 1] = g; buffer[j + 2] = b; buffer[j + 3] = a;
-      }
+      for (let i = by * width + x, end = by * width + right; i < end; i++) words[i] = color;
     }
   }
 
