@@ -22,7 +22,11 @@ export const MODES = ['coarse', 'scanline', 'slow'];
 export const COARSE_PASSES = [16, 8, 4, 2, 1];
 const FULL_RESOLUTION = [1];
 
-/** Pixels traced between two looks at the clock: reading it costs more than a cheap pixel. */
+/**
+ * Pixels traced before the first look at the clock in a step, and at least
+ * between two looks: reading it costs more than a cheap pixel (about 1 µs in
+ * Chromium, whose clock moves only every 100 µs or so anyway).
+ */
 export const CHECK_EVERY = 16;
 
 export class ProgressiveRenderer {
@@ -114,21 +118,17 @@ export class ProgressiveRenderer {
   }
 
   /**
-   * Traces until `budgetMs` is spent (the clock is read every CHECK_EVERY
-   * pixels, so a step may run over by a few pixels and always makes progress);
-   * in 'slow' mode traces exactly `slowRaysPerStep` pixels whatever the budget.
+   * Traces until `budgetMs` is spent (see #traceFor: a step may run over by
+   * a few pixels and always makes progress); in 'slow' mode traces exactly
+   * `slowRaysPerStep` pixels whatever the budget.
    * @param {number} [budgetMs=this.budgetMs]
    * @returns {{ changed: boolean, done: boolean }} changed: some pixel was traced
    */
   step(budgetMs = this.budgetMs) {
     budget(budgetMs, 'budgetMs');
     if (this.#done) return { changed: false, done: true };
-    const slow = this.mode === 'slow', perStep = this.slowRaysPerStep;
     const start = this.now();
-    let count = 0;
-    do {
-      count += this.#traceRun(slow ? perStep - count : CHECK_EVERY);
-    } while (!this.#done && (slow ? count < perStep : this.now() - start < budgetMs));
+    const count = this.mode === 'slow' ? this.#traceRun(this.slowRaysPerStep) : this.#traceFor(budgetMs, start);
     this.#tracingMs += this.now() - start;
     this.#traced += count;
     if (this.mode !== 'coarse') this.current = { x: this.#lastX, y: this.#lastY };
@@ -166,6 +166,25 @@ export class ProgressiveRenderer {
   get pass() {
     if (this.mode === 'coarse') return this.#passes[this.#passIndex];
     return this.#done ? this.height : this.#y;
+  }
+
+  /**
+   * Traces until `budgetMs` have passed since `start`; returns how many pixels
+   * it traced. The clock is read after CHECK_EVERY pixels, then after runs of
+   * a quarter of the pixels that the pace so far says still fit (CHECK_EVERY
+   * at least; twice the last run while the clock has not moved): a few dozen
+   * reads a step instead of one every CHECK_EVERY pixels, and a quarter leaves
+   * room for pixels up to four times dearer than the average so far.
+   */
+  #traceFor(budgetMs, start) {
+    let count = 0, run = CHECK_EVERY;
+    while (!this.#done) {
+      count += this.#traceRun(run);
+      const elapsed = this.now() - start;
+      if (elapsed >= budgetMs) break;
+      run = elapsed > 0 ? Math.max(CHECK_EVERY, Math.floor((count * (budgetMs - elapsed)) / elapsed / 4)) : 2 * run;
+    }
+    return count;
   }
 
   /**

@@ -328,11 +328,56 @@ describe('the time budget (a fake clock)', () => {
     expect(q.traced).toBe(48);
   });
 
-  it('reads the clock every few pixels, not every pixel', () => {
-    const { p, clock } = timed('scanline', 0.01);
-    p.step(5); // 500 pixels' worth
-    expect(p.traced).toBeGreaterThanOrEqual(500);
-    expect(clock.reads).toBeLessThanOrEqual(p.traced / CHECK_EVERY + 2);
+  /**
+   * Steps a 320×240 render to the end on a fake clock, pixel (x, y) costing
+   * `cost(x, y)` ms, the clock as `read` shows it; returns each step's time
+   * on the true clock and its number of clock reads.
+   */
+  function steps(mode, budgetMs, cost, read = (t) => t) {
+    const camera = new Camera({ width: 320, height: 240 });
+    const clock = { t: 0, reads: 0 };
+    const shader = (s, c, x, y, target) => { clock.t += cost(x, y); renderPixel(s, c, x, y, target); };
+    const now = () => { clock.reads++; return read(clock.t); };
+    const p = new ProgressiveRenderer({ scene, camera, mode, shader, now });
+    const seen = [];
+    while (!p.done) {
+      const t0 = clock.t, reads = clock.reads;
+      p.step(budgetMs);
+      if (!p.done) seen.push({ ms: clock.t - t0, reads: clock.reads - reads });
+    }
+    return seen;
+  }
+
+  it('reads the clock a few dozen times a step, not every few pixels, and stops within CHECK_EVERY pixels of the budget', () => {
+    for (const mode of ['coarse', 'scanline']) {
+      const seen = steps(mode, 8, () => 0.001); // 8,000 pixels a step
+      expect(seen.length).toBeGreaterThan(5);
+      for (const { ms, reads } of seen) {
+        expect(ms).toBeGreaterThanOrEqual(8);
+        expect(ms).toBeLessThanOrEqual(8 + CHECK_EVERY * 0.001 + 1e-9);
+        expect(reads).toBeLessThan(40);
+      }
+    }
+  });
+
+  it('stays within its budget when the pixels get four times dearer in the middle of a step', () => {
+    for (const mode of ['coarse', 'scanline']) {
+      // The lower half of the picture costs four times the upper half, per pixel.
+      const seen = steps(mode, 8, (x, y) => (y < 120 ? 0.001 : 0.004));
+      for (const { ms } of seen) expect(ms).toBeLessThanOrEqual(8 + CHECK_EVERY * 0.004 + 1e-9);
+    }
+  });
+
+  it('copes with a clock that moves only every 0.1 ms, as a browser\'s may', () => {
+    const tick = 0.1;
+    for (const mode of ['coarse', 'scanline']) {
+      const seen = steps(mode, 8, () => 0.001, (t) => Math.floor(t / tick) * tick);
+      for (const { ms, reads } of seen) {
+        expect(ms).toBeGreaterThanOrEqual(8 - tick);
+        expect(ms).toBeLessThanOrEqual(8 + tick + CHECK_EVERY * 0.001);
+        expect(reads).toBeLessThan(40);
+      }
+    }
   });
 
   it('measures rays per second over the time spent tracing', () => {
