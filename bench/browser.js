@@ -25,24 +25,37 @@
  * BENCH_TRACE_CATEGORIES=devtools.timeline,v8 adds detail to it.
  *
  * Measured (production build, Chromium 156 headless, 2 cores shared with other
- * jobs: load average 2–5, so wall-clock times are stretched; medians):
- *   1. 640×480 progressive: ~60 frames, done ~1.05 s after the first step;
- *      step() 8.0 ms (p90 10, max 17: the first, cold frames), draw() 8.5 ms,
- *      blit + progress bar 0.5 ms, frame to frame 16.7 ms (p90 25).
- *      Main-thread tasks over 16 ms while rendering: 13 by the wall clock
- *      (longest 34 ms) but 2 by CPU time (longest 18.6 ms): the others waited
- *      for a core. Page load: one 226 ms task (module evaluation; 118 ms CPU).
- *      Long Tasks API (> 50 ms only): 0 while rendering.
+ * jobs: load average 5–7, so wall-clock times are stretched; medians of three
+ * runs each unless said):
+ *   1. 640×480 progressive: 22–25 frames, done 0.49–0.59 s after the first
+ *      step; step() 8.0–8.3 ms (p90 11–15, max 14–27 by the wall clock),
+ *      draw() 8.7–9.3 ms, blit + progress bar 0.5–0.6 ms, frame to frame
+ *      17–18 ms (p90 28–44).
+ *      Main-thread tasks over 16 ms while rendering: 9–14 by the wall clock
+ *      (longest 35–42 ms) but 1 by CPU time (18–20 ms; two runs had CPU
+ *      times): the others waited for a core. Page load: one 175–466 ms task
+ *      (module evaluation; 119–136 ms CPU). Long Tasks API (> 50 ms only):
+ *      0 while rendering.
+ *      In the same runs before lib/vec3.js made vectors Vec3 instances (see
+ *      part 3) and before the progressive renderer used render()'s tile
+ *      lists, traced a row's run per loop and read the clock a few dozen
+ *      times a step: 44–63 frames, done 0.76–1.26 s after the first step.
  *      Before lib/p5/tracer-view.js turned off p5's sketch checker, a built
  *      page had one 1.0–1.4 s task about 200 ms into the render: p5 fetched
  *      the page's last script (the whole bundle) and parsed it.
  *   2. change → first coarse preview: 13.6 ms to the blit, 16.6 ms to the
  *      frame's paint (max 19) from an input event; 16.4 / 19.1 ms (max 29)
- *      from the sketch's draw(). Target 100 ms: met.
- *   3. whole frame 640×480: render() on the main thread 243 ms, 1 worker
- *      67 ms, 2 workers 58 ms (first frames, workers starting: 191 / 226 ms);
- *      2 workers over 1: 1.16× on a loaded machine (1.6× in a quieter run:
- *      104 → 64 ms). Pictures identical to render(). Target 1 s: met.
+ *      from the sketch's draw(). Target 100 ms: met. (From an earlier,
+ *      quieter run: at load 5–12 these medians moved by ±5 ms run to run.)
+ *   3. whole frame 640×480: render() on the main thread 85–100 ms, 1 worker
+ *      61–103 ms, 2 workers 61–93 ms (first frames, workers starting:
+ *      229–472 ms); the three cases share two busy cores, so the workers'
+ *      speed-ups vary (2 over 1: 1.0–1.7×). Pictures identical to render().
+ *      Target 1 s: met. render() on the main thread used to take 227–270 ms,
+ *      1.9–2.4× one worker's time: V8 shares one hidden class among all
+ *      `{ x, y, z }` literals on a page, and with p5 imported that class's
+ *      fields held non-numbers, so every coordinate the tracer wrote was a
+ *      newly allocated boxed number. Vectors are Vec3 instances now.
  */
 import { spawn } from 'node:child_process';
 import { mkdtempSync, rmSync, writeFileSync } from 'node:fs';
