@@ -6,23 +6,20 @@
  *   createSliderField(p, panel, { name: 'r', label: 'Radius r', min: 0.5, max: 12, step: 0.5, value: 4,
  *     use: (r) => view.setScene(sceneWith(r)) }); // use() throws for a value it cannot take
  *
- * readTypedNumber and fieldMessage need no page.
+ * The text box is read by readNumber, as every value box of the sketchbook
+ * is; fieldMessage needs no page.
  */
-
-/** The number typed in a text box, else a TypeError: empty or "abc" is no number. */
-export function readTypedNumber(text) {
-  const value = text.trim() === '' ? NaN : Number(text);
-  if (!Number.isFinite(value)) throw new TypeError(`must be a number, got "${text}"`);
-  return value;
-}
+import { readNumber } from './scene-form.js';
 
 /**
  * The line under a field with a bad value: its label, what is wrong, and that
- * the picture stays. The library's messages start with the field's own name
- * ("radius must be …"): the label says it better, so the name goes.
+ * the picture stays. readNumber's messages start with the label already; the
+ * library's start with the field's own name ("radius must be …"): the label
+ * says it better, so the name goes.
  */
 export function fieldMessage(label, error) {
-  return `${label}: ${error.message.replace(/^\S+ (?=must )/, '')}. The picture keeps the last good value.`;
+  const what = error.message.startsWith(label) ? error.message : `${label}: ${error.message.replace(/^\S+ (?=must )/, '')}`;
+  return `${what}. The picture keeps the last good value.`;
 }
 
 /**
@@ -47,7 +44,7 @@ export function createSliderField(p, parent, { name, label, min, max, step, valu
   /** Uses the number in `text`: the number, or undefined after saying why not. */
   const tryUse = (text) => {
     try {
-      const number = readTypedNumber(text);
+      const number = readNumber(text, label);
       use(number);
       message.html('');
       textBox.attribute('aria-invalid', 'false');
