@@ -14,6 +14,6 @@ export { Animation, FrameCounter, framesPerSecond, statsLine, readWorkerCount, s
 export { createAnswerForm, readBoxes } from './answer-form.js';
 export { createPixelMarks, createPixelHighlight, findPixels } from './pixel-marks.js';
 // Controls a sketch builds its page from: slider fields, a panel of switches, a picker of examples:
-export { createSliderField, readTypedNumber, fieldMessage } from './slider-field.js';
+export { createSliderField, fieldMessage } from './slider-field.js';
 export { createSwitches } from './switches.js';
 export { createExamplePicker, exampleInLink } from './example-picker.js';
