@@ -49,29 +49,39 @@ new p5((p) => {
     for (const b of [form.boxes.h, form.boxes.v]) b.input.addEventListener('change', turnCamera);
 
     createInspector({ view, parent: 'activity' });
-    view.onSelect((s) => s && explain(s)); // clicks, arrow keys and Check all end here
+    // A click or an arrow key picks a new pixel: it goes into the boxes and is checked.
+    // A new camera re-announces the same pixel: the boxes keep what was typed.
+    view.onSelect((s) => {
+      if (!s || (judged && s.x === judged.x && s.y === judged.y)) return;
+      form.fill({ x: s.x, y: s.y });
+      check();
+    });
     check();
   };
 
   p.draw = () => pinkOnes.draw();
 
+  let judged = null; // the pixel of the last answer checked
+
   // Reads the four boxes; a bad one keeps its message and the picture stays as it was.
   function check() {
     const values = form.read();
     if (!values) return;
+    judged = values;
+    view.select(values.x, values.y); // before the camera turns, so that the view announces the pixel typed
     if (values.h !== view.camera.yaw || values.v !== view.camera.pitch) view.setCamera(cameraFor(values.h, values.v));
-    view.select(values.x, values.y);
+    explain(values);
   }
 
+  // Leaving the H or V box turns the camera at once, to look around; only Check judges.
   function turnCamera() {
     const h = form.boxes.h.read(), v = form.boxes.v.read();
     if (h === undefined || v === undefined || (h === view.camera.yaw && v === view.camera.pitch)) return;
-    view.setCamera(cameraFor(h, v)); // the selected pixel is explained again through the new camera
+    view.setCamera(cameraFor(h, v));
   }
 
   // Is this pixel pink? If not: its colour, and what its ray hit.
   function explain({ x, y }) {
-    form.fill({ x, y });
     const record = inspectPixel(view.scene, view.camera, x, y);
     const { pink, colorName: name, message } = pinkPixelVerdict(record);
     form.show({ ok: pink, message, color: toHex(record.color), data: { result: pink ? 'pink' : 'not-pink', colorName: name }, answer: answerLine(record) });

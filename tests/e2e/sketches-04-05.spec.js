@@ -57,6 +57,34 @@ test.describe('04 · Find the pink pixel', () => {
     await expect(page.locator('[data-inspector] [data-answer]')).toHaveText(await answer.textContent());
   });
 
+  test('the boxes keep what was typed until Check: click 3,3, then Tab through 10, 12, 30, -82', async ({ page }) => {
+    await open(page, PINK);
+    await clickPixel(page.locator('[data-tracer]'), 3, 3);
+    await expect(page.locator('[data-answer-line]')).toHaveText(/^Pixel: 3,3;/);
+    await page.locator('input[name="x"]').focus();
+    await page.keyboard.press('ControlOrMeta+A');
+    for (const [i, value] of ['10', '12', '30', '-82'].entries()) {
+      if (i > 0) await page.keyboard.press('Tab'); // Tab selects the next box's text: typing replaces it
+      await page.keyboard.type(value);
+    }
+    await page.keyboard.press('Tab'); // leaving V turns the camera, but judges nothing yet
+    await waitForDone(page);
+    for (const [name, value] of [['x', '10'], ['y', '12'], ['h', '30'], ['v', '-82']]) {
+      await expect(page.locator(`input[name="${name}"]`)).toHaveValue(value);
+    }
+    await page.locator('[data-check]').click();
+    await expect(page.locator('[data-answer-line]')).toHaveText(/^Pixel: 10,12;/);
+    await expect(page.locator('[data-result]')).not.toContainText('Pixel: 3,3');
+    await expect(page.locator('input[name="x"]')).toHaveValue('10');
+    await expect(page.locator('input[name="y"]')).toHaveValue('12');
+    // The verdict is the library's for pixel 10,12 through the camera typed.
+    const expected = await page.evaluate(async () => {
+      const { Camera, classScene, inspectPixel, colorName } = await import('/lib/index.js');
+      return colorName(inspectPixel(classScene(), new Camera({ width: 32, height: 24, fov: 30, yaw: 30, pitch: -82 }), 10, 12).color);
+    });
+    await expect(page.locator('[data-result]')).toHaveAttribute('data-color-name', expected);
+  });
+
   test('a background pixel is not pink, and the page says what it is instead', async ({ page }) => {
     await open(page, PINK);
     await page.locator('input[name="x"]').fill('0');
