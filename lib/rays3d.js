@@ -1,0 +1,241 @@
+/**
+ * The geometry the 3D scene view draws, with no p5 in it: where a pixel sits
+ * on the image plane, the plane's corners and pixel grid, the view frustum,
+ * and a pixel's whole ray story as straight segments (primary ray, normal,
+ * shadow rays, mirror and glass bounces) read from `inspectPixel`'s record, so
+ * the 3D picture and the traced picture tell the same story.
+ *
+ * Points are `Vec3`s in the scene's own coordinates. The camera's image plane
+ * sits at distance 1 from the eye (lib/camera.js); every ray through a pixel
+ * centre also passes through the same pixel of a plane at any other distance,
+ * so the view may show it further out, where it is big enough to see.
+ */
+import { vec3, dot, cross, normalize, scaleAndAdd, sub, reflect, length } from './vec3.js';
+import { Sphere } from './shapes/sphere.js';
+import { nearestHit } from './trace.js';
+import { Ray } from './ray.js';
+import { show } from './check.js';
+
+/** Spheres bigger than this are drawn as a patch of ground, not a ball. */
+export const HUGE_RADIUS = 1000;
+
+/**
+ * The point of the image plane at `distance` from the eye under image
+ * coordinates (u, v): u from 0 (left edge) to width, v from 0 (top edge) to
+ * height; the centre of pixel (x, y) is (x + 0.5, y + 0.5).
+ */
+export function imagePoint(camera, u, v, distance = 1, out = vec3()) {
+  const sx = (2 * u / camera.width - 1) * camera.halfWidth;
+  const sy = (1 - 2 * v / camera.height) * camera.halfHeight;
+  const e = camera.position, r = camera.right, up = camera.up, f = camera.forward;
+  out.x = e.x + distance * (f.x + sx * r.x + sy * up.x);
+  out.y = e.y + distance * (f.y + sx * r.y + sy * up.y);
+  out.z = e.z + distance * (f.z + sx * r.z + sy * up.z);
+  return out;
+}
+
+/** The centre of pixel (x, y) on the image plane at `distance`: the primary ray passes through it. */
+export function pixelCenter(camera, x, y, distance = 1, out = vec3()) {
+  return imagePoint(camera, x + 0.5, y + 0.5, distance, out);
+}
+
+/**
+ * The image plane at `distance`: its corners (top-left, top-right,
+ * bottom-right, bottom-left), centre, and size in scene units.
+ */
+export function imagePlane(camera, distance = 1) {
+  const W = camera.width, H = camera.height;
+  return {
+    distance,
+    corners: [imagePoint(camera, 0, 0, distance), imagePoint(camera, W, 0, distance), imagePoint(camera, W, H, distance), imagePoint(camera, 0, H, distance)],
+    center: imagePoint(camera, W / 2, H / 2, distance),
+    width: 2 * camera.halfWidth * distance,
+    height: 2 * camera.halfHeight * distance,
+  };
+}
+
+/**
+ * The pixel grid on the image plane at `distance`, at the traced resolution:
+ * `columns` (width + 1 lines, left to right) and `rows` (height + 1, top to
+ * bottom), each line `[from, to]`.
+ */
+export function pixelGrid(camera, distance = 1) {
+  const W = camera.width, H = camera.height;
+  const columns = [], rows = [];
+  for (let u = 0; u <= W; u++) columns.push([imagePoint(camera, u, 0, distance), imagePoint(camera, u, H, distance)]);
+  for (let v = 0; v <= H; v++) rows.push([imagePoint(camera, 0, v, distance), imagePoint(camera, W, v, distance)]);
+  return { columns, rows };
+}
+
+/**
+ * The view frustum: the eye and the four corner edges out to `far`
+ * (a distance along the view direction), as `{ eye, near, far }` corner lists.
+ */
+export function frustum(camera, far, near = 1) {
+  return { eye: camera.position, near: imagePlane(camera, near).corners, far: imagePlane(camera, far).corners };
+}
+
+/**
+ * Which pixel of the image plane at `distance` a ray (origin, unit
+ * direction, e.g. from the 3D view's own camera through the mouse) meets:
+ * `{ x, y, point, t }`, or null when it misses the picture.
+ */
+export function pickImagePlane(camera, distance, origin, direction) {
+  const f = camera.forward;
+  const denom = dot(direction, f);
+  if (Math.abs(denom) < 1e-12) return null; // along the plane
+  const center = imagePoint(camera, camera.width / 2, camera.height / 2, distance);
+  const t = dot(sub(vec3(), center, origin), f) / denom;
+  if (!(t > 0)) return null;
+  const point = scaleAndAdd(vec3(), origin, direction, t);
+  const offset = sub(vec3(), point, center);
+  const sx = dot(offset, camera.right) / distance, sy = dot(offset, camera.up) / distance;
+  const u = ((sx / camera.halfWidth + 1) / 2) * camera.width;
+  const v = ((1 - sy / camera.halfHeight) / 2) * camera.height;
+  if (u < 0 || v < 0 || u >= camera.width || v >= camera.height) return null;
+  return { x: Math.floor(u), y: Math.floor(v), point, t };
+}
+
+/**
+ * The pixel's story as straight segments, from `inspectPixel`'s record, in
+ * the order they happen: `{ kind, from, to, depth, ... }` with `kind`
+ *   'primary'     eye → hit (`hit: true`), or `missLength` along the ray (`hit: false`);
+ *   'normal'      hit point → `normalLength` along the normal;
+ *   'shadow'      hit point → light, `lit` (reaches it), `facing` (the light is in front of the surface),
+ *                 `blockedAt` (first thing in the way, or null), `light` (its source);
+ *   'reflection'  and 'refraction': one bounce to the next hit or `missLength` out, down to scene.maxDepth.
+ * Bounces come after the shadow rays of the point they leave; each bounce's own
+ * normal and shadow rays follow it.
+ */
+export function raySegments(scene, record, { missLength = 40, normalLength = 2 } = {}) {
+  if (!record || !record.ray) throw new TypeError(`raySegments needs inspectPixel's record, got ${show(record)}`);
+  const out = [];
+  const ray = record.ray;
+  addRay(out, scene, 'primary', 0, ray.origin, ray.direction, record.hit, { missLength, normalLength });
+  return out;
+}
+
+function addRay(out, scene, kind, depth, origin, direction, hit, opts) {
+  if (!hit) {
+    out.push({ kind, depth, hit: false, from: origin, to: scaleAndAdd(vec3(), origin, direction, opts.missLength) });
+    return;
+  }
+  out.push({ kind, depth, hit: true, from: origin, to: hit.point, object: hit.object, t: hit.t });
+  out.push({ kind: 'normal', depth, from: hit.point, to: scaleAndAdd(vec3(), hit.point, hit.normal, opts.normalLength) });
+  for (const l of hit.lights) {
+    out.push({
+      kind: 'shadow', depth, from: hit.point, to: l.position, light: l.light,
+      facing: l.facing, lit: l.facing && !l.inShadow, transmission: l.transmission,
+      blockedAt: l.facing && l.inShadow ? blocker(scene, hit, l) : null,
+    });
+  }
+  if (hit.reflection) {
+    const d = reflect(vec3(), direction, hit.normal);
+    addRay(out, scene, 'reflection', depth + 1, hit.point, d, hit.reflection.hit, opts);
+  }
+  if (hit.refraction) {
+    const d = refracted(direction, hit.normal, hit.inside, hit.object.material.ior);
+    addRay(out, scene, 'refraction', depth + 1, hit.point, d, hit.refraction.hit, opts);
+  }
+}
+
+const _shadow = new Ray();
+const _hit = { object: null, t: Infinity };
+
+/** Where a shadow ray from the hit toward a light first meets something else (as trace's shadow ray does). */
+function blocker(scene, hit, l) {
+  scaleAndAdd(_shadow.origin, hit.point, hit.normal, scene.bias);
+  normalize(_shadow.direction, sub(_shadow.direction, l.position, hit.point));
+  const lightObject = scene.lights.find((s) => s.source === l.light)?.object;
+  const objects = scene.objects.filter((o) => o !== lightObject);
+  if (!nearestHit(objects, _shadow, _hit, scene.epsilon) || _hit.t >= l.distance - scene.bias) return null;
+  return scaleAndAdd(vec3(), _shadow.origin, _shadow.direction, _hit.t);
+}
+
+/** Snell's law, as trace.js bends a ray into or out of glass. */
+function refracted(d, n, inside, ior) {
+  const cosi = -dot(d, n), eta = inside ? ior : 1 / ior;
+  const k = Math.max(0, 1 - eta * eta * (1 - cosi * cosi));
+  const s = eta * cosi - Math.sqrt(k);
+  return normalize(vec3(), vec3(eta * d.x + s * n.x, eta * d.y + s * n.y, eta * d.z + s * n.z));
+}
+
+/**
+ * The geometric route drawn in 3D for one sphere and a ray: `L` (origin →
+ * centre), `tca` (origin → the ray's closest approach to the centre), `d`
+ * (that point → centre), `thc` (that point → the first hit, when d ≤ r),
+ * from `intersectGeometric`'s numbers.
+ */
+export function geometricConstruction(ray, sphere, geometric) {
+  const o = ray.origin, c = sphere.center;
+  const closest = scaleAndAdd(vec3(), o, ray.direction, geometric.tca);
+  const parts = {
+    L: [o, c], tca: [o, closest], d: [closest, c],
+    thc: geometric.thc === null ? null : [closest, scaleAndAdd(vec3(), o, ray.direction, geometric.tca - geometric.thc)],
+  };
+  return parts;
+}
+
+/* ---------------- the 3D view's own camera (an orbit) ---------------- */
+
+/**
+ * Centre and radius of what the view should frame: the eye, the image plane
+ * and every shape and light except huge spheres (a ground) and planes.
+ */
+export function sceneBounds(scene, camera, planeDistance) {
+  const pts = [camera.position, ...imagePlane(camera, planeDistance).corners];
+  for (const o of scene.objects) {
+    if (o instanceof Sphere) {
+      if (o.radius > HUGE_RADIUS) continue;
+      for (const s of [-1, 1]) pts.push(vec3(o.center.x + s * o.radius, o.center.y + s * o.radius, o.center.z + s * o.radius));
+    } else if (o.min) pts.push(o.min, o.max);
+  }
+  for (const l of scene.lights) pts.push(l.position);
+  const min = vec3(Infinity, Infinity, Infinity), max = vec3(-Infinity, -Infinity, -Infinity);
+  for (const p of pts) {
+    min.x = Math.min(min.x, p.x); min.y = Math.min(min.y, p.y); min.z = Math.min(min.z, p.z);
+    max.x = Math.max(max.x, p.x); max.y = Math.max(max.y, p.y); max.z = Math.max(max.z, p.z);
+  }
+  const center = vec3((min.x + max.x) / 2, (min.y + max.y) / 2, (min.z + max.z) / 2);
+  return { center, radius: length(sub(vec3(), max, center)), min, max };
+}
+
+/**
+ * The orbit camera's eye: `distance` from `target`, turned `yaw` degrees
+ * about +y (0 = looking toward −z, as the scene's camera does) and raised
+ * `pitch` degrees; with its unit `forward`, `right` and `up`.
+ */
+export function orbitCamera({ target, yaw, pitch, distance }) {
+  const a = (yaw * Math.PI) / 180, b = (pitch * Math.PI) / 180;
+  const forward = vec3(Math.sin(a) * Math.cos(b), -Math.sin(b), -Math.cos(a) * Math.cos(b));
+  const eye = scaleAndAdd(vec3(), target, forward, -distance);
+  const right = normalize(vec3(), cross(vec3(), forward, vec3(0, 1, 0)));
+  const up = cross(vec3(), right, forward);
+  return { eye, target, forward, right, up };
+}
+
+/**
+ * The ray from the orbit camera through a point of its canvas (px from the
+ * top-left of a w × h canvas), for a perspective of vertical field `fovy`
+ * (radians): `{ origin, direction }`.
+ */
+export function screenRay(orbit, px, py, w, h, fovy) {
+  const t = Math.tan(fovy / 2);
+  const sx = (2 * px / w - 1) * t * (w / h), sy = (1 - 2 * py / h) * t;
+  const d = vec3(
+    orbit.forward.x + sx * orbit.right.x + sy * orbit.up.x,
+    orbit.forward.y + sx * orbit.right.y + sy * orbit.up.y,
+    orbit.forward.z + sx * orbit.right.z + sy * orbit.up.z,
+  );
+  return { origin: orbit.eye, direction: normalize(d, d) };
+}
+
+/** Where a scene point lands on the orbit camera's canvas (px), or null behind it. */
+export function projectToScreen(orbit, point, w, h, fovy) {
+  const rel = sub(vec3(), point, orbit.eye);
+  const z = dot(rel, orbit.forward);
+  if (z <= 1e-6) return null;
+  const t = Math.tan(fovy / 2);
+  const sx = dot(rel, orbit.right) / (z * t * (w / h)), sy = dot(rel, orbit.up) / (z * t);
+  return { x: ((sx + 1) / 2) * w, y: ((1 - sy) / 2) * h };
+}
