@@ -5,10 +5,13 @@
  * each ray passes through its pixel's centre.
  */
 import { toVec3, vec3, normalize } from './vec3.js';
-import { finiteNumber, numberInRange, positiveInteger } from './check.js';
+import { finiteNumber, numberInRange, positiveInteger, checkOptions } from './check.js';
 import { Ray } from './ray.js';
 
 const DEG = Math.PI / 180;
+
+/** The options a camera takes. */
+const OPTIONS = ['width', 'height', 'fov', 'position', 'yaw', 'pitch'];
 
 export class Camera {
   /**
@@ -20,7 +23,8 @@ export class Camera {
    * @param {number} [options.yaw=0] turn right, degrees
    * @param {number} [options.pitch=0] look up, degrees, −90 to 90
    */
-  constructor({ width, height, fov = 30, position = [0, 0, 0], yaw = 0, pitch = 0 } = {}) {
+  constructor(options = {}) {
+    const { width, height, fov = 30, position = [0, 0, 0], yaw = 0, pitch = 0 } = checkOptions(options, OPTIONS, 'camera');
     this.width = positiveInteger(width, 'width');
     this.height = positiveInteger(height, 'height');
     finiteNumber(fov, 'fov');

@@ -53,3 +53,59 @@ export function pixelCoordinate(value, field, limit) {
   }
   return value;
 }
+
+/**
+ * An options object whose every key is one of `known`; a misspelt key would
+ * silently fall back to its default, so it throws a TypeError naming the key,
+ * `where` it was given and the closest known key:
+ * `unknown material option "colour" (did you mean "color"?)`.
+ * Undefined is fine (every option takes its default).
+ * @param {object|undefined} options
+ * @param {readonly string[]} known the keys this options object takes
+ * @param {string} where what the options are for, as a student would say it ("material", "camera")
+ * @returns {object} the options, or `{}` when undefined
+ */
+export function checkOptions(options, known, where) {
+  if (options === undefined) return {};
+  if (options === null || typeof options !== 'object' || Array.isArray(options)) {
+    throw new TypeError(`${where} options must be an object like { ${known[0]}: … }, got ${show(options)}`);
+  }
+  for (const key of Object.keys(options)) {
+    if (!known.includes(key)) throw new TypeError(unknownOption(key, known, where));
+  }
+  return options;
+}
+
+/** The message for an unknown key: the closest known key, and the whole list when none is close. */
+function unknownOption(key, known, where) {
+  let best = null, bestDistance = Infinity;
+  for (const name of known) {
+    const d = editDistance(key.toLowerCase(), name.toLowerCase());
+    if (d < bestDistance) { best = name; bestDistance = d; }
+  }
+  const message = `unknown ${where} option ${JSON.stringify(key)}`;
+  if (best === null) return `${message} (it takes no options)`;
+  const close = bestDistance <= Math.max(2, Math.floor(key.length / 2));
+  return close
+    ? `${message} (did you mean ${JSON.stringify(best)}?)`
+    : `${message} (did you mean ${JSON.stringify(best)}? known options: ${known.join(', ')})`;
+}
+
+/**
+ * Edits (insert, delete, replace, swap two neighbours) turning a into b:
+ * the optimal string alignment distance, so "widht" is one edit from "width".
+ */
+export function editDistance(a, b) {
+  const rows = [];
+  for (let i = 0; i <= a.length; i++) {
+    rows.push([i]);
+    for (let j = 1; j <= b.length; j++) {
+      if (i === 0) { rows[0].push(j); continue; }
+      const cost = a[i - 1] === b[j - 1] ? 0 : 1;
+      let d = Math.min(rows[i - 1][j] + 1, rows[i][j - 1] + 1, rows[i - 1][j - 1] + cost);
+      if (i > 1 && j > 1 && a[i - 1] === b[j - 2] && a[i - 2] === b[j - 1]) d = Math.min(d, rows[i - 2][j - 2] + 1);
+      rows[i].push(d);
+    }
+  }
+  return rows[a.length][b.length];
+}

@@ -4,15 +4,24 @@
  */
 import { toVec3, vec3 } from './vec3.js';
 import { toColor } from './color.js';
-import { finiteNumber } from './check.js';
+import { finiteNumber, checkOptions } from './check.js';
+
+/** The options a point light takes as its second argument. */
+const OPTIONS = ['color', 'intensity'];
 
 export class PointLight {
   /**
+   * `new PointLight([0, 20, 0])`, `new PointLight(position, color, intensity)`
+   * or `new PointLight(position, { color, intensity })`.
    * @param {number[]|{x,y,z}} position where the light is
-   * @param {number[]|string} [color=[1,1,1]] its colour
+   * @param {number[]|string|{ color?: number[]|string, intensity?: number }} [color=[1,1,1]] its colour, or the options
    * @param {number} [intensity=1] a multiplier, ≥ 0
    */
   constructor(position, color = [1, 1, 1], intensity = 1) {
+    if (isOptions(color)) {
+      if (arguments.length > 2) throw new TypeError('a point light takes (position, { color, intensity }) or (position, color, intensity), not both');
+      ({ color = [1, 1, 1], intensity = 1 } = checkOptions(color, OPTIONS, 'point light'));
+    }
     this.position = toVec3(position, 'position');
     finiteNumber(intensity, 'intensity');
     if (intensity < 0) throw new RangeError(`intensity must not be negative, got ${intensity}`);
@@ -22,6 +31,11 @@ export class PointLight {
     this.emission = this.color.map((c) => c * intensity);
     this.name = '';
   }
+}
+
+/** A plain object (not a colour array or string): the options form. */
+function isOptions(value) {
+  return value !== null && typeof value === 'object' && !Array.isArray(value) && !ArrayBuffer.isView(value);
 }
 
 /**

@@ -4,7 +4,10 @@
  * Specular highlights (Phong) and the index of refraction are extensions.
  */
 import { toColor } from './color.js';
-import { numberInRange, show } from './check.js';
+import { numberInRange, show, checkOptions } from './check.js';
+
+/** The options a material takes. */
+const OPTIONS = ['color', 'emission', 'reflection', 'transparency', 'ior', 'specular', 'shininess'];
 
 export class Material {
   /**
@@ -21,6 +24,7 @@ export class Material {
     if (options === null || typeof options !== 'object') {
       throw new TypeError(`material must be an object like { color: [1, 0, 0] }, got ${show(options)}`);
     }
+    checkOptions(options, OPTIONS, 'material');
     const {
       color = [1, 1, 1], emission = 0, reflection = 0, transparency = 0,
       ior = 1.1, specular = 0, shininess = 50,

@@ -13,7 +13,7 @@
  */
 import { renderPixel } from './render.js';
 import { tileCandidates, TILE } from './bounds.js';
-import { positiveInteger, finiteNumber, show } from './check.js';
+import { positiveInteger, finiteNumber, show, checkOptions } from './check.js';
 
 /** The render orders a ProgressiveRenderer knows. */
 export const MODES = ['coarse', 'scanline', 'slow'];
@@ -21,6 +21,10 @@ export const MODES = ['coarse', 'scanline', 'slow'];
 /** Block sizes of the coarse passes, largest first. */
 export const COARSE_PASSES = [16, 8, 4, 2, 1];
 const FULL_RESOLUTION = [1];
+
+/** The options a ProgressiveRenderer takes, and the changes restart() takes. */
+const OPTIONS = ['scene', 'camera', 'mode', 'budgetMs', 'shader', 'slowRaysPerStep', 'now'];
+const CHANGES = ['scene', 'camera', 'mode', 'shader', 'slowRaysPerStep'];
 
 /**
  * Pixels traced before the first look at the clock in a step, and at least
@@ -58,7 +62,8 @@ export class ProgressiveRenderer {
    * @param {number} [options.slowRaysPerStep=1] pixels per step() in 'slow' mode
    * @param {() => number} [options.now=performance.now] the clock, in milliseconds
    */
-  constructor({ scene, camera, mode = 'coarse', budgetMs = 8, shader = renderPixel, slowRaysPerStep = 1, now = () => performance.now() } = {}) {
+  constructor(options = {}) {
+    const { scene, camera, mode = 'coarse', budgetMs = 8, shader = renderPixel, slowRaysPerStep = 1, now = () => performance.now() } = checkOptions(options, OPTIONS, 'ProgressiveRenderer');
     if (typeof now !== 'function') throw new TypeError(`now must be a function returning milliseconds, got ${show(now)}`);
     this.now = now;
     this.budgetMs = budget(budgetMs, 'budgetMs');
@@ -78,6 +83,7 @@ export class ProgressiveRenderer {
    */
   restart(changes = {}) {
     if (changes === null || typeof changes !== 'object') throw new TypeError(`changes must be an object like { camera }, got ${show(changes)}`);
+    checkOptions(changes, CHANGES, 'restart');
     const scene = changes.scene ?? this.scene;
     const camera = changes.camera ?? this.camera;
     const mode = changes.mode ?? this.mode;

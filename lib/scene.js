@@ -3,11 +3,14 @@
  * lesson's lighting (ambient term, shadows, shadow-ray offset, mirror depth).
  */
 import { toColor } from './color.js';
-import { numberInRange, bool, show } from './check.js';
+import { numberInRange, bool, show, checkOptions } from './check.js';
 import { Sphere, EPSILON } from './shapes/sphere.js';
 import { Plane } from './shapes/plane.js';
 import { Box } from './shapes/box.js';
 import { PointLight, lightSource } from './lights.js';
+
+/** The options a scene takes. */
+const OPTIONS = ['background', 'ambient', 'shadows', 'bias', 'epsilon', 'maxDepth', 'specular'];
 
 export class Scene {
   /**
@@ -22,6 +25,7 @@ export class Scene {
    * @param {boolean} [options.specular=true] draw highlights of materials with `specular` > 0
    */
   constructor(options = {}) {
+    checkOptions(options, OPTIONS, 'scene');
     const { background = [0, 0, 0], ambient = 0, shadows = true, bias = 1e-4, epsilon = EPSILON, maxDepth = 5, specular = true } = options;
     this.background = toColor(background, 'background');
     this.ambient = numberInRange(ambient, 'ambient', 0, 1);

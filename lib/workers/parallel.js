@@ -5,7 +5,7 @@
  * workers run the same code on the same numbers.
  */
 import { render } from '../render.js';
-import { positiveInteger, show } from '../check.js';
+import { positiveInteger, show, checkOptions } from '../check.js';
 import { sceneToJSON, cameraToJSON } from '../serialize.js';
 import { splitRows } from './split.js';
 
@@ -15,6 +15,9 @@ export { splitRows } from './split.js';
 function startWorker() {
   return new Worker(new URL('./render-worker.js', import.meta.url), { type: 'module' });
 }
+
+/** The options a ParallelRenderer takes. */
+const OPTIONS = ['workers', 'rowsPerBand', 'createWorker'];
 
 export class ParallelRenderer {
   #workers = [];
@@ -27,7 +30,8 @@ export class ParallelRenderer {
    * @param {number} [options.rowsPerBand=4] rows per message; bands are dealt to the workers in turn
    * @param {() => Worker} [options.createWorker] starts one worker (tests pass a stand-in)
    */
-  constructor({ workers = globalThis.navigator?.hardwareConcurrency || 2, rowsPerBand = 4, createWorker } = {}) {
+  constructor(options = {}) {
+    const { workers = globalThis.navigator?.hardwareConcurrency || 2, rowsPerBand = 4, createWorker } = checkOptions(options, OPTIONS, 'ParallelRenderer');
     this.workers = positiveInteger(workers, 'workers');
     this.rowsPerBand = positiveInteger(rowsPerBand, 'rowsPerBand');
     if (createWorker !== undefined && typeof createWorker !== 'function') {
@@ -49,7 +53,8 @@ export class ParallelRenderer {
    * @param {(y0: number, y1: number, buffer: Uint8ClampedArray) => void} [options.onRows] called as rows y0…y1−1 arrive
    * @returns {Promise<Uint8ClampedArray>} RGBA, width·height·4, identical to render(scene, camera)
    */
-  async render(scene, camera, { onRows } = {}) {
+  async render(scene, camera, options = {}) {
+    const { onRows } = checkOptions(options, ['onRows'], 'ParallelRenderer.render');
     if (onRows !== undefined && typeof onRows !== 'function') throw new TypeError(`onRows must be a function, got ${show(onRows)}`);
     const sceneJSON = sceneToJSON(scene), cameraJSON = cameraToJSON(camera);
     const { width, height } = camera;
