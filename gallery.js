@@ -34,8 +34,7 @@ function card(path, { title, line }) {
     : Object.assign(document.createElement('div'), { className: 'no-thumb', textContent: number });
   picture.classList.add('thumb');
   const heading = document.createElement('h2');
-  heading.innerHTML = `<span class="number">${number}</span> `;
-  heading.append(title);
+  heading.append(Object.assign(document.createElement('span'), { className: 'number', textContent: number }), ' ', title);
   const text = document.createElement('p');
   text.textContent = line;
   link.append(picture, heading, text);

@@ -56,14 +56,23 @@ new p5((p) => {
     explain(g);
   };
 
-  /** The two routes side by side: the same t0, t1 and t. */
+  /** The two routes side by side: the same t0, t1 and t (cells set as text, never parsed as HTML). */
   function compare(q, g) {
-    const row = (name, a, b, cls = '') => `<tr class="${cls}"><th>${name}</th><td data-route="quadratic" data-field="${name}">${a}</td><td data-route="geometric" data-field="${name}">${b}</td></tr>`;
-    p.select('#compare').html('<caption>The same ray, both routes</caption>'
-      + '<tr><th></th><th>quadratic</th><th>geometric</th></tr>'
-      + row('hit if > 0', `B² − 4AC = ${fmt(q.discriminant, 2)}`, `r² − d² = ${fmt(SPHERE_RADIUS ** 2 - g.d2, 2)}`)
-      + row('t0', fmt(q.t0, 3), fmt(g.t0, 3)) + row('t1', fmt(q.t1, 3), fmt(g.t1, 3))
-      + row('t', fmt(q.t, 3), fmt(g.t, 3), 't'));
+    const cell = (tag, text) => Object.assign(document.createElement(tag), { textContent: text });
+    const row = (name, a, b, cls = '') => {
+      const tr = Object.assign(document.createElement('tr'), { className: cls });
+      const [qa, gb] = [cell('td', a), cell('td', b)];
+      Object.assign(qa.dataset, { route: 'quadratic', field: name });
+      Object.assign(gb.dataset, { route: 'geometric', field: name });
+      tr.append(cell('th', name), qa, gb);
+      return tr;
+    };
+    const head = document.createElement('tr');
+    head.append(cell('th', ''), cell('th', 'quadratic'), cell('th', 'geometric'));
+    p.select('#compare').elt.replaceChildren(cell('caption', 'The same ray, both routes'), head,
+      row('hit if > 0', `B² − 4AC = ${fmt(q.discriminant, 2)}`, `r² − d² = ${fmt(SPHERE_RADIUS ** 2 - g.d2, 2)}`),
+      row('t0', fmt(q.t0, 3), fmt(g.t0, 3)), row('t1', fmt(q.t1, 3), fmt(g.t1, 3)),
+      row('t', fmt(q.t, 3), fmt(g.t, 3), 't'));
   }
 
   /** One sentence about this ray: which rule decides, with its numbers. */
@@ -74,6 +83,6 @@ new p5((p) => {
       : g.tca < 0 ? `tca = ${fmt(g.tca, 2)} < 0 and the eye is outside: the sphere is behind the eye, no intersection.`
         : g.roots === 0 ? `d = ${fmt(Math.sqrt(g.d2), 2)} > r = ${SPHERE_RADIUS}: the ray passes the sphere by, no intersection.`
           : `tca = ${fmt(g.tca, 2)} ≥ 0 and d ≤ r: the ray hits first at t = tca − thc = ${fmt(g.t, 2)}.`;
-    p.select('#now').html(sentence);
+    p.select('#now').elt.textContent = sentence;
   }
 }, document.getElementById('sketch'));

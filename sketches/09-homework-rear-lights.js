@@ -59,7 +59,7 @@ new p5((p) => {
     const button = p.createButton('Check my scene').class('rt-button').parent('check');
     const results = p.createDiv('Press the button to check your scene against the task.').parent('check');
     results.attribute('data-check-results', '');
-    if (message) p.createP(message).class('hw-warning').attribute('role', 'alert').parent('check');
+    if (message) p.createP().class('hw-warning').attribute('role', 'alert').parent('check').elt.textContent = message; // text from the link: never HTML
     button.mousePressed(() => showCheck(results.elt, checkRearLights(view.scene, view.camera)));
   };
 }, 'sketch');

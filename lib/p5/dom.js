@@ -35,3 +35,12 @@ export function element(tag, attributes = {}, ...children) {
   }
   return el;
 }
+
+/**
+ * Sets a p5.Element's (or an element's) text, never parsed as HTML: p5's
+ * createP/createDiv/createElement(tag, text) and .html() set innerHTML.
+ */
+export function withText(el, text) {
+  (el.elt ?? el).textContent = String(text);
+  return el;
+}

@@ -10,6 +10,7 @@
  * is; fieldMessage needs no page.
  */
 import { readNumber } from './scene-form.js';
+import { withText } from './dom.js';
 
 /**
  * The line under a field with a bad value: its label, what is wrong, and that
@@ -36,17 +37,17 @@ export function fieldMessage(label, error) {
  */
 export function createSliderField(p, parent, { name, label, min, max, step, value, use }) {
   const id = `field-${name}`;
-  p.createElement('label', label).attribute('for', id).parent(parent);
+  withText(p.createElement('label'), label).attribute('for', id).parent(parent);
   const slider = p.createSlider(min, max, value, step).parent(parent).attribute('aria-label', `${label} slider`);
   const textBox = p.createInput(String(value)).parent(parent).id(id).attribute('inputmode', 'decimal');
-  const message = p.createDiv('').class('message').parent(parent).attribute('role', 'alert').attribute('data-message-for', name);
+  const message = p.createDiv().class('message').parent(parent).attribute('role', 'alert').attribute('data-message-for', name);
 
   /** Uses the number in `text`: the number, or undefined after saying why not. */
   const tryUse = (text) => {
     try {
       const number = readNumber(text, label);
       use(number);
-      message.html('');
+      message.elt.textContent = '';
       textBox.attribute('aria-invalid', 'false');
       return number;
     } catch (error) {

@@ -9,7 +9,9 @@
  *   panel.onChange(() => { scene.shadows = shadows.checked(); …; view.restart(); });
  *
  * Each switch is returned as the p5.Element it is: `checked()`, `value()`.
+ * Every text is set as text, never parsed as HTML.
  */
+import { element, withText } from './dom.js';
 
 /**
  * @param {p5} p the sketch (its DOM functions make the parts)
@@ -18,21 +20,22 @@
  */
 export function createSwitches(p, parent, legend) {
   const panel = p.createElement('fieldset').addClass('switches').parent(parent);
-  panel.child(p.createElement('legend', legend));
+  panel.child(withText(p.createElement('legend'), legend));
   const inputs = []; // [switch, the p5 event it changes on]
 
   /** One switch in the panel: its control, then the line saying what it does. */
   const add = (control, why) => {
     const item = p.createDiv().addClass('switch');
     item.child(control);
-    item.child(p.createP(why).addClass('why'));
+    item.child(withText(p.createP(), why).addClass('why'));
     panel.child(item);
   };
 
   return {
     /** A tick box called `name`, on at first (it has `data-switch="<name>"`). */
     toggle(name, why) {
-      const checkbox = p.createCheckbox(` ${name}`, true);
+      const checkbox = p.createCheckbox('', true);
+      checkbox.elt.querySelector('label').append(element('span', {}, ` ${name}`));
       checkbox.attribute('data-switch', name);
       add(checkbox, why);
       inputs.push([checkbox, 'changed']);
@@ -43,7 +46,7 @@ export function createSwitches(p, parent, legend) {
     choice(label, options, why) {
       const select = p.createSelect();
       for (const [words, value] of options) select.option(words, String(value));
-      const labelled = p.createElement('label', `${label} `);
+      const labelled = withText(p.createElement('label'), `${label} `);
       labelled.child(select);
       add(labelled, why);
       inputs.push([select, 'changed']);
@@ -53,7 +56,7 @@ export function createSwitches(p, parent, legend) {
     /** A slider inside a label that shows its value: "mirror bounces: 5". */
     slider(label, { min, max, value, step = 1 }, why) {
       const slider = p.createSlider(min, max, value, step);
-      const labelled = p.createElement('label', `${label}: ${value} `);
+      const labelled = withText(p.createElement('label'), `${label}: ${value} `);
       labelled.child(slider);
       add(labelled, why);
       // A listener of its own: p5's slider.input() keeps one function per event, and onChange takes that one.
