@@ -19,9 +19,17 @@ const _color = [0.5, 0.5, 0.5]; // doubles from the start (one array shape)
  * @returns {Uint8ClampedArray} RGBA, row by row from the top
  */
 export function render(scene, camera, target = new Uint8ClampedArray(camera.width * camera.height * 4), rows) {
-  const { width, height } = camera;
-  const y0 = rows?.y0 ?? 0, y1 = rows?.y1 ?? height;
-  const { columns, lists } = tileCandidates(scene, camera, y0, y1);
+  const y0 = rows?.y0 ?? 0, y1 = rows?.y1 ?? camera.height;
+  return renderRows(scene, camera, target, y0, y1, tileCandidates(scene, camera, y0, y1));
+}
+
+/**
+ * Rows y0 ≤ y < y1 of the frame into `target`, with the tiles' candidate
+ * shapes already worked out (`tileCandidates(scene, camera)` covering those
+ * rows): a worker finds them once per scene, then renders band after band.
+ */
+export function renderRows(scene, camera, target, y0, y1, { columns, lists }) {
+  const { width } = camera;
   copy(_ray.origin, camera.position); // every primary ray starts at the eye
   for (let ty = Math.floor(y0 / TILE) * TILE; ty < y1; ty += TILE) {
     for (let tx = 0; tx < width; tx += TILE) {

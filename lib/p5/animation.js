@@ -85,7 +85,8 @@ export class Animation {
    * @param {(playing: boolean) => void} [options.onPlay] after Play / Pause
    * @param {(info: { thread: string, same?: boolean }) => void} [options.onPause] paused with a frame on screen;
    *   on 'workers', `same` says whether one thread traces that frame byte for byte the same
-   * @param {(error: Error) => void} [options.onError] a worker failed (the animation pauses)
+   * @param {(error: Error) => void} [options.onError] the workers failed: the frames go on, traced on the
+   *   page's own thread (the same bytes), and this says why; a frame that cannot be traced at all pauses the animation
    */
   constructor(view, { sceneAt, camera, workers = 4, stats, onPlay, onPause, onError } = {}) {
     Object.assign(this, { view, sceneAt, camera, workers, onPlay, onPause, onError });
@@ -143,7 +144,8 @@ export class Animation {
   async #traceOnWorkers(t) {
     if (this.#parallel?.workers !== this.workers) {
       this.#parallel?.terminate();
-      this.#parallel = new ParallelRenderer({ workers: this.workers });
+      // A worker that fails or stays silent: its frames go on, traced here, and the page says why.
+      this.#parallel = new ParallelRenderer({ workers: this.workers, onProblem: (error) => this.onError?.(error) }).warm();
     }
     this.#inFlight = true;
     try {
@@ -195,7 +197,7 @@ export class Animation {
   #showStats() {
     if (!this.stats) return;
     const { frames: frame, fps } = this.counter;
-    this.stats.textContent = statsLine({ frame, fps, time: this.shown, workers: this.thread === 'workers' ? this.workers : 0 });
+    this.stats.textContent = statsLine({ frame, fps, time: this.shown, workers: this.thread === 'workers' && this.#parallel?.usingWorkers !== false ? this.workers : 0 });
     Object.assign(this.stats.dataset, { frame, fps: fps.toFixed(1), time: this.shown });
   }
 }

@@ -1,15 +1,22 @@
 /**
- * A frame rendered by several Web Workers at once. Each worker gets the scene
- * and camera as JSON and a share of the rows; the main thread only copies the
- * finished rows into place. The picture is render()'s, byte for byte: the
- * workers run the same code on the same numbers.
+ * A frame rendered by several Web Workers at once. The workers stay up
+ * between frames and get the scene and camera (as JSON) once per change; each
+ * frame they get a share of the rows, in bands dealt out in turn so that every
+ * share holds some sky and some spheres, and answer in a few large messages.
+ * Where the page is cross-origin isolated they write straight into one
+ * SharedArrayBuffer; elsewhere their rows come back transferred. The picture
+ * is render()'s, byte for byte: the workers run the same code on the same numbers.
+ *
+ * A worker that fails to start, reports an error or stays silent for
+ * `timeoutMs` is stopped: its rows, and every later frame, are rendered on
+ * the main thread instead (the same bytes), and `onProblem` hears why.
  */
 import { render } from '../render.js';
 import { positiveInteger, show, checkOptions } from '../check.js';
 import { sceneToJSON, cameraToJSON } from '../serialize.js';
-import { splitRows } from './split.js';
+import { splitRows, bandHeight } from './split.js';
 
-export { splitRows } from './split.js';
+export { splitRows, bandHeight } from './split.js';
 
 /** A module worker running render-worker.js (Vite sees this pattern and bundles the worker). */
 function startWorker() {
@@ -17,32 +24,72 @@ function startWorker() {
 }
 
 /** The options a ParallelRenderer takes. */
-const OPTIONS = ['workers', 'rowsPerBand', 'createWorker'];
+const OPTIONS = ['workers', 'rowsPerBand', 'timeoutMs', 'shared', 'onProblem', 'createWorker'];
+
+/** True where a SharedArrayBuffer can be handed to a worker: a cross-origin isolated page. */
+function canShare() {
+  return typeof SharedArrayBuffer === 'function' && globalThis.crossOriginIsolated === true;
+}
 
 export class ParallelRenderer {
+  /** Per worker index: `{ worker, version }` (the scene version it holds), or null before it starts. */
   #workers = [];
   #jobs = new Map();
   #nextId = 1;
+  /** The scene and camera as last sent: their JSON text (to spot a change), version and data. */
+  #key = null;
+  #version = 0;
+  #json = null;
+  /** Shared frames of finished renders, kept for the next one of the same size. */
+  #spare = [];
 
   /**
    * @param {object} [options]
    * @param {number} [options.workers=navigator.hardwareConcurrency || 2] how many workers
-   * @param {number} [options.rowsPerBand=4] rows per message; bands are dealt to the workers in turn
+   * @param {'auto'|number} [options.rowsPerBand='auto'] rows per band ('auto': up to 16, at least 8 bands per worker)
+   * @param {number} [options.timeoutMs=6000] a worker silent this long during a render is given up on
+   * @param {'auto'|boolean} [options.shared='auto'] share one frame with the workers ('auto': where the page is cross-origin isolated)
+   * @param {(error: Error) => void} [options.onProblem] told once when the workers fail and the main thread takes over
    * @param {() => Worker} [options.createWorker] starts one worker (tests pass a stand-in)
    */
   constructor(options = {}) {
-    const { workers = globalThis.navigator?.hardwareConcurrency || 2, rowsPerBand = 4, createWorker } = checkOptions(options, OPTIONS, 'ParallelRenderer');
+    const { workers = globalThis.navigator?.hardwareConcurrency || 2, rowsPerBand = 'auto', timeoutMs = 6000, shared = 'auto', onProblem, createWorker } = checkOptions(options, OPTIONS, 'ParallelRenderer');
     this.workers = positiveInteger(workers, 'workers');
-    this.rowsPerBand = positiveInteger(rowsPerBand, 'rowsPerBand');
+    this.rowsPerBand = rowsPerBand === 'auto' ? rowsPerBand : positiveInteger(rowsPerBand, 'rowsPerBand');
+    this.timeoutMs = positiveInteger(timeoutMs, 'timeoutMs');
+    if (shared !== 'auto' && typeof shared !== 'boolean') throw new TypeError(`shared must be 'auto', true or false, got ${show(shared)}`);
+    if (shared === true && typeof SharedArrayBuffer !== 'function') throw new TypeError('shared: this page has no SharedArrayBuffer');
+    /** True when the workers write into one SharedArrayBuffer, false when their rows are transferred. */
+    this.shared = shared === 'auto' ? canShare() : shared;
+    if (onProblem !== undefined && typeof onProblem !== 'function') throw new TypeError(`onProblem must be a function, got ${show(onProblem)}`);
+    this.onProblem = onProblem;
     if (createWorker !== undefined && typeof createWorker !== 'function') {
       throw new TypeError(`createWorker must be a function, got ${show(createWorker)}`);
     }
     this.createWorker = createWorker ?? (ParallelRenderer.available ? startWorker : null);
+    /** Why the workers were given up on (every render then runs on the main thread), or null. */
+    this.problem = null;
   }
 
   /** True where Web Workers exist (browsers); elsewhere render() runs on the main thread. */
   static get available() {
     return typeof Worker === 'function';
+  }
+
+  /** True while renders go to the workers: they exist, and none has failed. */
+  get usingWorkers() {
+    return this.createWorker !== null && this.problem === null;
+  }
+
+  /** Starts every worker now, so the first frame does not wait for them to load. */
+  warm() {
+    if (!this.usingWorkers) return this;
+    try {
+      for (let i = 0; i < this.workers; i++) this.#worker(i);
+    } catch (error) {
+      this.#giveUp(`render workers could not start (${error.message})`);
+    }
+    return this;
   }
 
   /**
@@ -56,70 +103,162 @@ export class ParallelRenderer {
   async render(scene, camera, options = {}) {
     const { onRows } = checkOptions(options, ['onRows'], 'ParallelRenderer.render');
     if (onRows !== undefined && typeof onRows !== 'function') throw new TypeError(`onRows must be a function, got ${show(onRows)}`);
-    const sceneJSON = sceneToJSON(scene), cameraJSON = cameraToJSON(camera);
+    const sceneJSON = sceneToJSON(scene), cameraJSON = cameraToJSON(camera); // also checks them
     const { width, height } = camera;
-    if (!this.createWorker) {
+    if (!this.usingWorkers) {
       const buffer = render(scene, camera);
       onRows?.(0, height, buffer);
       return buffer;
     }
-    const buffer = new Uint8ClampedArray(width * height * 4);
-    const shares = splitRows(height, this.workers, this.rowsPerBand).filter((bands) => bands.length > 0);
-    const id = this.#nextId++;
+    const key = JSON.stringify([sceneJSON, cameraJSON]);
+    if (key !== this.#key) {
+      this.#key = key;
+      this.#version++;
+      this.#json = { scene: sceneJSON, camera: cameraJSON };
+    }
+    const rowsPerBand = this.rowsPerBand === 'auto' ? bandHeight(height, this.workers) : this.rowsPerBand;
+    const size = width * height * 4;
+    const job = {
+      id: this.#nextId++, scene, camera, onRows, buffer: new Uint8ClampedArray(size),
+      shared: this.shared ? this.#sharedFrame(size) : null,
+      pending: new Map(), heard: new Map(), timer: 0,
+    };
+    splitRows(height, this.workers, rowsPerBand).forEach((bands, i) => { if (bands.length) job.pending.set(i, bands); });
     return new Promise((resolve, reject) => {
-      this.#jobs.set(id, { buffer, width, onRows, resolve, reject, waiting: shares.length });
-      shares.forEach((bands, i) => this.#worker(i).postMessage({ id, scene: sceneJSON, camera: cameraJSON, bands }));
+      Object.assign(job, { resolve, reject });
+      this.#jobs.set(job.id, job);
+      for (const [i, bands] of job.pending) this.#send(i, job, bands);
+      this.#watch(job);
     });
   }
 
   /** Stops every worker; renders still under way are rejected. */
   terminate() {
-    for (const worker of this.#workers) worker?.terminate();
-    this.#workers = [];
-    this.#failAll(new Error('ParallelRenderer was terminated'));
+    this.#stopWorkers();
+    for (const job of this.#jobs.values()) this.#finish(job, new Error('ParallelRenderer was terminated'));
   }
+
+  /* ---------------- the workers ---------------- */
 
   /** Worker i, started the first time it is needed. */
   #worker(i) {
     if (!this.#workers[i]) {
       const worker = this.createWorker();
-      worker.onmessage = (event) => this.#receive(event.data);
+      worker.onmessage = (event) => this.#receive(i, event.data);
       worker.onerror = (event) => {
-        event.preventDefault?.();
-        this.#workers[i] = null; // started again by the next render
-        worker.terminate();
-        this.#failAll(new Error(`render worker failed: ${event.message ?? 'could not start'}`));
+        event.preventDefault?.(); // handled here: no uncaught error in the console
+        this.#giveUp(`render worker ${i + 1} failed (${event.message || 'it could not start'})`);
       };
-      this.#workers[i] = worker;
+      this.#workers[i] = { worker, version: null };
     }
     return this.#workers[i];
   }
 
-  /** Copies a band of finished rows into its frame: the main thread's only work. */
-  #receive(message) {
+  /** Posts share `bands` of `job` to worker i, with the scene and camera if it does not hold them yet. */
+  #send(i, job, bands) {
+    if (!this.#jobs.has(job.id)) return; // already taken over by the main thread
+    let entry;
+    try {
+      entry = this.#worker(i);
+    } catch (error) {
+      this.#giveUp(`render workers could not start (${error.message})`);
+      return;
+    }
+    const message = { id: job.id, version: this.#version, bands, shared: job.shared?.buffer };
+    if (entry.version !== this.#version) Object.assign(message, this.#json);
+    entry.version = this.#version;
+    job.heard.set(i, performance.now());
+    entry.worker.postMessage(message);
+  }
+
+  /** Copies a group of finished bands into the frame: the main thread's only work. */
+  #receive(i, message) {
     const job = this.#jobs.get(message.id);
-    if (!job) return; // a render already failed or terminated
+    if (!job || !job.pending.has(i)) return; // a render already finished, failed or taken over
     if (message.error) {
-      this.#jobs.delete(message.id);
-      job.reject(new Error(`render worker: ${message.error}`));
-    } else if (message.done) {
-      if (--job.waiting === 0) {
-        this.#jobs.delete(message.id);
-        job.resolve(job.buffer);
+      this.#giveUp(`render worker ${i + 1} reported ${message.error}`);
+      return;
+    }
+    job.heard.set(i, performance.now());
+    const rowBytes = job.camera.width * 4, source = job.shared ?? new Uint8ClampedArray(message.pixels);
+    let at = 0;
+    for (const [y0, y1] of message.bands) {
+      const start = y0 * rowBytes, length = (y1 - y0) * rowBytes;
+      job.buffer.set(source.subarray(job.shared ? start : at, (job.shared ? start : at) + length), start);
+      at += length;
+    }
+    const left = job.pending.get(i).filter(([y0]) => !message.bands.some(([b0]) => b0 === y0));
+    if (message.done || left.length === 0) job.pending.delete(i);
+    else job.pending.set(i, left);
+    try {
+      for (const [y0, y1] of message.bands) job.onRows?.(y0, y1, job.buffer);
+    } catch (error) {
+      this.#finish(job, error);
+      return;
+    }
+    if (job.pending.size === 0) this.#finish(job);
+  }
+
+  /** Gives up on a worker silent for timeoutMs while it owes rows. */
+  #watch(job) {
+    clearTimeout(job.timer);
+    if (!this.#jobs.has(job.id)) return;
+    const now = performance.now();
+    let wait = this.timeoutMs;
+    for (const i of job.pending.keys()) {
+      const silent = now - job.heard.get(i);
+      if (silent >= this.timeoutMs) {
+        this.#giveUp(`render worker ${i + 1} did not answer within ${this.timeoutMs / 1000} s`);
+        return;
       }
-    } else {
-      job.buffer.set(new Uint8ClampedArray(message.pixels), message.y0 * job.width * 4);
+      wait = Math.min(wait, this.timeoutMs - silent);
+    }
+    job.timer = setTimeout(() => this.#watch(job), Math.max(1, wait));
+  }
+
+  /**
+   * The workers failed: stop them all, render the rows still owed on the
+   * main thread (the same bytes), and from now on render every frame there.
+   */
+  #giveUp(why) {
+    const first = this.problem === null;
+    if (first) this.problem = `${why}; rendering on the main thread instead`;
+    this.#stopWorkers();
+    if (first) this.onProblem?.(new Error(this.problem));
+    for (const job of [...this.#jobs.values()]) {
       try {
-        job.onRows?.(message.y0, message.y1, job.buffer);
+        for (const bands of job.pending.values()) {
+          for (const [y0, y1] of bands) render(job.scene, job.camera, job.buffer, { y0, y1 });
+        }
+        const owed = [...job.pending.values()].flat().sort((a, b) => a[0] - b[0]);
+        job.pending.clear();
+        for (const [y0, y1] of owed) job.onRows?.(y0, y1, job.buffer);
+        this.#finish(job);
       } catch (error) {
-        this.#jobs.delete(message.id);
-        job.reject(error);
+        this.#finish(job, error);
       }
     }
   }
 
-  #failAll(error) {
-    for (const job of this.#jobs.values()) job.reject(error);
-    this.#jobs.clear();
+  #stopWorkers() {
+    for (const entry of this.#workers) entry?.worker.terminate();
+    this.#workers = [];
+  }
+
+  /** Settles a render: its picture, or `error`. */
+  #finish(job, error) {
+    if (!this.#jobs.delete(job.id)) return;
+    clearTimeout(job.timer);
+    if (job.shared) this.#spare.push(job.shared);
+    if (error) job.reject(error);
+    else job.resolve(job.buffer);
+  }
+
+  /** A shared frame of `size` bytes: a spare one, or a new one. */
+  #sharedFrame(size) {
+    const k = this.#spare.findIndex((frame) => frame.length === size);
+    if (k >= 0) return this.#spare.splice(k, 1)[0];
+    this.#spare = [];
+    return new Uint8ClampedArray(new SharedArrayBuffer(size));
   }
 }

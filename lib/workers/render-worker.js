@@ -1,7 +1,8 @@
 /**
- * A Web Worker that renders the rows it is given (see split.js's runJob).
+ * A Web Worker that renders the rows it is given (see split.js's workerHandler).
  * Started by ParallelRenderer as a module worker.
  */
-import { runJob } from './split.js';
+import { workerHandler } from './split.js';
 
-self.onmessage = (event) => runJob(event.data, (message, transfer) => self.postMessage(message, transfer));
+const handle = workerHandler();
+self.onmessage = (event) => handle(event.data, (message, transfer) => self.postMessage(message, transfer));

@@ -1,8 +1,8 @@
 import { describe, it, expect } from 'vitest';
-import { ParallelRenderer, splitRows } from '../../lib/workers/parallel.js';
-import { runJob } from '../../lib/workers/split.js';
+import { ParallelRenderer, splitRows, bandHeight } from '../../lib/workers/parallel.js';
+import { workerHandler, GROUPS } from '../../lib/workers/split.js';
 import { sceneToJSON, cameraToJSON } from '../../lib/serialize.js';
-import { render, Camera, Scene, Sphere, Plane, Box, PointLight, classScene } from '../../lib/index.js';
+import { render, Camera, Scene, Sphere, Plane, Box, PointLight, classScene, classSceneAt } from '../../lib/index.js';
 
 describe('splitRows', () => {
   it('puts every row in exactly one band, for many heights, worker counts and band sizes', () => {
@@ -32,6 +32,15 @@ describe('splitRows', () => {
     expect(Math.max(...sizes) - Math.min(...sizes)).toBeLessThanOrEqual(1);
   });
 
+  it('bandHeight: a tile\'s 16 rows on tall frames, fewer so that every worker gets 8 bands or more', () => {
+    expect(bandHeight(480, 2)).toBe(16);
+    expect(bandHeight(240, 4)).toBe(7);
+    expect(bandHeight(23, 3)).toBe(1);
+    for (const [height, parts] of [[480, 2], [240, 4], [120, 8], [1000, 3]]) {
+      expect(splitRows(height, parts, bandHeight(height, parts)).every((bands) => bands.length >= 8)).toBe(true);
+    }
+  });
+
   it('checks its arguments', () => {
     expect(() => splitRows(0, 2)).toThrow(/height must be a positive whole number/);
     expect(() => splitRows(10, 1.5)).toThrow(/parts must be a positive whole number/);
@@ -49,19 +58,23 @@ function roomScene() {
 }
 
 /**
- * A stand-in for a Web Worker: runs the real worker job (runJob) later, on
- * structured clones of the messages, as a worker would.
+ * A stand-in for a Web Worker: runs the real worker code (workerHandler)
+ * later, on structured clones of the messages, as a worker would (a
+ * SharedArrayBuffer clones to the same memory, as between threads).
  */
 function fakeWorkers() {
-  const started = [];
+  const started = [], received = [], answers = [];
   const create = () => {
+    const handle = workerHandler();
     const worker = {
       onmessage: null, onerror: null, terminated: false, jobs: 0,
       postMessage(data) {
         worker.jobs++;
+        received.push(data);
         const job = structuredClone(data);
-        setTimeout(() => runJob(job, (message, transfer) => {
+        setTimeout(() => handle(job, (message, transfer) => {
           const copy = structuredClone(message, { transfer });
+          answers.push(copy);
           setTimeout(() => { if (!worker.terminated) worker.onmessage({ data: copy }); });
         }));
       },
@@ -70,7 +83,13 @@ function fakeWorkers() {
     started.push(worker);
     return worker;
   };
-  return { create, started };
+  return { create, started, received, answers };
+}
+
+/** A worker that takes its jobs and never answers. */
+function silentWorker() {
+  const w = { onmessage: null, onerror: null, terminated: false, jobs: 0, postMessage() { w.jobs++; }, terminate() { w.terminated = true; } };
+  return w;
 }
 
 describe('ParallelRenderer', () => {
@@ -79,44 +98,68 @@ describe('ParallelRenderer', () => {
     const scene = classScene(), camera = new Camera({ width: 37, height: 23 });
     const calls = [];
     const parallel = new ParallelRenderer({ workers: 3 });
+    expect(parallel.usingWorkers).toBe(false);
     const buffer = await parallel.render(scene, camera, { onRows: (y0, y1) => calls.push([y0, y1]) });
     expect(buffer).toEqual(render(scene, camera));
     expect(calls).toEqual([[0, 23]]);
     parallel.terminate();
   });
 
-  for (const workers of [1, 2, 3, 7]) {
-    for (const [width, height] of [[37, 23], [16, 5], [20, 41]]) {
-      it(`${workers} worker(s) at ${width}×${height}: render()'s picture, byte for byte, every row arriving once`, async () => {
-        const fake = fakeWorkers();
-        const parallel = new ParallelRenderer({ workers, rowsPerBand: 3, createWorker: fake.create });
-        for (const scene of [classScene({ full: true }), roomScene()]) {
-          const camera = new Camera({ width, height, fov: 40, yaw: 3 });
-          const arrived = new Array(height).fill(0);
-          const buffer = await parallel.render(scene, camera, {
-            onRows: (y0, y1, frame) => {
-              for (let y = y0; y < y1; y++) arrived[y]++;
-              expect(frame.length).toBe(width * height * 4);
-            },
-          });
-          expect(buffer).toEqual(render(scene, camera));
-          expect(arrived.every((n) => n === 1)).toBe(true);
-        }
-        // Workers are started once and reused; none is started without rows to render.
-        expect(fake.started.length).toBe(Math.min(workers, Math.ceil(height / 3)));
-        parallel.terminate();
-        expect(fake.started.every((w) => w.terminated)).toBe(true);
-      });
+  for (const shared of [false, true]) {
+    for (const workers of [1, 2, 3, 7]) {
+      for (const [width, height] of [[37, 23], [16, 5], [20, 41]]) {
+        it(`${workers} worker(s) at ${width}×${height}, ${shared ? 'one shared frame' : 'rows transferred'}: render()'s picture, byte for byte, every row arriving once`, async () => {
+          const fake = fakeWorkers();
+          const parallel = new ParallelRenderer({ workers, rowsPerBand: 3, shared, createWorker: fake.create });
+          expect(parallel.shared).toBe(shared);
+          for (const scene of [classScene({ full: true }), roomScene()]) {
+            const camera = new Camera({ width, height, fov: 40, yaw: 3 });
+            const arrived = new Array(height).fill(0);
+            const buffer = await parallel.render(scene, camera, {
+              onRows: (y0, y1, frame) => {
+                for (let y = y0; y < y1; y++) arrived[y]++;
+                expect(frame.length).toBe(width * height * 4);
+              },
+            });
+            expect(buffer).toEqual(render(scene, camera));
+            expect(buffer.buffer).toBeInstanceOf(ArrayBuffer); // never the shared frame itself: ImageData takes only this
+            expect(arrived.every((n) => n === 1)).toBe(true);
+          }
+          // Workers are started once and reused; none is started without rows to render.
+          expect(fake.started.length).toBe(Math.min(workers, Math.ceil(height / 3)));
+          expect(parallel.problem).toBe(null);
+          parallel.terminate();
+          expect(fake.started.every((w) => w.terminated)).toBe(true);
+        });
+      }
     }
   }
 
-  it('two renders at once each get their own picture', async () => {
+  it('sends the scene and camera once per change, and each worker answers in a few messages', async () => {
     const fake = fakeWorkers();
     const parallel = new ParallelRenderer({ workers: 2, createWorker: fake.create });
-    const a = new Camera({ width: 24, height: 17 }), b = new Camera({ width: 19, height: 30, yaw: 20 });
-    const [pa, pb] = await Promise.all([parallel.render(classScene(), a), parallel.render(roomScene(), b)]);
-    expect(pa).toEqual(render(classScene(), a));
-    expect(pb).toEqual(render(roomScene(), b));
+    const camera = new Camera({ width: 64, height: 480 });
+    const answers = [];
+    await parallel.render(classScene(), camera, { onRows: () => answers.push(1) });
+    await parallel.render(classScene(), camera); // the same scene, built again: nothing new to send
+    await parallel.render(classSceneAt(1), camera); // a change
+    const withScene = fake.received.map((m) => m.scene !== undefined);
+    expect(withScene).toEqual([true, true, false, false, true, true]);
+    expect(fake.received.every((m) => m.bands.length === 15)).toBe(true); // 480 rows in 16-row bands, dealt in turn
+    expect(answers.length).toBe(2 * 15); // onRows: once per band
+    expect(fake.answers.length).toBe(3 * 2 * GROUPS); // but a worker answers a frame in GROUPS messages
+    expect(await parallel.render(classSceneAt(1), camera)).toEqual(render(classSceneAt(1), camera));
+  });
+
+  it('two renders at once each get their own picture, shared or transferred', async () => {
+    for (const shared of [false, true]) {
+      const fake = fakeWorkers();
+      const parallel = new ParallelRenderer({ workers: 2, shared, createWorker: fake.create });
+      const a = new Camera({ width: 24, height: 17 }), b = new Camera({ width: 19, height: 30, yaw: 20 });
+      const [pa, pb] = await Promise.all([parallel.render(classScene(), a), parallel.render(roomScene(), b)]);
+      expect(pa).toEqual(render(classScene(), a));
+      expect(pb).toEqual(render(roomScene(), b));
+    }
   });
 
   it('rejects a scene that cannot travel as JSON, before any worker starts', async () => {
@@ -129,26 +172,68 @@ describe('ParallelRenderer', () => {
     expect(fake.started.length).toBe(0);
   });
 
-  it('rejects when a worker reports an error or fails, and starts a new worker next time', async () => {
-    const broken = {
-      onmessage: null, onerror: null, terminated: false,
-      postMessage(data) { setTimeout(() => broken.onmessage({ data: { id: data.id, error: 'RangeError: out of memory' } })); },
-      terminate() { broken.terminated = true; },
-    };
-    const parallel = new ParallelRenderer({ workers: 1, createWorker: () => broken });
-    const camera = new Camera({ width: 8, height: 6 });
-    await expect(parallel.render(classScene(), camera)).rejects.toThrow('render worker: RangeError: out of memory');
+  describe('a failing worker: the main thread renders instead, the same bytes, and says why', () => {
+    const camera = new Camera({ width: 31, height: 40, yaw: -4 });
+    const expected = render(classScene(), camera);
 
-    let starts = 0;
-    const crashing = () => {
-      starts++;
-      const w = { terminate() {}, postMessage() { setTimeout(() => w.onerror({ message: 'SyntaxError in worker' })); } };
-      return w;
-    };
-    const p2 = new ParallelRenderer({ workers: 1, createWorker: crashing });
-    await expect(p2.render(classScene(), camera)).rejects.toThrow('render worker failed: SyntaxError in worker');
-    await expect(p2.render(classScene(), camera)).rejects.toThrow('render worker failed');
-    expect(starts).toBe(2);
+    it('a worker that never answers is given up on after timeoutMs', async () => {
+      const problems = [], workers = [];
+      const parallel = new ParallelRenderer({
+        workers: 2, timeoutMs: 40, onProblem: (e) => problems.push(e.message),
+        createWorker: () => { const w = silentWorker(); workers.push(w); return w; },
+      });
+      const arrived = new Array(40).fill(0);
+      const started = performance.now();
+      const buffer = await parallel.render(classScene(), camera, { onRows: (y0, y1) => { for (let y = y0; y < y1; y++) arrived[y]++; } });
+      expect(performance.now() - started).toBeGreaterThanOrEqual(39);
+      expect(buffer).toEqual(expected);
+      expect(arrived.every((n) => n === 1)).toBe(true);
+      expect(problems).toEqual(['render worker 1 did not answer within 0.04 s; rendering on the main thread instead']);
+      expect(parallel.problem).toBe(problems[0]);
+      expect(workers.every((w) => w.terminated)).toBe(true);
+      // From then on every frame is the main thread's, at once, with no new worker and no new message.
+      expect(await parallel.render(classScene(), camera)).toEqual(expected);
+      expect(workers.length).toBe(2);
+      expect(problems.length).toBe(1);
+    });
+
+    it('one silent worker among answering ones: the rows it owed are rendered here, the others kept', async () => {
+      const fake = fakeWorkers();
+      let n = 0;
+      const parallel = new ParallelRenderer({ workers: 3, rowsPerBand: 2, timeoutMs: 60, createWorker: () => (n++ === 1 ? silentWorker() : fake.create()) });
+      expect(await parallel.render(classScene(), camera)).toEqual(expected);
+      expect(parallel.problem).toMatch(/^render worker 2 did not answer/);
+    });
+
+    it('a worker that cannot start (its script fails to load)', async () => {
+      const problems = [];
+      const crashing = () => {
+        const w = { terminate() {}, postMessage() { setTimeout(() => w.onerror({ message: '' })); } };
+        return w;
+      };
+      const parallel = new ParallelRenderer({ workers: 2, createWorker: crashing, onProblem: (e) => problems.push(e.message) });
+      expect(await parallel.render(classScene(), camera)).toEqual(expected);
+      expect(problems).toEqual(['render worker 1 failed (it could not start); rendering on the main thread instead']);
+    });
+
+    it('a Worker constructor that throws (no workers from file://, say)', async () => {
+      const parallel = new ParallelRenderer({ workers: 2, createWorker: () => { throw new DOMException('Script at file:///x.js cannot be accessed', 'SecurityError'); } });
+      expect(await parallel.render(classScene(), camera)).toEqual(expected);
+      expect(parallel.problem).toBe('render workers could not start (Script at file:///x.js cannot be accessed); rendering on the main thread instead');
+      expect(parallel.warm().usingWorkers).toBe(false);
+    });
+
+    it('a worker that reports an error', async () => {
+      const broken = {
+        onmessage: null, onerror: null, terminated: false,
+        postMessage(data) { setTimeout(() => broken.onmessage({ data: { id: data.id, error: 'RangeError: out of memory' } })); },
+        terminate() { broken.terminated = true; },
+      };
+      const parallel = new ParallelRenderer({ workers: 1, createWorker: () => broken });
+      expect(await parallel.render(classScene(), camera)).toEqual(expected);
+      expect(parallel.problem).toBe('render worker 1 reported RangeError: out of memory; rendering on the main thread instead');
+      expect(broken.terminated).toBe(true);
+    });
   });
 
   it('terminate() rejects a render under way', async () => {
@@ -163,27 +248,56 @@ describe('ParallelRenderer', () => {
   it('checks its options', () => {
     expect(() => new ParallelRenderer({ workers: 0 })).toThrow(/workers must be a positive whole number, got 0/);
     expect(() => new ParallelRenderer({ rowsPerBand: -1 })).toThrow(/rowsPerBand/);
+    expect(() => new ParallelRenderer({ timeoutMs: 0 })).toThrow(/timeoutMs must be a positive whole number/);
+    expect(() => new ParallelRenderer({ shared: 'yes' })).toThrow(/shared must be 'auto', true or false, got "yes"/);
+    expect(() => new ParallelRenderer({ onProblem: 'alert' })).toThrow(/onProblem must be a function/);
     expect(() => new ParallelRenderer({ createWorker: 'render-worker.js' })).toThrow(/createWorker must be a function/);
+    expect(new ParallelRenderer().shared).toBe(false); // Node is not a cross-origin isolated page
   });
 });
 
-describe('runJob (what a worker does)', () => {
-  it('posts each band of rows, then done; the bands put together are render()\'s rows', () => {
-    const scene = classScene(), camera = new Camera({ width: 13, height: 11 });
-    const expected = render(scene, camera);
+describe('workerHandler (what a worker does)', () => {
+  const scene = classScene(), camera = new Camera({ width: 13, height: 11 });
+  const expected = render(scene, camera);
+  const job = (more) => ({ id: 5, version: 1, scene: sceneToJSON(scene), camera: cameraToJSON(camera), ...more });
+
+  it('posts its bands in a few groups, the last one done; put together they are render()\'s rows', () => {
     const messages = [];
-    runJob({ id: 5, scene: sceneToJSON(scene), camera: cameraToJSON(camera), bands: [[0, 2], [6, 11]] }, (m, transfer) => messages.push({ m, transfer }));
-    expect(messages.map(({ m }) => [m.id, m.y0, m.y1, m.done])).toEqual([[5, 0, 2, undefined], [5, 6, 11, undefined], [5, undefined, undefined, true]]);
-    for (const { m, transfer } of messages.slice(0, 2)) {
+    const bands = [[0, 1], [2, 3], [4, 5], [6, 7], [8, 9], [10, 11]];
+    workerHandler()(job({ bands }), (m, transfer) => messages.push({ m, transfer }));
+    expect(messages.map(({ m }) => [m.id, m.bands, m.done])).toEqual([
+      [5, [[0, 1], [2, 3]], false], [5, [[4, 5], [6, 7]], false], [5, [[8, 9], [10, 11]], true],
+    ]);
+    for (const { m, transfer } of messages) {
       expect(transfer).toEqual([m.pixels]);
-      expect(new Uint8ClampedArray(m.pixels)).toEqual(expected.slice(m.y0 * 13 * 4, m.y1 * 13 * 4));
+      const rows = m.bands.map(([y0, y1]) => [...expected.slice(y0 * 13 * 4, y1 * 13 * 4)]).flat();
+      expect([...new Uint8ClampedArray(m.pixels)]).toEqual(rows);
     }
+  });
+
+  it('with a shared frame, writes its rows there and posts no pixels', () => {
+    const shared = new SharedArrayBuffer(13 * 11 * 4), messages = [];
+    workerHandler()(job({ bands: [[0, 4], [8, 11]], shared }), (m) => messages.push(m));
+    expect(messages).toEqual([{ id: 5, bands: [[0, 4]], done: false }, { id: 5, bands: [[8, 11]], done: true }]);
+    const frame = new Uint8ClampedArray(shared);
+    expect(frame.slice(0, 4 * 52)).toEqual(expected.slice(0, 4 * 52));
+    expect(frame.slice(8 * 52)).toEqual(expected.slice(8 * 52));
+    expect(frame.slice(4 * 52, 8 * 52).every((b) => b === 0)).toBe(true);
+  });
+
+  it('keeps the scene between jobs, and says so when a job names a version it never got', () => {
+    const handle = workerHandler(), messages = [];
+    handle(job({ bands: [[0, 11]] }), (m) => messages.push(m));
+    handle({ id: 6, version: 1, bands: [[0, 11]] }, (m) => messages.push(m));
+    expect(new Uint8ClampedArray(messages[1].pixels)).toEqual(expected);
+    handle({ id: 7, version: 2, bands: [[0, 1]] }, (m) => messages.push(m));
+    expect(messages[2]).toEqual({ id: 7, error: 'Error: scene version 2 never arrived (have 1)' });
   });
 
   it('posts an error naming the bad field instead of throwing', () => {
     const messages = [];
-    const scene = { objects: [{ type: 'sphere', center: [0, 0, 0], radius: 0 }] };
-    runJob({ id: 1, scene, camera: { width: 2, height: 2 }, bands: [[0, 2]] }, (m) => messages.push(m));
+    const bad = { objects: [{ type: 'sphere', center: [0, 0, 0], radius: 0 }] };
+    workerHandler()({ id: 1, version: 1, scene: bad, camera: { width: 2, height: 2 }, bands: [[0, 2]] }, (m) => messages.push(m));
     expect(messages).toEqual([{ id: 1, error: 'RangeError: objects[0].radius must be greater than 0, got 0' }]);
   });
 });
