@@ -22,3 +22,31 @@ export function pinkPixelVerdict({ x, y, color, hit }) {
 
 /** What the ray hit, by the object's name: the ground, a light, or a coloured sphere. */
 const whatIs = (name) => (name === 'ground' ? 'the ground' : name.startsWith('light') ? `${name}, a light` : `the ${name} sphere`);
+
+/**
+ * The slide's answer format with the values the student gave (the pixel and
+ * the camera's H and V): `Pixel: 10,12; H: 30; V: -82`.
+ * @param {{ x: number, y: number, h: number, v: number }} answer
+ */
+export function answerText({ x, y, h, v }) {
+  return `Pixel: ${x},${y}; H: ${plain(h)}; V: ${plain(v)}`;
+}
+
+/** A number as typed: 30, -82, 7.5 (never "-0"). */
+const plain = (n) => String(n === 0 ? 0 : n);
+
+const NUMBER = String.raw`[+\-−]?(?:\d+(?:\.\d*)?|\.\d+)`;
+const ANSWER_LINE = new RegExp(String.raw`^\s*pixel\s*:?\s*(${NUMBER})\s*,\s*(${NUMBER})\s*[;,]?\s*h\s*[:=]?\s*(${NUMBER})\s*°?\s*[;,]?\s*v\s*[:=]?\s*(${NUMBER})\s*°?\s*;?\s*$`, 'i');
+
+/**
+ * Reads an answer line (`Pixel: 10,12; H: 30; V: -82`, any case and spacing,
+ * a typographic minus too) into the text of its four boxes, `{ x, y, h, v }`;
+ * null when the text is not an answer line. The boxes check the values.
+ * @param {string} text
+ */
+export function readAnswerLine(text) {
+  const m = ANSWER_LINE.exec(String(text ?? ''));
+  if (!m) return null;
+  const [x, y, h, v] = m.slice(1).map((s) => s.replace('−', '-'));
+  return { x, y, h, v };
+}

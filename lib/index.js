@@ -21,4 +21,4 @@ export { sceneToJSON, sceneFromJSON, cameraToJSON, cameraFromJSON, sceneToCode }
 export { MODES, modeShader, modeLegend, discriminantColor, angleColor } from './modes.js';
 export { ParallelRenderer } from './workers/parallel.js';
 export { checkTrafficSignal, checkRearLights } from './homework.js';
-export { pinkPixelVerdict } from './activity.js';
+export { pinkPixelVerdict, answerText, readAnswerLine } from './activity.js';

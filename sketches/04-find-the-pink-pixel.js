@@ -4,21 +4,19 @@
  *
  * Type a pixel and the camera's H (turn right) and V (look up), press Check:
  * the pixel's ray is traced and the page says whether it is pink, and if not,
- * what colour it is and what the ray hit. The answer line gives the RAY's own
- * H and V for that pixel — the camera's angles plus the pixel's offset from
- * the middle of the picture — as the inspector shows them. Tick the box to
- * see every pink pixel at once: each one is a right answer.
+ * what colour it is and what the ray hit. The answer line repeats what was
+ * typed, in the slide's format; pasting such a line fills all four boxes.
+ * Tick the box to see every pink pixel at once: each one is a right answer.
  */
 import p5 from 'p5';
-import { Camera, classScene, inspectPixel, colorName, toHex, pinkPixelVerdict } from '../lib/index.js';
-import { createTracerView, createInspector, answerLine, createAnswerForm, createPixelHighlight } from '../lib/p5/index.js';
+import { Camera, classScene, inspectPixel, colorName, toHex, pinkPixelVerdict, answerText, readAnswerLine } from '../lib/index.js';
+import { createTracerView, createInspector, formatAngle, createAnswerForm, createPixelHighlight } from '../lib/p5/index.js';
 
 // The screen and where the camera starts: change them and find pink again.
 const WIDTH = 32;
 const HEIGHT = 24;
 const FOV = 30; // vertical field of view, degrees
 const START = { x: 10, y: 12, h: 0, v: 0 };
-const NOTE = 'Camera H turns the camera right (negative: left) and camera V tilts it up (negative: down), in degrees: they say where the MIDDLE of the picture points. Each pixel\'s ray points a little to the side of that, so the H and V in your answer are the ray\'s own angles for that pixel (the camera\'s angles plus the pixel\'s offset) — the numbers the inspector shows when you click the pixel. The eye stays put, so a ray\'s H and V alone say where it goes.';
 
 const cameraFor = (h, v) => new Camera({ width: WIDTH, height: HEIGHT, fov: FOV, yaw: h, pitch: v });
 
@@ -44,11 +42,12 @@ new p5((p) => {
         v: { label: 'Camera V', value: START.v, rule: { min: -90, max: 90 } },
       },
       onCheck: check,
-      note: NOTE,
+      parse: readAnswerLine, // paste a whole answer line into any box
+      note: document.getElementById('h-and-v'), // the page's picture of H and V
     });
     for (const b of [form.boxes.h, form.boxes.v]) b.input.addEventListener('change', turnCamera);
 
-    createInspector({ view, parent: 'activity' });
+    createInspector({ view, parent: 'activity', title: 'The selected pixel\'s ray, with its own H and V' });
     // A click or an arrow key picks a new pixel: it goes into the boxes and is checked.
     // A new camera re-announces the same pixel: the boxes keep what was typed.
     view.onSelect((s) => {
@@ -81,9 +80,13 @@ new p5((p) => {
   }
 
   // Is this pixel pink? If not: its colour, and what its ray hit.
-  function explain({ x, y }) {
-    const record = inspectPixel(view.scene, view.camera, x, y);
+  function explain(answer) {
+    const record = inspectPixel(view.scene, view.camera, answer.x, answer.y);
     const { pink, colorName: name, message } = pinkPixelVerdict(record);
-    form.show({ ok: pink, message, color: toHex(record.color), data: { result: pink ? 'pink' : 'not-pink', colorName: name }, answer: answerLine(record) });
+    form.show({
+      ok: pink, message, color: toHex(record.color), data: { result: pink ? 'pink' : 'not-pink', colorName: name },
+      answer: answerText(answer), // what the student gave, in the slide's format
+      detail: `The ray through that pixel: H ${formatAngle(record.h)}, V ${formatAngle(record.v)} (the camera's angles plus the pixel's offset from the middle).`,
+    });
   }
 }, document.getElementById('sketch'));

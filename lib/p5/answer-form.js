@@ -1,11 +1,13 @@
 /**
  * An answer form for an activity: checked value boxes and a Check button
- * (Enter in any box checks too), a result line with a colour swatch and ✔/✘,
- * the answer in the lesson's format with a Copy button, and a note.
+ * (Enter in any box checks too), the answer in the lesson's format with the
+ * verdict beside it (a colour swatch, ✔/✘ and a message), a line of detail,
+ * a Copy button, and a note. Pasting a whole answer line into any box fills
+ * every box (`parse`).
  *
- *   const form = createAnswerForm({ parent: 'activity', boxes: { x: { label: 'Pixel x', rule } }, onCheck });
+ *   const form = createAnswerForm({ parent: 'activity', boxes: { x: { label: 'Pixel x', rule } }, onCheck, parse: readAnswerLine });
  *   const values = form.read();   // { x: 10 }, or undefined after marking the bad box in red
- *   form.show({ ok: true, message: 'Pink!', color, answer: 'Pixel: 10,12; H: 1.2; V: 0.3' });
+ *   form.show({ ok: true, message: 'Pink!', color, answer: 'Pixel: 10,12; H: 30; V: -82' });
  */
 import { valueBox } from './scene-form.js';
 import { element } from './dom.js';
@@ -26,25 +28,43 @@ export function readBoxes(boxes) {
  * @param {Record<string, { label: string, value?: number|string, rule?: object }>} options.boxes by name, in order
  * @param {() => void} options.onCheck Check was pressed (or Enter)
  * @param {string} [options.title='Your answer'] the heading
- * @param {string} [options.note] a paragraph under the answer
+ * @param {(text: string) => ?Record<string, string>} [options.parse] reads a pasted answer line into box texts by name, or null
+ * @param {string|Node} [options.note] under the answer
  */
-export function createAnswerForm({ parent, boxes: specs, onCheck, title = 'Your answer', note }) {
+export function createAnswerForm({ parent, boxes: specs, onCheck, title = 'Your answer', parse, note }) {
   const boxes = Object.fromEntries(Object.entries(specs).map(([name, spec]) => [name, valueBox({ name, ...spec })]));
   const checkButton = element('button', { type: 'submit', class: 'rt-button', 'data-check': '' }, 'Check');
   const form = element('form', { class: 'boxes', novalidate: '' }, ...Object.values(boxes).map((b) => b.element), checkButton);
   form.addEventListener('submit', (event) => { event.preventDefault(); onCheck(); });
+  if (parse) {
+    form.addEventListener('paste', (event) => {
+      const values = parse(event.clipboardData?.getData('text/plain') ?? '');
+      if (!values) return; // an ordinary paste into one box
+      event.preventDefault();
+      fill(values);
+    });
+  }
 
-  const result = element('p', { class: 'result', 'data-result': '', role: 'status' });
   const answer = element('code', { class: 'answer', 'data-answer-line': '' });
+  const result = element('span', { class: 'result', 'data-result': '', role: 'status' });
+  const detail = element('p', { class: 'detail', 'data-answer-detail': '' });
   const copyButton = element('button', { type: 'button', class: 'rt-button' }, 'Copy answer');
   copyButton.addEventListener('click', () => navigator.clipboard?.writeText(answer.textContent).catch(() => {}));
   const section = element('section', { class: 'task' },
-    element('h2', {}, title), form, result, element('div', { class: 'answer-row' }, answer, copyButton),
-    note && element('p', { class: 'note' }, note));
+    element('h2', {}, title), form, element('div', { class: 'answer-row' }, answer, result, copyButton), detail,
+    note && (note instanceof Node ? note : element('p', { class: 'note' }, note)));
   (typeof parent === 'string' ? document.getElementById(parent) : parent).append(section);
 
+  /** Puts values in boxes (clearing their messages). */
+  function fill(values) {
+    for (const [name, value] of Object.entries(values)) {
+      boxes[name].input.value = value;
+      boxes[name].clear();
+    }
+  }
+
   return {
-    boxes, result, answer, element: section,
+    boxes, result, answer, detail, element: section, fill,
     /** Every box's value by name, or undefined (the bad boxes say why, and so does the result line). */
     read() {
       const values = readBoxes(boxes);
@@ -54,22 +74,16 @@ export function createAnswerForm({ parent, boxes: specs, onCheck, title = 'Your 
       }
       return values;
     },
-    /** Puts values in boxes (clearing their messages). */
-    fill(values) {
-      for (const [name, value] of Object.entries(values)) {
-        boxes[name].input.value = value;
-        boxes[name].clear();
-      }
-    },
     /**
      * The verdict: ✔ or ✘, a swatch of `color` (CSS, e.g. '#ff5160'), the
-     * message, `data` on the result line's dataset, and the answer line.
+     * message, `data` on the result's dataset, the answer line and a line of detail.
      */
-    show({ ok, message, color, data = {}, answer: line }) {
+    show({ ok, message, color, data = {}, answer: line, detail: more }) {
       const swatch = color && element('span', { class: 'rt-swatch', style: `background: ${color}` });
       result.replaceChildren(...[swatch, (ok ? '✔ ' : '✘ ') + message].filter(Boolean));
       Object.assign(result.dataset, data);
       if (line !== undefined) answer.textContent = line;
+      if (more !== undefined) detail.textContent = more;
     },
   };
 }

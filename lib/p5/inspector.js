@@ -26,10 +26,11 @@ export const AGREE_TOLERANCE = 1e-9;
  * @param {object} options
  * @param {import('./tracer-view.js').TracerView} options.view
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] default: beside the view (its parent)
+ * @param {string} [options.title] a heading above the panel's answer line (say whose angles it shows)
  * @returns {Inspector}
  */
-export function createInspector({ view, parent } = {}) {
-  return new Inspector({ view, parent });
+export function createInspector({ view, parent, title } = {}) {
+  return new Inspector({ view, parent, title });
 }
 
 export class Inspector {
@@ -37,14 +38,14 @@ export class Inspector {
   record = null;
   #unsubscribe;
 
-  constructor({ view, parent }) {
+  constructor({ view, parent, title }) {
     if (!view || typeof view.onSelect !== 'function') throw new TypeError(`view must be a tracer view (createTracerView), got ${show(view)}`);
     this.view = view;
     useStyle();
     this.element = element('section', { class: 'rt-inspector', 'data-inspector': '', 'aria-live': 'polite', 'aria-label': 'Pixel inspector' });
     this.answer = element('p', { class: 'rt-answer', 'data-answer': '' });
     this.body = element('div', { class: 'rt-inspector-body' });
-    this.element.append(this.answer, this.body, this.#csvTools());
+    this.element.append(...[title && element('h2', { class: 'rt-inspector-title' }, title), this.answer, this.body, this.#csvTools()].filter(Boolean));
     resolveParent(parent, view).append(this.element);
     this.#unsubscribe = view.onSelect((selected) => this.show(selected));
     this.show(view.selected);
@@ -140,7 +141,7 @@ export function formatAngle(degrees) {
   return text === '-0.0' ? '0.0' : text;
 }
 
-/** The lesson's answer format: `Pixel: 10,12; H: 30.0; V: -8.2`. */
+/** The lesson's answer format for a pixel's own ray, one decimal: `Pixel: 10,12; H: -1.9; V: 3.2`. */
 export function answerLine({ x, y, h, v }) {
   return `Pixel: ${x},${y}; H: ${formatAngle(h)}; V: ${formatAngle(v)}`;
 }

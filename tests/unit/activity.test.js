@@ -1,6 +1,7 @@
 // The class activity's verdict on one pixel: pink, or its colour and what its ray hit.
 import { describe, it, expect } from 'vitest';
-import { Camera, classScene, inspectPixel, pinkPixelVerdict } from '../../lib/index.js';
+import { Camera, classScene, inspectPixel } from '../../lib/index.js';
+import { pinkPixelVerdict, answerText, readAnswerLine } from '../../lib/activity.js';
 
 const camera = new Camera({ width: 32, height: 24, fov: 30 }); // sketch 04's screen
 const verdictAt = (x, y) => pinkPixelVerdict(inspectPixel(classScene(), camera, x, y));
@@ -22,5 +23,29 @@ describe('pinkPixelVerdict', () => {
   it('tells a dark pixel of the pink sphere from a miss, and names a light as a light', () => {
     expect(pinkPixelVerdict(record([90, 20, 25], 'pink')).message).toMatch(/^That pixel is \w+: it is on the pink sphere, but too dark there to look pink\.$/);
     expect(pinkPixelVerdict(record([255, 255, 255], 'light 1')).message).toBe('That pixel is white: light 1, a light.');
+  });
+});
+
+describe('the answer line', () => {
+  it('repeats the values given, in the slide\'s format', () => {
+    expect(answerText({ x: 10, y: 12, h: 30, v: -82 })).toBe('Pixel: 10,12; H: 30; V: -82');
+    expect(answerText({ x: 0, y: 3, h: -0, v: 7.5 })).toBe('Pixel: 0,3; H: 0; V: 7.5');
+  });
+
+  it('reads an answer line back into the four boxes, whatever the spacing and minus sign', () => {
+    expect(readAnswerLine('Pixel: 10,12; H: 30; V: -82')).toEqual({ x: '10', y: '12', h: '30', v: '-82' });
+    expect(readAnswerLine('  pixel 3 , 4 ;h:-1.9;v: 3.2 ')).toEqual({ x: '3', y: '4', h: '-1.9', v: '3.2' });
+    expect(readAnswerLine('Pixel: 14,9; H: −1.9°; V: 3.2°')).toEqual({ x: '14', y: '9', h: '-1.9', v: '3.2' });
+  });
+
+  it('round-trips: what answerText writes, readAnswerLine reads', () => {
+    const answer = { x: 31, y: 0, h: -179.5, v: 90 };
+    expect(Object.values(readAnswerLine(answerText(answer))).map(Number)).toEqual(Object.values(answer));
+  });
+
+  it('is null for text that is not a whole answer line', () => {
+    for (const text of ['10', 'Pixel: 10,12', 'Pixel: 10,12; H: 30', 'H: 30; V: -82', 'Pixel: a,b; H: 1; V: 2', '', undefined]) {
+      expect(readAnswerLine(text), String(text)).toBeNull();
+    }
   });
 });
