@@ -1,6 +1,7 @@
 import { defineConfig } from 'vite';
 import { readdirSync } from 'node:fs';
 import { resolve } from 'node:path';
+import { p5OfflineI18n } from './scripts/p5-offline-i18n.js';
 
 // Every page is an entry of the static build: the gallery and each sketch.
 const sketchPages = readdirSync('sketches')
@@ -9,6 +10,9 @@ const sketchPages = readdirSync('sketches')
 
 export default defineConfig({
   base: './',
+  // p5's translations from node_modules, not a CDN (scripts/p5-offline-i18n.js): in the build and the dev server's bundle of p5.
+  plugins: [p5OfflineI18n()],
+  optimizeDeps: { rolldownOptions: { plugins: [p5OfflineI18n()] } },
   build: {
     target: 'es2022',
     chunkSizeWarningLimit: 1500, // p5 itself is 1.3 MB: one library, loaded once per page
