@@ -1,0 +1,144 @@
+/**
+ * The mistake on the page. In class nobody sees the browser console, so any
+ * error a sketch raises (in setup — p5 2.x runs it async, so it arrives as an
+ * unhandled rejection —, draw, an event handler, a promise, a library
+ * TypeError/RangeError, a ReferenceError) is shown in a panel marked
+ * `data-error`: the message in large type, the sketch's own file and line
+ * (from the stack, skipping frames in node_modules and lib/) and, when the
+ * file can be fetched from the page's own origin, the line itself.
+ *
+ * Importing lib/p5 installs it; the sketch does nothing. The console keeps
+ * the error (no preventDefault). The panel sits over the page, so the last
+ * good picture stays under it; the next reload (a save) starts without it.
+ * Text goes in with textContent only: a message may quote anything.
+ *
+ * body[data-render]: a mistake can stop a view before its picture is done,
+ * and "rendering" would then never end; so when the panel appears while the
+ * page is not "done", the page says "error". A view that still finishes
+ * afterwards sets "done" as usual, and one that restarts sets "rendering".
+ */
+import { useStyle, element } from './dom.js';
+
+/** Errors already shown, by message and place: a draw() error repeats every frame. */
+const shown = new Map();
+/** Characters of a source line shown at most. */
+const SHOWN_CHARS = 120;
+let panel = null;
+
+/**
+ * Listens for uncaught errors and unhandled rejections on `win` (once per
+ * window, however often the module is loaded).
+ */
+export function installErrorPanel(win = globalThis.window) {
+  if (!win?.addEventListener || win.__sketchbookErrorPanel) return;
+  win.__sketchbookErrorPanel = true;
+  win.addEventListener('error', (event) => {
+    showError(event.error ?? event.message, { url: event.filename, line: event.lineno, column: event.colno });
+  });
+  win.addEventListener('unhandledrejection', (event) => showError(event.reason));
+}
+
+/**
+ * Shows `error` (an Error or any thrown value) in the page's error panel.
+ * @param {unknown} error
+ * @param {{ url?: string, line?: number, column?: number }} [fallback] where the browser says it happened
+ * @returns {HTMLElement|null} the panel (null outside a page)
+ */
+export function showError(error, fallback = {}) {
+  if (typeof document === 'undefined' || !document.body) return null;
+  const message = errorMessage(error);
+  const origin = location.origin;
+  const frame = sketchFrame(typeof error?.stack === 'string' ? error.stack : '', origin)
+    ?? (fallback.url && fallback.line ? sketchFrame(`at ${fallback.url}:${fallback.line}:${fallback.column || 1}`, origin) : null);
+  const key = `${message}\n${frame?.file}:${frame?.line}`;
+  const seen = shown.get(key);
+  if (seen) {
+    seen.count += 1;
+    seen.countElement.textContent = `×${seen.count}`;
+    return panel;
+  }
+
+  useStyle();
+  document.querySelectorAll('.loading-indicator').forEach((spinner) => spinner.remove()); // p5's setup spinner would spin for ever
+  if (!panel || !panel.isConnected) panel = buildPanel();
+  const entry = element('section', { class: 'rt-error-entry' });
+  const countElement = element('span', { class: 'rt-error-count', 'data-error-count': '' });
+  entry.append(element('p', { class: 'rt-error-message', 'data-error-message': '' }, message, ' ', countElement));
+  if (frame) {
+    entry.append(element('p', { class: 'rt-error-where', 'data-error-where': '' }, `${frame.file}:${frame.line}`));
+    showSourceLine(entry, frame);
+  }
+  panel.querySelector('.rt-error-list').append(entry);
+  shown.set(key, { count: 1, countElement });
+  if (document.body.dataset.render !== 'done') document.body.dataset.render = 'error';
+  return panel;
+}
+
+/** "TypeError: radius must be …" for an Error, the value itself for anything else thrown. */
+export function errorMessage(error) {
+  if (error instanceof Error || (error && typeof error.message === 'string')) {
+    return error.name && error.name !== 'Error' ? `${error.name}: ${error.message}` : error.message || String(error.name);
+  }
+  if (typeof error === 'string') return error;
+  try { return JSON.stringify(error) ?? String(error); } catch { return String(error); }
+}
+
+/**
+ * The first stack frame in the sketch's own files: same origin, not in
+ * node_modules, Vite's own modules or the library (a lib/ folder).
+ * @param {string} stack an Error's stack (Chromium `at f (url:line:col)`, Firefox/Safari `f@url:line:col`)
+ * @param {string} origin the page's origin, e.g. "http://localhost:5173"
+ * @returns {{ url: string, file: string, line: number, column: number }|null}
+ *   `file` the path from the site's root, like "sketches/11-my-sketch.js";
+ *   `url` without Vite's query (?t=…)
+ */
+export function sketchFrame(stack, origin) {
+  for (const text of String(stack).split('\n')) {
+    const m = /((?:https?|file):\/\/[^\s()]+?):(\d+):(\d+)\)?\s*$/.exec(text);
+    if (!m) continue;
+    let url;
+    try { url = new URL(m[1]); } catch { continue; }
+    if (url.origin !== origin) continue;
+    const path = url.pathname;
+    if (/\/(node_modules|lib)\//.test(path) || path.startsWith('/@')) continue; // p5, Vite's client, the library
+    if (!/\.[cm]?[jt]sx?$/.test(path)) continue;
+    const file = decodeURIComponent(path.replace(/^\//, ''));
+    return { url: url.origin + url.pathname, file, line: Number(m[2]), column: Number(m[3]) };
+  }
+  return null;
+}
+
+/** Fetches the sketch file (same origin only) and shows the offending line with a caret under the column. */
+async function showSourceLine(entry, frame) {
+  try {
+    const response = await fetch(frame.url, { cache: 'no-store' });
+    if (!response.ok) return;
+    const line = (await response.text()).split(/\r?\n/)[frame.line - 1];
+    if (line === undefined || !line.trim()) return;
+    const indent = line.length - line.trimStart().length;
+    let code = line.trim(), at = Math.max(0, Math.min(code.length - 1, frame.column - 1 - indent));
+    if (code.length > SHOWN_CHARS) { // a long (built, minified) line: the part around the column
+      const from = Math.max(0, Math.min(at - SHOWN_CHARS / 2, code.length - SHOWN_CHARS));
+      code = (from > 0 ? '…' : '') + code.slice(from, from + SHOWN_CHARS) + (from + SHOWN_CHARS < code.length ? '…' : '');
+      at = at - from + (from > 0 ? 1 : 0);
+    }
+    const caret = ' '.repeat(at) + '^';
+    const number = `${frame.line} │ `;
+    entry.append(element('pre', { class: 'rt-error-source', 'data-error-source': '' }, number + code, '\n', ' '.repeat(number.length) + caret));
+  } catch {
+    // The file cannot be had (offline, another origin): the file and line are enough.
+  }
+}
+
+function buildPanel() {
+  const hide = element('button', { type: 'button', class: 'rt-error-hide' }, 'Hide');
+  const box = element('aside', { class: 'rt-error', 'data-error': '', role: 'alert', 'aria-live': 'assertive' },
+    element('div', { class: 'rt-error-head' }, element('strong', {}, 'Mistake in the sketch'), hide),
+    element('div', { class: 'rt-error-list' }),
+    element('p', { class: 'rt-error-hint' }, 'Fix it and save: the page reloads. The browser console (F12) has the whole story.'));
+  hide.addEventListener('click', () => { box.hidden = true; });
+  document.body.append(box);
+  return box;
+}
+
+installErrorPanel();

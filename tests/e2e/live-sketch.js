@@ -1,0 +1,83 @@
+/**
+ * A temporary sketch for the live-coding tests: a page and a script built
+ * from the README's recipe, written under tests/e2e/pages/ (live-*.html and
+ * .js, ignored by git) so a test can save a new version while the page is
+ * open, as a teacher does, and removed afterwards.
+ */
+import { writeFileSync, rmSync } from 'node:fs';
+import { resolve } from 'node:path';
+
+const DIR = resolve('tests/e2e/pages');
+
+/** The README's page recipe, for tests/e2e/pages/<slug>.js. */
+function page(slug) {
+  return `<!doctype html>
+<html lang="en">
+<head>
+  <meta charset="utf-8">
+  <meta name="viewport" content="width=device-width, initial-scale=1">
+  <link rel="icon" href="data:,">
+  <title>99 · Live coding</title>
+  <meta name="description" content="A sketch a test edits while the page is open.">
+  <link rel="stylesheet" href="../../../sketches/sketch.css">
+</head>
+<body class="live-coding">
+  <header><h1>Live coding</h1></header>
+  <main id="sketch" class="rt-layout"></main>
+  <script type="module" src="./${slug}.js"></script>
+</body>
+</html>
+`;
+}
+
+/**
+ * The README's sketch, with pieces swapped in: `sphere` (the Sphere line),
+ * `before` (lines at the start of setup), `after` (lines at the end of setup),
+ * `top` (lines after the imports), `draw` (the body of draw()).
+ */
+export function sketchSource({ sphere = 'new Sphere([0, 0, -20], 4, { color: [1, 0.32, 0.36] })', before = '', after = '', top = '', draw = '' } = {}) {
+  return `import p5 from 'p5';
+import { Scene, Sphere, PointLight, Camera } from '../../../lib/index.js';
+import { createTracerView, createInspector } from '../../../lib/p5/index.js';
+${top}
+new p5((p) => {
+  let view;
+  p.setup = () => {
+    p.noCanvas();
+${before}
+    const scene = new Scene({ background: [0.85, 0.92, 1] })
+      .add(${sphere})
+      .add(new PointLight([-10, 20, 0]));
+    view = createTracerView(p, { scene, camera: new Camera({ width: 64, height: 48 }), grid: true });
+    createInspector({ view }); // click a pixel: its whole story
+${after}
+  };
+  p.draw = () => {
+${draw}
+  };
+}, 'sketch');
+`;
+}
+
+/** The 1-based number of the first line of `source` holding `text`. */
+export function lineOf(source, text) {
+  const index = source.split('\n').findIndex((line) => line.includes(text));
+  if (index < 0) throw new Error(`no line holds ${text}`);
+  return index + 1;
+}
+
+/** Writes tests/e2e/pages/<slug>.html and .js; returns the page's URL and helpers. */
+export function liveSketch(slug, source) {
+  writeFileSync(resolve(DIR, `${slug}.html`), page(slug));
+  writeFileSync(resolve(DIR, `${slug}.js`), source);
+  return {
+    url: `/tests/e2e/pages/${slug}.html`,
+    file: `tests/e2e/pages/${slug}.js`,
+    /** Saves a new version of the script, as an editor does. */
+    save: (text) => writeFileSync(resolve(DIR, `${slug}.js`), text),
+    remove: () => {
+      rmSync(resolve(DIR, `${slug}.js`), { force: true });
+      rmSync(resolve(DIR, `${slug}.html`), { force: true });
+    },
+  };
+}
