@@ -23,7 +23,7 @@ export class Camera {
    * @param {number} [options.yaw=0] turn right, degrees
    * @param {number} [options.pitch=0] look up, degrees, −90 to 90
    */
-  constructor(options = {}) {
+  constructor(options) { // no options: checkOptions gives {}, and the first required field says it is missing
     const { width, height, fov = 30, position = [0, 0, 0], yaw = 0, pitch = 0 } = checkOptions(options, OPTIONS, 'camera');
     this.width = positiveInteger(width, 'width');
     this.height = positiveInteger(height, 'height');

@@ -65,6 +65,8 @@ export function colorToHex(rgb) {
  * yellow, green, cyan, blue or purple. A red that is not fully saturated and
  * not dark is "pink", and so is a light magenta: the lesson's pink sphere,
  * [1, 0.32, 0.36], stays pink as its shading darkens, until it is dim red.
+ * @param {Iterable<number>} rgb `[r, g, b]`, each 0–255
+ * @returns {string}
  */
 export function colorName([r, g, b]) {
   const { h, s, l } = rgbToHsl(r / 255, g / 255, b / 255);

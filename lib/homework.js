@@ -168,7 +168,12 @@ function twoRedLights(lights, red, scene) {
   return fail(label, `Found ${count(red.length, 'red light')}; a car has 2 rear lights, one on each side.`);
 }
 
-/** Same y within a quarter of the smaller radius. */
+/**
+ * @typedef {{ center: { x: number, y: number, z: number }, radius: number }} PlacedLight
+ * A light found in the scene (see findLights), where the checks look at it.
+ */
+
+/** Same y within a quarter of the smaller radius. @param {PlacedLight[]} pair left, right */
 function sameHeight([left, right]) {
   const label = CAR_CHECKS.height;
   const dy = right.center.y - left.center.y;
@@ -181,7 +186,7 @@ function sameHeight([left, right]) {
   return pass(label, `Both at y ≈ ${fmt(left.center.y)}.`);
 }
 
-/** Apart in x (not overlapping) and at about the same z. */
+/** Apart in x (not overlapping) and at about the same z. @param {PlacedLight[]} pair left, right */
 function sideBySide([left, right]) {
   const label = CAR_CHECKS.side;
   const gap = right.center.x - left.center.x, dz = right.center.z - left.center.z;
@@ -200,7 +205,11 @@ function bothVisible(seen, camera) {
   return { ...check, label: CAR_CHECKS.seen };
 }
 
-/** Bonus: the lights' midpoint is the car body's middle (in x). */
+/**
+ * Bonus: the lights' midpoint is the car body's middle (in x).
+ * @param {PlacedLight[]} pair left, right
+ * @param {?{ middle: number }} body
+ */
 function symmetric([left, right], body) {
   const label = CAR_CHECKS.bonus;
   if (!body) return { ...fail(label, 'No car body found (boxes or spheres that are not lights).'), bonus: true };

@@ -297,6 +297,7 @@ const LEGENDS = {
   },
 
   normals() {
+    /** @type {Array<[string, number, number, number]>} */
     const n = [['+x right', 1, 0, 0], ['−x left', -1, 0, 0], ['+y up', 0, 1, 0], ['−y down', 0, -1, 0], ['+z toward the eye', 0, 0, 1], ['−z away', 0, 0, -1]];
     const stops = n.map(([label, x, y, z]) => ({ value: [x, y, z], label, color: rgbHex([(x + 1) * 127.5, (y + 1) * 127.5, (z + 1) * 127.5]) }));
     stops.push({ value: null, label: 'no hit', color: rgbHex(NO_HIT_RGB) });

@@ -62,7 +62,7 @@ export class ProgressiveRenderer {
    * @param {number} [options.slowRaysPerStep=1] pixels per step() in 'slow' mode
    * @param {() => number} [options.now=performance.now] the clock, in milliseconds
    */
-  constructor(options = {}) {
+  constructor(options) { // no options: checkOptions gives {}, and the first required field says it is missing
     const { scene, camera, mode = 'coarse', budgetMs = 8, shader = renderPixel, slowRaysPerStep = 1, now = () => performance.now() } = checkOptions(options, OPTIONS, 'ProgressiveRenderer');
     if (typeof now !== 'function') throw new TypeError(`now must be a function returning milliseconds, got ${show(now)}`);
     this.now = now;

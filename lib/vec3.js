@@ -118,8 +118,9 @@ export function toUnit(out, a, field) {
 export function toVec3(value, field) {
   let x, y, z;
   if (Array.isArray(value) || ArrayBuffer.isView(value)) {
-    if (value.length !== 3) throw new TypeError(`${field} must have 3 numbers [x, y, z], got ${show(value)}`);
-    [x, y, z] = value;
+    const list = /** @type {ArrayLike<number>} */ (value);
+    if (list.length !== 3) throw new TypeError(`${field} must have 3 numbers [x, y, z], got ${show(value)}`);
+    [x, y, z] = [list[0], list[1], list[2]];
   } else if (value && typeof value === 'object') {
     ({ x, y, z } = value);
   } else {

@@ -5,4 +5,4 @@
 import { workerHandler } from './split.js';
 
 const handle = workerHandler();
-self.onmessage = (event) => handle(event.data, (message, transfer) => self.postMessage(message, transfer));
+self.onmessage = (event) => handle(event.data, (message, transfer) => self.postMessage(message, { transfer }));
