@@ -51,8 +51,8 @@ const _hit = { object: null, t: Infinity };
 const _point = vec3();
 const _normal = vec3();
 const _rgb = [0, 0, 0];
-/** What `sphereFocus` found: the discriminant and root count of the sphere that matters. */
-const _focus = { discriminant: 0, roots: 0, found: false };
+/** What `sphereFocus` found: the sphere that matters, its discriminant and root count. */
+const _focus = { index: -1, discriminant: 0, roots: 0 };
 
 /**
  * The shader of a mode: `(scene, camera, x, y, target) => void`, the same
@@ -70,13 +70,13 @@ const SHADERS = {
 
   discriminant(scene, camera, x, y, target) {
     primaryRay(camera, x, y);
-    if (!sphereFocus(scene.objects)) return put(target, camera, x, y, NO_HIT_RGB);
+    if (sphereFocus(scene.objects, _ray, _focus) < 0) return put(target, camera, x, y, NO_HIT_RGB);
     put(target, camera, x, y, discriminantColor(_focus.discriminant, _focus.roots, _rgb));
   },
 
   roots(scene, camera, x, y, target) {
     primaryRay(camera, x, y);
-    if (!sphereFocus(scene.objects)) return put(target, camera, x, y, NO_HIT_RGB);
+    if (sphereFocus(scene.objects, _ray, _focus) < 0) return put(target, camera, x, y, NO_HIT_RGB);
     put(target, camera, x, y, ROOT_RGB[_focus.roots]);
   },
 
@@ -120,22 +120,28 @@ function primaryRay(camera, x, y) {
 }
 
 /**
- * The sphere whose quadratic this pixel shows: the nearest one the scratch
- * ray hits (smallest t > 0); when it hits none, the closest miss — the
- * largest (least negative) discriminant. A sphere whose two roots are both
- * behind the eye (t < 0) is skipped then: the line through the eye meets it,
- * the ray does not (a huge ground sphere under the eye would paint the whole
- * sky "two roots"); it is shown only when every sphere is like that.
- * Writes `_focus`; false when the scene has no sphere.
+ * The sphere whose quadratic a pixel shows, in the discriminant and roots
+ * modes and in the diagrams alike: the nearest sphere the ray hits (smallest
+ * t > 0), even behind a plane or a box that hides it, since the quadratic is a
+ * sphere's; when it hits none, the closest miss — the largest (least negative)
+ * discriminant. A sphere whose two roots are both behind the eye (t < 0) is
+ * skipped then: the line through the eye meets it, the ray does not (a huge
+ * ground sphere under the eye would paint the whole sky "two roots"); it is
+ * chosen only when every sphere is like that. Other objects are skipped.
+ * Writes `out` (`index` in `objects`, `discriminant`, `roots`) and returns
+ * the index, -1 when there is no sphere. Allocates nothing.
+ * @param {object[]} objects the scene's objects (or just its spheres)
+ * @param {import('./ray.js').Ray} ray
+ * @param {{ index: number, discriminant: number, roots: number }} [out]
  */
-function sphereFocus(objects) {
+export function sphereFocus(objects, ray, out = { index: -1, discriminant: 0, roots: 0 }) {
   let nearest = Infinity, behind = false;
-  _focus.found = false;
-  _focus.discriminant = -Infinity;
+  out.index = -1;
+  out.discriminant = -Infinity;
   for (let i = 0; i < objects.length; i++) {
     const sphere = objects[i];
     if (!(sphere instanceof Sphere)) continue;
-    const q = intersectQuadratic(_ray, sphere, _quadratic);
+    const q = intersectQuadratic(ray, sphere, _quadratic);
     let take;
     if (q.t !== null) {
       take = q.t < nearest;
@@ -143,16 +149,16 @@ function sphereFocus(objects) {
     } else if (nearest === Infinity) {
       const isBehind = q.roots > 0;
       // a miss in front beats any sphere behind; among equals, the larger discriminant
-      take = !_focus.found || (behind && !isBehind) || (behind === isBehind && q.discriminant > _focus.discriminant);
+      take = out.index < 0 || (behind && !isBehind) || (behind === isBehind && q.discriminant > out.discriminant);
       if (take) behind = isBehind;
     }
     if (take) {
-      _focus.discriminant = q.discriminant;
-      _focus.roots = q.roots;
-      _focus.found = true;
+      out.index = i;
+      out.discriminant = q.discriminant;
+      out.roots = q.roots;
     }
   }
-  return _focus.found;
+  return out.index;
 }
 
 /**

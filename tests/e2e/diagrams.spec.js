@@ -1,7 +1,7 @@
 // The diagrams of lib/p5/diagrams.js for the class scene: each canvas draws
 // without console errors, and matches its reference screenshot.
 import { test, expect } from '@playwright/test';
-import { expectCanvasScreenshot, watchConsole, waitForDone } from './helpers.js';
+import { clickPixel, expectCanvasScreenshot, watchConsole, waitForDone } from './helpers.js';
 
 const PAGE = '/tests/e2e/pages/diagrams.html';
 
@@ -40,3 +40,31 @@ for (const [diagram, kase] of CANVASES) {
     await expectCanvasScreenshot(page.locator(`canvas[data-diagram="${diagram}"][data-case="${kase}"]`), `diagram-${diagram}-${kase}.png`);
   });
 }
+
+test('with a wall in front of a sphere, the diagrams explain the sphere the discriminant mode shows', async ({ page }) => {
+  const errors = watchConsole(page);
+  await page.goto('/tests/e2e/pages/focus-wall.html');
+  await waitForDone(page);
+  const view = page.locator('[data-tracer]');
+  await clickPixel(view, 16, 12); // the wall hides the sphere this ray goes through
+  await expect(page.locator('body')).toHaveAttribute('data-focus', 'behind the wall');
+  // The mode's colour there is that sphere's discriminant, with two roots: the colour of what the diagram draws.
+  const [shown, expected] = await page.evaluate(async () => {
+    const { Camera, intersectQuadratic } = await import('/lib/index.js');
+    const { discriminantColor } = await import('/lib/modes.js');
+    const c = document.querySelector('[data-tracer]');
+    const shown = Array.from(c.getContext('2d').getImageData(16, 12, 1, 1).data.slice(0, 3));
+    const { ray } = new Camera({ width: 32, height: 24, fov: 30 }).primaryRay(16, 12);
+    const { Sphere } = await import('/lib/index.js');
+    const q = intersectQuadratic(ray, new Sphere([0, 0, -20], 3));
+    return [shown, [q.roots, ...Array.from(Uint8ClampedArray.from(discriminantColor(q.discriminant, q.roots)))]];
+  });
+  expect(expected[0]).toBe(2);
+  expect(shown).toEqual(expected.slice(1));
+  // A pixel whose ray misses both spheres: the closest miss, as the mode shows it.
+  await clickPixel(view, 31, 0);
+  await expect(page.locator('body')).toHaveAttribute('data-focus', 'missed');
+  await clickPixel(view, 16, 12);
+  await expectCanvasScreenshot(page.locator('canvas[data-diagram="wall"]'), 'diagram-wall-behind.png');
+  expect(errors).toEqual([]);
+});

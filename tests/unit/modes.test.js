@@ -1,5 +1,8 @@
 import { describe, it, expect } from 'vitest';
-import { modeShader, modeLegend, MODES, discriminantColor, angleColor, angleRange, depthRange, isHuge } from '../../lib/modes.js';
+import { modeShader, modeLegend, MODES, discriminantColor, angleColor, angleRange, depthRange, isHuge, sphereFocus } from '../../lib/modes.js';
+import { focusTest } from '../../lib/p5/diagrams/focus.js';
+import { Plane } from '../../lib/shapes/plane.js';
+import { Box } from '../../lib/shapes/box.js';
 import { Camera } from '../../lib/camera.js';
 import { Scene } from '../../lib/scene.js';
 import { Sphere, intersectQuadratic } from '../../lib/shapes/sphere.js';
@@ -225,5 +228,48 @@ describe('modeLegend', () => {
 
   it('rejects an unknown mode', () => {
     expect(() => modeLegend('nope', scene, camera)).toThrow(RangeError);
+  });
+});
+
+describe('sphereFocus: one choice for the discriminant mode and the diagrams', () => {
+  // A wall at z = -10 hides a sphere the centre ray goes through; a second sphere, off to the side, is missed.
+  const wall = new Scene({ background: [1, 1, 1] })
+    .add(new Plane([0, 0, -10], [0, 0, 1], { color: [0.6, 0.6, 0.6] }))
+    .add(new Sphere([6, 0, -20], 2, { color: [0, 1, 0] }))
+    .add(new Sphere([0, 0, -20], 3, { color: [1, 0, 0] }));
+  const cam = new Camera({ width: 9, height: 9, fov: 30 });
+  const behind = wall.objects[2];
+
+  it('takes the sphere the ray goes through, even when a plane is the nearest hit', () => {
+    const record = inspectPixel(wall, cam, 4, 4);
+    expect(record.hit.object).toBe(wall.objects[0]); // the wall is what the pixel shows
+    const test = focusTest(record);
+    expect(test.sphere).toBe(behind);
+    expect(test.quadratic.roots).toBe(2);
+    // The discriminant mode colours that pixel for the same sphere.
+    const q = intersectQuadratic(record.ray, behind);
+    expect(pixel(frame('discriminant', wall, cam), cam, 4, 4)).toEqual([...Uint8ClampedArray.from(discriminantColor(q.discriminant, q.roots)), 255]);
+    expect(sphereFocus(wall.objects, record.ray)).toBe(2);
+  });
+
+  it('agrees with the diagrams on every pixel, wall or no wall', () => {
+    for (const sc of [wall, scene]) {
+      for (let y = 0; y < cam.height; y++) {
+        for (let x = 0; x < cam.width; x++) {
+          const record = inspectPixel(sc, cam, x, y);
+          const focus = { index: -1, discriminant: 0, roots: 0 };
+          const index = sphereFocus(sc.objects, record.ray, focus);
+          expect(focusTest(record).sphere).toBe(sc.objects[index]);
+          expect(focusTest(record).quadratic.discriminant).toBe(focus.discriminant);
+        }
+      }
+    }
+  });
+
+  it('finds no sphere in a scene of planes and boxes', () => {
+    const flat = new Scene().add(new Plane([0, -1, 0], [0, 1, 0])).add(new Box([-1, -1, -12], [1, 1, -10]));
+    const record = inspectPixel(flat, cam, 4, 4);
+    expect(sphereFocus(flat.objects, record.ray)).toBe(-1);
+    expect(focusTest(record)).toBeNull();
   });
 });

@@ -1,16 +1,14 @@
-/** Which sphere a pixel's diagrams explain. */
+/** Which sphere a pixel's diagrams explain: the discriminant mode's choice, by the same function. */
+import { sphereFocus } from '../../modes.js';
 
 /**
- * The sphere test of a record worth explaining: the sphere the ray hits,
- * else its closest miss (largest discriminant, skipping spheres wholly
- * behind the eye) — the same choice as the discriminant mode. Null when the
- * record has no sphere tests.
+ * The sphere test of a record (inspectPixel) worth explaining: the one
+ * `sphereFocus` (lib/modes.js) picks for the record's ray — the nearest sphere
+ * the ray hits, even behind a plane or box, else its closest miss. Null when
+ * the record has no sphere tests.
  */
 export function focusTest(record) {
   const tests = record?.tests ?? [];
-  const hit = tests.find((t) => t.sphere === record.hit?.object);
-  if (hit) return hit;
-  const ahead = tests.filter((t) => t.quadratic.roots === 0);
-  const pool = ahead.length ? ahead : tests;
-  return pool.reduce((best, t) => (!best || t.quadratic.discriminant > best.quadratic.discriminant ? t : best), null);
+  if (!tests.length) return null;
+  return tests[sphereFocus(tests.map((t) => t.sphere), record.ray)] ?? null;
 }
