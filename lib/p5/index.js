@@ -4,6 +4,8 @@
  * (`document.body.dataset.render`). The only part of lib/ that imports p5.
  */
 export { createTracerView, TracerView, pixelAt } from './tracer-view.js';
+// The scene in 3D beside a tracer view: eye, image plane, frustum and the selected pixel's rays:
+export { createSceneView, SceneView } from './scene-view.js';
 export { createInspector, Inspector, answerLine, formatNumber, formatVector, formatAngle, pixelCSV, routesAgree } from './inspector.js';
 export { registerView, pageRenderState } from './page-state.js';
 // Diagrams (side/top view, geometric construction, parabola) and legends:

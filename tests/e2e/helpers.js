@@ -11,12 +11,14 @@ import { PNG } from 'pngjs';
  * Collects console errors, warnings and logs (p5's friendly errors are logs)
  * and page errors; call before page.goto. A quiet console is part of the
  * page contract. Chromium's hint about repeated getImageData is left out:
- * the tests' own pixel reads cause it, not the page.
+ * the tests' own pixel reads cause it, not the page; so is the software GL
+ * driver's "GPU stall due to ReadPixels", which headless Chromium logs for any
+ * WebGL canvas it composites (a 3D view), whatever the page does.
  */
 export function watchConsole(page) {
   const errors = [];
   page.on('console', (msg) => {
-    if (!['error', 'warning', 'log'].includes(msg.type()) || msg.text().startsWith('Canvas2D: Multiple readback operations')) return;
+    if (!['error', 'warning', 'log'].includes(msg.type()) || msg.text().startsWith('Canvas2D: Multiple readback operations') || /GL Driver Message .*GPU stall due to ReadPixels/.test(msg.text())) return;
     errors.push(`${msg.type()}: ${msg.text()}`);
   });
   page.on('pageerror', (err) => errors.push(String(err)));
