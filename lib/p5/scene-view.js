@@ -22,7 +22,7 @@ import { Plane } from '../shapes/plane.js';
 import { Box } from '../shapes/box.js';
 import { inspectPixel } from '../explain.js';
 import { vec3, sub, dot, normalize, cross } from '../vec3.js';
-import { show } from '../check.js';
+import { show, checkOptions } from '../check.js';
 import {
   imagePlane, pixelCenter, pickImagePlane, raySegments, sceneBounds, orbitCamera, screenRay, projectToScreen, HUGE_RADIUS,
 } from '../rays3d.js';
@@ -71,10 +71,7 @@ export class SceneView {
   #extra = []; #drag = null; #target; #watching = 0; #labels = [];
 
   constructor(p, options = {}) {
-    if (options === null || typeof options !== 'object') throw new TypeError(`createSceneView takes an options object like { view }, got ${show(options)}`);
-    for (const key of Object.keys(options)) {
-      if (!OPTIONS.includes(key)) throw new TypeError(`unknown scene view option "${key}" (known: ${OPTIONS.join(', ')})`);
-    }
+    checkOptions(options, OPTIONS, 'scene view');
     const { view, width = 480, height = 360, parent, label = 'The scene in 3D', planeDistance = 'auto', frustum = true, orbit = {}, controls = true } = options;
     if (!view || typeof view.onSelect !== 'function' || !view.camera) throw new TypeError(`createSceneView needs { view }: a tracer view, got ${show(view)}`);
     for (const [name, v] of [['width', width], ['height', height]]) {
@@ -566,10 +563,9 @@ function nearestAhead(scene, camera) {
 }
 
 function checkOrbit(orbit) {
-  if (orbit === null || typeof orbit !== 'object') throw new TypeError(`orbit must be an object like { yaw, pitch, distance }, got ${show(orbit)}`);
+  checkOptions(orbit, ['yaw', 'pitch', 'distance'], 'orbit');
   const out = {};
   for (const key of Object.keys(orbit)) {
-    if (!['yaw', 'pitch', 'distance'].includes(key)) throw new TypeError(`unknown orbit option "${key}" (known: yaw, pitch, distance)`);
     const v = orbit[key];
     if (typeof v !== 'number' || !Number.isFinite(v) || (key === 'distance' && v <= 0)) throw new RangeError(`orbit.${key} must be a ${key === 'distance' ? 'distance greater than 0' : 'number of degrees'}, got ${show(v)}`);
     out[key] = v;
