@@ -6,13 +6,14 @@
  * colour, how much it reflects and lets through, and its emission — a sphere
  * that gives off light IS a light. Change a box and the picture is traced
  * again; a bad value gets a message beside its box and changes nothing.
- * The scene travels in the page's link (?scene=…) and as code.
+ * The scene travels in the page's link (#scene=…, compressed) and as code.
  */
 import p5 from 'p5';
 import { Camera, classScene } from '../lib/index.js';
 import { sceneToJSON, sceneToCode } from '../lib/serialize.js';
 import { createTracerView, createInspector } from '../lib/p5/index.js';
-import { createSceneForm, encodeScene, decodeScene } from '../lib/p5/scene-form.js';
+import { createSceneForm } from '../lib/p5/scene-form.js';
+import { readSceneLink, sceneLinkURL, linkNotice } from '../lib/p5/scene-link.js';
 import { element } from '../lib/p5/dom.js';
 
 // The picture: its size in pixels and how wide the eye sees.
@@ -23,9 +24,9 @@ const FOV = 30;
 new p5((p) => {
   let view, status;
 
-  p.setup = () => {
+  p.setup = async () => {
     p.noCanvas();
-    const { scene, problem } = sceneFromLink();
+    const { scene, problem } = await sceneFromLink();
     view = createTracerView(p, { scene, camera: new Camera({ width: WIDTH, height: HEIGHT, fov: FOV }), scale: 3, label: `${WIDTH} × ${HEIGHT} pixels` });
     createInspector({ view }); // beside the picture
 
@@ -36,16 +37,14 @@ new p5((p) => {
     values.append(panel, shareTools());
     createSceneForm({ json: sceneToJSON(scene), parent: panel, onChange: (changed, json) => {
       view.setScene(changed);
-      history.replaceState(null, '', `?scene=${encodeScene(json)}`); // the link now shares this scene
+      shareInLink(json); // the link now shares this scene
     } });
   };
 
-  // ?scene=… in the link, else the class scene; a bad link says why and shows the class scene.
-  function sceneFromLink() {
-    const link = new URLSearchParams(location.search).get('scene');
-    if (link === null) return { scene: classScene(), problem: '' };
+  // #scene=… (or an older ?scene=…) in the link, else the class scene; a bad link says why and shows the class scene.
+  async function sceneFromLink() {
     try {
-      return { scene: decodeScene(link), problem: '' };
+      return { scene: (await readSceneLink(location.href)) ?? classScene(), problem: '' };
     } catch (error) {
       return { scene: classScene(), problem: `The scene in this link could not be read (${error.message}), so here is the class scene.` };
     }
@@ -59,8 +58,20 @@ new p5((p) => {
       codeBox.hidden = false;
       share(codeBox.value, 'Code copied: paste it into a sketch.');
     });
-    const copyLink = button('Copy link', () => share(location.href, 'Link copied: paste it into the chat.'));
+    const copyLink = button('Copy link', () => {
+      const { open, message } = linkNotice(location.href.length);
+      if (open) share(location.href, message);
+      else status.textContent = message;
+    });
     return element('section', { class: 'card share' }, copyCode, copyLink, status, codeBox);
+  }
+
+  // Compressing is asynchronous: only the latest edit's link is kept.
+  let edits = 0;
+  async function shareInLink(json) {
+    const edit = ++edits;
+    const url = await sceneLinkURL(location.href, json);
+    if (edit === edits) history.replaceState(null, '', url);
   }
 
   const button = (label, onClick) => {

@@ -1,0 +1,128 @@
+/**
+ * A scene in a page's link, to share it: compact, in the fragment, and read
+ * in time that does not grow faster than the link.
+ *
+ *   #scene=z.<base64url of the deflate-raw compressed compact JSON>
+ *
+ * The fragment (`#…`) never reaches a server, so no "431 Request Header Fields
+ * Too Large" however big the scene; compression makes a link 3–5 times shorter
+ * than the base64url JSON of `?scene=…`, which is still read (old links keep
+ * working). A link longer than a browser opens is refused with a message, a
+ * link a chat might cut gets a warning (`linkNotice`). Decompression stops at
+ * MAX_SCENE_BYTES: a small link cannot unpack into gigabytes.
+ *
+ *   const scene = await readSceneLink(location.href);         // null when the link has none
+ *   history.replaceState(null, '', await sceneLinkURL(location.href, json));
+ */
+import { compactSceneJSON, decodeScene } from './scene-form.js';
+import { sceneFromJSON } from '../serialize.js';
+
+/** Links longer than this may be cut by chats and e-mail. */
+export const LINK_WARN_LENGTH = 8_000;
+/** Chromium opens no longer URL (2 MB); other browsers' limits are larger. */
+export const LINK_MAX_LENGTH = 2 * 1024 * 1024;
+/** A scene's JSON text may unpack to this many bytes, no more. */
+export const MAX_SCENE_BYTES = 8 * 1024 * 1024;
+
+const PREFIX = 'z.';
+
+/** The scene's text in `href`: the fragment's `scene=` first, else the query's; null when neither. */
+export function sceneTextInLink(href) {
+  const url = new URL(href);
+  const inFragment = new URLSearchParams(url.hash.slice(1)).get('scene');
+  return inFragment ?? url.searchParams.get('scene');
+}
+
+/** Scene JSON as link text: `z.` + base64url of its compressed compact JSON. */
+export async function encodeSceneLink(json) {
+  const bytes = new TextEncoder().encode(JSON.stringify(compactSceneJSON(json)));
+  return PREFIX + toBase64url(await pipe(bytes, new CompressionStream('deflate-raw')));
+}
+
+/**
+ * The Scene in link text: `z.…` (compressed), or the older base64url JSON or
+ * plain JSON text; a TypeError/RangeError saying what is wrong otherwise.
+ */
+export async function decodeSceneLink(text) {
+  const t = String(text ?? '').trim();
+  if (!t.startsWith(PREFIX)) return decodeScene(t);
+  const body = t.slice(PREFIX.length);
+  if (!/^[A-Za-z0-9_-]+$/.test(body)) throw new TypeError('the scene in the link is not base64url text');
+  let bytes;
+  try {
+    bytes = await pipe(fromBase64url(body), new DecompressionStream('deflate-raw'), MAX_SCENE_BYTES);
+  } catch (error) {
+    if (error instanceof RangeError) throw error;
+    throw new TypeError('the scene in the link is cut short or damaged');
+  }
+  let json;
+  try {
+    json = new TextDecoder('utf-8', { fatal: true }).decode(bytes);
+  } catch {
+    throw new TypeError('the scene in the link is not text');
+  }
+  return sceneFromJSON(json);
+}
+
+/** The Scene in a page's link, null when it has none; throws (see decodeSceneLink) when it cannot be read. */
+export async function readSceneLink(href) {
+  const text = sceneTextInLink(href);
+  return text === null ? null : decodeSceneLink(text);
+}
+
+/** `href` sharing the scene `json`: in the fragment, and the query's old `scene=` gone. */
+export async function sceneLinkURL(href, json) {
+  const url = new URL(href);
+  url.searchParams.delete('scene');
+  url.hash = `scene=${await encodeSceneLink(json)}`;
+  return url.href;
+}
+
+/**
+ * What to say about a link of `length` characters: `{ open: false }` when no
+ * browser would open it, a `warning` when a chat might cut it.
+ */
+export function linkNotice(length) {
+  const n = length.toLocaleString('en');
+  if (length > LINK_MAX_LENGTH) {
+    return { open: false, message: `This link is ${n} characters long, more than a browser opens: copy the scene as code instead.` };
+  }
+  if (length > LINK_WARN_LENGTH) {
+    return { open: true, message: `Link copied, but it is ${n} characters long: a chat or an e-mail may cut it. If it does not open, copy the scene as code.` };
+  }
+  return { open: true, message: 'Link copied: paste it into the chat.' };
+}
+
+/* ---------------- bytes ---------------- */
+
+/** `bytes` through a (de)compression stream; a RangeError past `max` bytes out. */
+async function pipe(bytes, transform, max = Infinity) {
+  const reader = new Blob([bytes]).stream().pipeThrough(transform).getReader();
+  const chunks = [];
+  let total = 0;
+  for (;;) {
+    const { done, value } = await reader.read();
+    if (done) break;
+    total += value.length;
+    if (total > max) {
+      await reader.cancel();
+      throw new RangeError(`the scene in the link unpacks to more than ${max.toLocaleString('en')} bytes`);
+    }
+    chunks.push(value);
+  }
+  const out = new Uint8Array(total);
+  let at = 0;
+  for (const c of chunks) { out.set(c, at); at += c.length; }
+  return out;
+}
+
+function toBase64url(bytes) {
+  let binary = '';
+  for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
+  return btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
+}
+
+function fromBase64url(text) {
+  const binary = atob(text.replace(/-/g, '+').replace(/_/g, '/'));
+  return Uint8Array.from(binary, (c) => c.charCodeAt(0));
+}
