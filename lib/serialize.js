@@ -244,10 +244,13 @@ const isGrey = (c) => c[0] === c[1] && c[1] === c[2];
 function withoutDefaults(data, defaults) {
   const out = {};
   for (const [key, value] of Object.entries(defaults)) {
-    if (JSON.stringify(data[key]) !== JSON.stringify(value)) out[key] = data[key];
+    if (!same(data[key], value)) out[key] = data[key];
   }
   return out;
 }
+
+/** Equal values, −0 not 0 (JSON.stringify would say they are the same). */
+const same = (a, b) => (Array.isArray(a) && Array.isArray(b) ? a.length === b.length && a.every((x, i) => same(x, b[i])) : Object.is(a, b));
 
 const COLOR_KEYS = new Set(['background', 'color', 'emission']);
 
@@ -255,10 +258,11 @@ const COLOR_KEYS = new Set(['background', 'color', 'emission']);
 function literal(value, isColor = false) {
   if (Array.isArray(value)) return isColor ? colorLiteral(value) : `[${value.map((v) => literal(v)).join(', ')}]`;
   if (value && typeof value === 'object') {
-    const entries = Object.entries(value).map(([k, v]) => `${k}: ${k === 'emission' && isGrey(v) ? v[0] : literal(v, COLOR_KEYS.has(k))}`);
+    const entries = Object.entries(value).map(([k, v]) => `${k}: ${k === 'emission' && isGrey(v) ? literal(v[0]) : literal(v, COLOR_KEYS.has(k))}`);
     return entries.length ? `{ ${entries.join(', ')} }` : '{}';
   }
-  return typeof value === 'string' ? quote(value) : String(value);
+  if (typeof value === 'string') return quote(value);
+  return Object.is(value, -0) ? '-0' : String(value); // String(-0) is '0'
 }
 
 /** A string literal in single quotes. */
@@ -268,10 +272,10 @@ function quote(text) {
 
 /** '#rrggbb' when it says the same number more shortly, else [r, g, b]. */
 function colorLiteral(rgb) {
-  const plain = `[${rgb.join(', ')}]`;
+  const plain = `[${rgb.map((c) => literal(c)).join(', ')}]`;
   const bytes = rgb.map((c) => Math.round(c * 255));
   const exact = bytes.every((b, i) => b <= 255 && b / 255 === rgb[i]);
-  if (!exact || rgb.every((c) => String(c).length <= 5)) return plain;
+  if (!exact || rgb.some((c) => Object.is(c, -0)) || rgb.every((c) => String(c).length <= 5)) return plain;
   return "'#" + bytes.map((b) => b.toString(16).padStart(2, '0')).join('') + "'";
 }
 
@@ -286,7 +290,9 @@ function identifier(name, taken) {
   return unique;
 }
 
-const RESERVED = new Set(['break', 'case', 'catch', 'class', 'const', 'continue', 'debugger', 'default', 'delete', 'do',
+// Every word a strict-mode (module) binding may not be, and the names the code itself uses.
+const RESERVED = new Set(['implements', 'interface', 'package', 'private', 'protected', 'public', 'eval', 'arguments',
+  'break', 'case', 'catch', 'class', 'const', 'continue', 'debugger', 'default', 'delete', 'do',
   'else', 'export', 'extends', 'false', 'finally', 'for', 'function', 'if', 'import', 'in', 'instanceof', 'let', 'new',
   'null', 'return', 'static', 'super', 'switch', 'this', 'throw', 'true', 'try', 'typeof', 'var', 'void', 'while',
   'with', 'yield', 'await', 'enum', 'Scene', 'Sphere', 'Plane', 'Box', 'PointLight', 'undefined', 'NaN', 'Infinity']);
