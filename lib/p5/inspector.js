@@ -330,9 +330,18 @@ export function pixelCSV(r) {
   return [CSV_HEAD, ...rows].map((row) => row.map(csvCell).join(',')).join('\n') + '\n';
 }
 
-function csvCell(cell) {
-  const text = String(cell);
-  return /[",\n]/.test(text) ? `"${text.replace(/"/g, '""')}"` : text;
+const PLAIN_NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
+
+/**
+ * One CSV cell. Text a spreadsheet would run as a formula (it starts with
+ * = + - @, a tab or a CR, as a name like =HYPERLINK(…) can) gets a leading '
+ * so it shows as text; plain numbers stay numbers. A cell with a quote, a
+ * comma, a CR or a LF is quoted.
+ */
+export function csvCell(cell) {
+  let text = String(cell);
+  if (/^[=+\-@\t\r]/.test(text) && !PLAIN_NUMBER.test(text)) text = `'${text}`;
+  return /[",\r\n]/.test(text) ? `"${text.replace(/"/g, '""')}"` : text;
 }
 
 function resolveParent(parent, view) {
