@@ -35,14 +35,40 @@ export function bool(value, field) {
   return value;
 }
 
-/** Short printable form of a bad value for error messages. */
+/** The longest `show` text: a message echoes a bad value, never a whole megabyte of it. */
+export const SHOW_MAX = 80;
+
+/**
+ * Short printable form of a bad value for error messages: at most SHOW_MAX
+ * characters (cut with "…"), however long or deeply nested the value; never throws.
+ */
 export function show(value) {
-  if (typeof value === 'string') return JSON.stringify(value);
-  if (Array.isArray(value)) return `[${value.map(show).join(', ')}]`;
-  if (value && typeof value === 'object') {
-    try { return JSON.stringify(value); } catch { return String(value); }
+  let text;
+  try {
+    text = showWithin(value, 4);
+  } catch {
+    text = Object.prototype.toString.call(value); // a proxy, an object without a prototype, …
   }
-  return String(value);
+  return text.length > SHOW_MAX ? `${text.slice(0, SHOW_MAX - 1)}…` : text;
+}
+
+/** `show` down to `depth` levels, each list cut once it has said enough. */
+function showWithin(value, depth) {
+  if (typeof value === 'string') return JSON.stringify(value.length > SHOW_MAX ? value.slice(0, SHOW_MAX) : value);
+  if (typeof value === 'function') return `function ${value.name || '(anonymous)'}`;
+  if (value === null || typeof value !== 'object') return String(value);
+  if (depth === 0) return Array.isArray(value) ? '[…]' : '{…}';
+  const parts = [];
+  let length = 0;
+  const entries = Array.isArray(value) ? value : Object.keys(value);
+  for (let i = 0; i < entries.length; i++) {
+    if (length > SHOW_MAX) { parts.push('…'); break; }
+    const part = Array.isArray(value) ? showWithin(value[i], depth - 1)
+      : `${JSON.stringify(entries[i].slice(0, SHOW_MAX))}:${showWithin(value[entries[i]], depth - 1)}`;
+    parts.push(part);
+    length += part.length + 2;
+  }
+  return Array.isArray(value) ? `[${parts.join(', ')}]` : `{${parts.join(',')}}`;
 }
 
 /** A whole number in [0, limit) — a pixel coordinate. */
@@ -83,7 +109,7 @@ function unknownOption(key, known, where) {
     const d = editDistance(key.toLowerCase(), name.toLowerCase());
     if (d < bestDistance) { best = name; bestDistance = d; }
   }
-  const message = `unknown ${where} option ${JSON.stringify(key)}`;
+  const message = `unknown ${where} option ${show(key)}`;
   if (best === null) return `${message} (it takes no options)`;
   const close = bestDistance <= Math.max(2, Math.floor(key.length / 2));
   return close

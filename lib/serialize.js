@@ -157,26 +157,60 @@ function vector(v) {
 
 /* ---- from JSON ---- */
 
+/** Scene JSON is 5 levels deep (objects[0].material.color[0]); deeper than this is no scene. */
+export const MAX_JSON_DEPTH = 32;
+
 function parse(json, what) {
   let data = json;
   if (typeof json === 'string') {
     try {
       data = JSON.parse(json);
     } catch (error) {
-      throw new TypeError(`${what} is not valid JSON: ${error.message}`);
+      throw new TypeError(`${what} is not valid JSON: ${error.message.slice(0, 160)}`);
     }
   }
   if (data === null || typeof data !== 'object' || Array.isArray(data)) {
     throw new TypeError(`${what} must be an object, got ${show(data)}`);
   }
+  checkDepth(data, what);
   return data;
+}
+
+/**
+ * A RangeError naming the path where `data` nests deeper than MAX_JSON_DEPTH
+ * (a hostile 10,000-level array would overflow the stack of any recursive
+ * check). Walks with its own stack, not recursion.
+ */
+function checkDepth(data, what) {
+  const stack = [[data, 0, null]]; // [value, depth, parent entry] — the path is rebuilt only on failure
+  while (stack.length) {
+    const entry = stack.pop();
+    const [value, depth] = entry;
+    if (value === null || typeof value !== 'object') continue;
+    if (depth >= MAX_JSON_DEPTH) {
+      throw new RangeError(`${what} is nested more than ${MAX_JSON_DEPTH} levels deep, at ${pathOf(entry)}`);
+    }
+    if (Array.isArray(value)) {
+      for (let i = 0; i < value.length; i++) if (value[i] !== null && typeof value[i] === 'object') stack.push([value[i], depth + 1, entry, `[${i}]`]);
+    } else {
+      for (const key of Object.keys(value)) if (value[key] !== null && typeof value[key] === 'object') stack.push([value[key], depth + 1, entry, `.${key.slice(0, 40)}`]);
+    }
+  }
+}
+
+/** 'objects[0].material.color[0]…' from a checkDepth entry's chain of parents. */
+function pathOf(entry) {
+  const parts = [];
+  for (let e = entry; e && e[3] !== undefined; e = e[2]) parts.push(e[3]);
+  const path = parts.reverse().join('').replace(/^\./, '');
+  return path.length > 120 ? `${path.slice(0, 119)}…` : path;
 }
 
 /** A misspelt field would silently fall back to its default: name it instead. */
 function onlyFields(data, allowed, path) {
   for (const key of Object.keys(data)) {
     if (!allowed.includes(key)) {
-      throw new TypeError(`${path} has no field ${JSON.stringify(key)} (its fields: ${allowed.join(', ')})`);
+      throw new TypeError(`${path} has no field ${show(key)} (its fields: ${allowed.join(', ')})`);
     }
   }
 }
