@@ -10,14 +10,18 @@ import { Ray } from './ray.js';
 
 const DEG = Math.PI / 180;
 
+/** The camera size limit: at most 16384 pixels a side (a canvas's limit) and 4096 × 4096 pixels in all (a 64 MB frame). */
+export const MAX_CAMERA_SIDE = 16384;
+export const MAX_CAMERA_PIXELS = 4096 * 4096;
+
 /** The options a camera takes. */
 const OPTIONS = ['width', 'height', 'fov', 'position', 'yaw', 'pitch'];
 
 export class Camera {
   /**
    * @param {object} options
-   * @param {number} options.width image width in pixels
-   * @param {number} options.height image height in pixels
+   * @param {number} options.width image width in pixels, at most MAX_CAMERA_SIDE (16384)
+   * @param {number} options.height image height in pixels, at most 16384; width × height at most MAX_CAMERA_PIXELS (4096 × 4096)
    * @param {number} [options.fov=30] vertical field of view, degrees, in (0, 180)
    * @param {number[]|{x,y,z}} [options.position=[0,0,0]] the eye
    * @param {number} [options.yaw=0] turn right, degrees
@@ -27,6 +31,11 @@ export class Camera {
     const { width, height, fov = 30, position = [0, 0, 0], yaw = 0, pitch = 0 } = checkOptions(options, OPTIONS, 'camera');
     this.width = positiveInteger(width, 'width');
     this.height = positiveInteger(height, 'height');
+    if (width > MAX_CAMERA_SIDE) throw new RangeError(`width must be at most ${MAX_CAMERA_SIDE} pixels, got ${width}`);
+    if (height > MAX_CAMERA_SIDE) throw new RangeError(`height must be at most ${MAX_CAMERA_SIDE} pixels, got ${height}`);
+    if (width * height > MAX_CAMERA_PIXELS) {
+      throw new RangeError(`width × height must be at most ${MAX_CAMERA_PIXELS.toLocaleString('en')} pixels (4096 × 4096), got ${width} × ${height}`);
+    }
     finiteNumber(fov, 'fov');
     if (!(fov > 0 && fov < 180)) throw new RangeError(`fov must be between 0 and 180 degrees (not included), got ${fov}`);
     this.fov = fov;

@@ -4,6 +4,12 @@
  */
 import { show } from './check.js';
 
+/**
+ * The largest colour channel (a light's, say): products of a few such numbers
+ * stay finite, so no Infinity × 0 = NaN turns a bright pixel black.
+ */
+export const MAX_COLOR = 1e6;
+
 const NAMES = {
   black: '#000000', white: '#ffffff', gray: '#808080', grey: '#808080',
   silver: '#c0c0c0', red: '#ff0000', maroon: '#800000', orange: '#ffa500',
@@ -33,13 +39,14 @@ function checkArray(value, field) {
       throw new TypeError(`${field}[${i}] must be a finite number, got ${show(c)}`);
     }
     if (c < 0) throw new RangeError(`${field}[${i}] must not be negative, got ${c}`);
+    if (c > MAX_COLOR) throw new RangeError(`${field}[${i}] must be at most ${MAX_COLOR} (brighter is white anyway), got ${c}`);
     rgb[i] = c;
   });
   return rgb;
 }
 
 function parseString(text, field) {
-  if (NAMES[text]) text = NAMES[text];
+  if (Object.hasOwn(NAMES, text)) text = NAMES[text]; // not 'constructor' or '__proto__' from Object.prototype
   let m = /^#([0-9a-f]{3})$/.exec(text);
   if (m) return checkArray([...m[1]].map((h) => parseInt(h + h, 16) / 255), field);
   m = /^#([0-9a-f]{6})$/.exec(text);

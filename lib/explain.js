@@ -5,7 +5,7 @@
  */
 import { intersectQuadratic, intersectGeometric } from './shapes/sphere.js';
 import { trace } from './trace.js';
-import { writePixel } from './render.js';
+import { writePixel, checkSceneAndCamera } from './render.js';
 import { pixelCoordinate } from './check.js';
 
 const _bytes = new Uint8ClampedArray(4);
@@ -17,6 +17,7 @@ const _bytes = new Uint8ClampedArray(4);
  * null; `color` `[r, g, b]` bytes, identical to `render`'s pixel.
  */
 export function inspectPixel(scene, camera, x, y) {
+  checkSceneAndCamera(scene, camera);
   pixelCoordinate(x, 'x', camera.width);
   pixelCoordinate(y, 'y', camera.height);
   const { ray, h, v } = camera.primaryRay(x, y);

@@ -3,7 +3,7 @@
  * sphere whose material has an emission) is a light too, at its centre.
  */
 import { toVec3, vec3 } from './vec3.js';
-import { toColor } from './color.js';
+import { toColor, MAX_COLOR } from './color.js';
 import { finiteNumber, checkOptions } from './check.js';
 
 /** The options a point light takes as its second argument. */
@@ -25,6 +25,7 @@ export class PointLight {
     this.position = toVec3(position, 'position');
     finiteNumber(intensity, 'intensity');
     if (intensity < 0) throw new RangeError(`intensity must not be negative, got ${intensity}`);
+    if (intensity > MAX_COLOR) throw new RangeError(`intensity must be at most ${MAX_COLOR}, got ${intensity}`);
     this.color = toColor(color, 'color');
     this.intensity = intensity;
     /** What it gives off: colour × intensity. */

@@ -6,6 +6,9 @@ import { Ray } from './ray.js';
 import { copy } from './vec3.js';
 import { trace } from './trace.js';
 import { tileCandidates, TILE } from './bounds.js';
+import { Scene } from './scene.js';
+import { Camera } from './camera.js';
+import { show, pixelCoordinate } from './check.js';
 
 const _ray = new Ray();
 const _color = [0.5, 0.5, 0.5]; // doubles from the start (one array shape)
@@ -14,12 +17,25 @@ const _color = [0.5, 0.5, 0.5]; // doubles from the start (one array shape)
  * Renders the scene as seen by the camera, tile by tile: each primary ray is
  * tested only against the shapes that can be under its tile (lib/bounds.js),
  * which gives the same nearest hit as testing them all.
- * @param {Uint8ClampedArray} [target] RGBA, width·height·4 bytes
- * @param {{y0: number, y1: number}} [rows] render only rows y0 ≤ y < y1 (a worker's band)
+ * @param {Scene} scene
+ * @param {Camera} camera
+ * @param {Uint8ClampedArray} [target] RGBA, at least width·height·4 bytes (a new one when left out)
+ * @param {{y0: number, y1: number}} [rows] render only rows y0 ≤ y < y1 (a worker's band), 0 ≤ y0 ≤ y1 ≤ height
  * @returns {Uint8ClampedArray} RGBA, row by row from the top
  */
-export function render(scene, camera, target = new Uint8ClampedArray(camera.width * camera.height * 4), rows) {
+export function render(scene, camera, target, rows) {
+  checkSceneAndCamera(scene, camera);
+  const bytes = camera.width * camera.height * 4;
+  if (target === undefined) target = new Uint8ClampedArray(bytes);
+  else if (!(target instanceof Uint8ClampedArray)) throw new TypeError(`target must be a Uint8ClampedArray, got ${show(target)}`);
+  else if (target.length < bytes) throw new RangeError(`target must hold width × height × 4 = ${bytes} bytes, got ${target.length}`);
   const y0 = rows?.y0 ?? 0, y1 = rows?.y1 ?? camera.height;
+  if (rows !== undefined) {
+    if (rows === null || typeof rows !== 'object') throw new TypeError(`rows must be { y0, y1 }, got ${show(rows)}`);
+    pixelCoordinate(y0, 'rows.y0', camera.height + 1);
+    pixelCoordinate(y1, 'rows.y1', camera.height + 1);
+    if (y1 < y0) throw new RangeError(`rows.y1 must not be less than rows.y0, got y0 = ${y0}, y1 = ${y1}`);
+  }
   return renderRows(scene, camera, target, y0, y1, tileCandidates(scene, camera, y0, y1));
 }
 
@@ -68,4 +84,10 @@ export function writePixel(target, i, color) {
   target[i + 1] = color[1] * 255;
   target[i + 2] = color[2] * 255;
   target[i + 3] = 255;
+}
+
+/** A TypeError unless `scene` is a Scene and `camera` a Camera (render's and inspectPixel's first check). */
+export function checkSceneAndCamera(scene, camera) {
+  if (!(scene instanceof Scene)) throw new TypeError(`scene must be a Scene (new Scene(…)), got ${show(scene)}`);
+  if (!(camera instanceof Camera)) throw new TypeError(`camera must be a Camera (new Camera({ width, height })), got ${show(camera)}`);
 }
