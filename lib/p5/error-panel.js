@@ -30,8 +30,9 @@ let panel = null;
  * window, however often the module is loaded).
  */
 export function installErrorPanel(win = globalThis.window) {
-  if (!win?.addEventListener || win.__sketchbookErrorPanel) return;
-  win.__sketchbookErrorPanel = true;
+  const flags = /** @type {any} */ (win);
+  if (!win?.addEventListener || flags.__sketchbookErrorPanel) return;
+  flags.__sketchbookErrorPanel = true;
   win.addEventListener('error', (event) => {
     showError(event.error ?? event.message, { url: event.filename, line: event.lineno, column: event.colno });
   });
@@ -48,7 +49,8 @@ export function showError(error, fallback = {}) {
   if (typeof document === 'undefined' || !document.body) return null;
   const message = errorMessage(error);
   const origin = location.origin;
-  const frame = sketchFrame(typeof error?.stack === 'string' ? error.stack : '', origin)
+  const stack = /** @type {any} */ (error)?.stack;
+  const frame = sketchFrame(typeof stack === 'string' ? stack : '', origin)
     ?? (fallback.url && fallback.line ? sketchFrame(`at ${fallback.url}:${fallback.line}:${fallback.column || 1}`, origin) : null);
   const key = `${message}\n${frame?.file}:${frame?.line}`;
   const seen = shown.get(key);

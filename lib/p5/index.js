@@ -19,4 +19,4 @@ export { createPixelMarks, createPixelHighlight, findPixels } from './pixel-mark
 export { createSliderField, fieldMessage } from './slider-field.js';
 export { createSwitches } from './switches.js';
 export { createExamplePicker, exampleInLink } from './example-picker.js';
-import './error-panel.js'; // any error a sketch raises is shown on the page, marked data-error
+import './live-coding.js'; // mistakes shown on the page (data-error); a save's reload keeps the page's place

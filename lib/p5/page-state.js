@@ -25,6 +25,11 @@ export function registerView(view) {
   };
 }
 
+/** The registered views, in the order they were made. */
+export function pageViews() {
+  return [...views.keys()];
+}
+
 /** "rendering", "done", or null when no view is registered. */
 export function pageRenderState() {
   if (views.size === 0) return null;

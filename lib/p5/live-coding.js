@@ -1,0 +1,7 @@
+/**
+ * Live coding in class, for every sketch that imports lib/p5: a mistake is
+ * shown on the page (error-panel.js), and a save's reload keeps the page's
+ * place (keep-place.js). Both install themselves on import.
+ */
+import './error-panel.js';
+import './keep-place.js';
