@@ -1,24 +1,28 @@
 /**
  * Raytracing Sketchbook: the public API of the tracing library.
- * Pure ES modules; runs in Node, the browser and Web Workers.
+ * Pure ES modules, no p5; runs in Node, the browser and Web Workers.
+ * (Everything else stays importable by its module path, for the kit's own code and tests.)
  */
-export { Ray } from './ray.js';
-export { Camera, angles } from './camera.js';
+// A scene: shapes with materials, lights, a background.
 export { Scene } from './scene.js';
-export { Material } from './material.js';
-export { PointLight } from './lights.js';
 export { Sphere, intersectQuadratic, intersectGeometric, EPSILON } from './shapes/sphere.js';
 export { Plane } from './shapes/plane.js';
 export { Box } from './shapes/box.js';
-export { trace, nearestHit } from './trace.js';
-export { render, renderPixel, writePixel } from './render.js';
+export { Material } from './material.js';
+export { PointLight } from './lights.js';
+// Rays through pixels.
+export { Ray } from './ray.js';
+export { Camera } from './camera.js';
+// Pictures, and the story of one pixel.
+export { render } from './render.js';
 export { inspectPixel } from './explain.js';
-export { toColor, toHex, colorToHex, colorName } from './color.js';
-export { classScene, classSceneAt } from './scenes.js';
-export * as vec3 from './vec3.js';
 export { ProgressiveRenderer } from './progressive.js';
-export { sceneToJSON, sceneFromJSON, cameraToJSON, cameraFromJSON, sceneToCode } from './serialize.js';
-export { MODES, modeShader, modeLegend, discriminantColor, angleColor } from './modes.js';
 export { ParallelRenderer } from './workers/parallel.js';
-export { checkTrafficSignal, checkRearLights } from './homework.js';
+// Colours as the lesson names them.
+export { toColor, toHex, colorName } from './color.js';
+// The class's example scene; scenes as JSON and as code.
+export { classScene, classSceneAt } from './scenes.js';
+export { sceneToJSON, sceneFromJSON, sceneToCode } from './serialize.js';
+// The class activity and the homework self-checks.
 export { pinkPixelVerdict, answerText, readAnswerLine } from './activity.js';
+export { checkTrafficSignal, checkRearLights, solutionParameter } from './homework.js';

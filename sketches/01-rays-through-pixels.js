@@ -10,8 +10,7 @@
  */
 import p5 from 'p5';
 import { Camera, Scene, Sphere, PointLight, inspectPixel } from '../lib/index.js';
-import { createTracerView, createInspector, pixelAt } from '../lib/p5/index.js';
-import { drawSideView, drawTopView } from '../lib/p5/diagrams.js';
+import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
 
 // Try other numbers: the screen's size in pixels, how wide the eye sees, the spheres.
 const WIDTH = 32;
@@ -38,9 +37,9 @@ new p5((p) => {
     p.createCanvas(600, 640).parent('diagram');
     p.pixelDensity(1);
     const eye = new Camera({ width: WIDTH, height: HEIGHT, fov: FOV });
-    view = createTracerView(p, { scene: makeScene(), camera: eye, parent: 'picture', scale: 16, grid: true, renderMode: 'scanline', label: `The screen: ${WIDTH} × ${HEIGHT} pixels` });
+    view = p.createTracerView({ scene: makeScene(), camera: eye, parent: 'picture', scale: 16, grid: true, renderMode: 'scanline', label: `The screen: ${WIDTH} × ${HEIGHT} pixels` });
     view.renderer.slowRaysPerStep = SLOW_RAYS_PER_FRAME;
-    createInspector({ view, parent: 'picture' });
+    p.createInspector({ view, parent: 'picture' });
 
     const slow = p.createCheckbox(' Slow motion: one ray at a time', false);
     const again = p.createButton('Trace again');
@@ -52,7 +51,7 @@ new p5((p) => {
     again.mousePressed(() => view.restart());
 
     // Pointing at a pixel shows its ray; leaving the picture shows the selected one again.
-    view.canvas.addEventListener('pointermove', (e) => { hovered = pixelAt(view.canvas, e.clientX, e.clientY, WIDTH, HEIGHT); });
+    view.canvas.addEventListener('pointermove', (e) => { hovered = view.pixelAt(e.clientX, e.clientY); });
     view.canvas.addEventListener('pointerleave', () => { hovered = null; });
   };
 
@@ -65,7 +64,7 @@ new p5((p) => {
     shown = shownKey;
     const record = pixel ? inspectPixel(view.scene, view.camera, pixel.x, pixel.y) : null;
     p.background('#f6f7f9');
-    drawSideView(p, { scene: view.scene, camera: view.camera, record, x: 0, y: 0, w: 600, h: 315 });
-    drawTopView(p, { scene: view.scene, camera: view.camera, record, x: 0, y: 325, w: 600, h: 315 });
+    p.drawSideView({ scene: view.scene, camera: view.camera, record, x: 0, y: 0, w: 600, h: 315 });
+    p.drawTopView({ scene: view.scene, camera: view.camera, record, x: 0, y: 325, w: 600, h: 315 });
   };
 }, document.getElementById('sketch'));

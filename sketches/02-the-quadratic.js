@@ -12,8 +12,7 @@
  */
 import p5 from 'p5';
 import { Camera, Scene, Sphere, PointLight, inspectPixel } from '../lib/index.js';
-import { createTracerView, createInspector, createSliderField } from '../lib/p5/index.js';
-import { drawParabola } from '../lib/p5/diagrams.js';
+import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
 
 // The sphere (the worksheet's: centre (0, 0, −20), radius 4) and the screen.
 const SPHERE = { x: 0, y: 0, z: -20, r: 4 };
@@ -41,7 +40,7 @@ new p5((p) => {
     const eye = new Camera({ width: WIDTH, height: HEIGHT });
     const scene = makeScene(good);
     views = Object.entries(VIEWS).map(([mode, label]) =>
-      createTracerView(p, { scene, camera: eye, mode, scale: SCALE, parent: 'views', label }));
+      p.createTracerView({ scene, camera: eye, mode, scale: SCALE, parent: 'views', label }));
     // One selected pixel for all three pictures.
     for (const view of views) view.onSelect((s) => {
       for (const other of views) if (other.selected?.x !== s?.x || other.selected?.y !== s?.y) other.select(s ? s.x : null, s?.y);
@@ -50,11 +49,11 @@ new p5((p) => {
 
     const panel = p.createDiv('<h2>The sphere: drag a slider or type a number</h2>').class('card fields').parent('left');
     for (const [name, label, min, max, step] of FIELDS) {
-      createSliderField(p, panel, { name, label, min, max, step, value: good[name], use: (value) => setSphere(name, value) });
+      p.createSliderField({ parent: panel, name, label, min, max, step, value: good[name], use: (value) => setSphere(name, value) });
     }
     p.createCanvas(560, 380).parent('left');
     p.pixelDensity(1);
-    createInspector({ view: views[0], parent: 'sketch' });
+    p.createInspector({ view: views[0], parent: 'sketch' });
     views[0].select(WIDTH / 2, HEIGHT / 2);
     p.noLoop();
   };
@@ -70,6 +69,6 @@ new p5((p) => {
     const s = views[0].selected;
     const record = s && inspectPixel(views[0].scene, views[0].camera, s.x, s.y);
     p.background('#f6f7f9');
-    drawParabola(p, { record, x: 0, y: 0, w: 560, h: 380 });
+    p.drawParabola({ record, x: 0, y: 0, w: 560, h: 380 });
   };
 }, document.getElementById('sketch'));

@@ -10,8 +10,7 @@
  */
 import p5 from 'p5';
 import { Camera, Scene, Sphere, PointLight, intersectQuadratic, intersectGeometric } from '../lib/index.js';
-import { createTracerView, createInspector } from '../lib/p5/index.js';
-import { drawGeometricConstruction, fmt } from '../lib/p5/diagrams.js';
+import { fmt } from '../lib/p5/index.js'; // and the sketchbook's p5 addon: p.createTracerView, …
 
 // The worksheet's sphere, an eye outside it and an eye inside it (past its centre, a little high).
 const SPHERE_CENTER = [0, 0, -20], SPHERE_RADIUS = 4, COLOR = [1, 0.32, 0.36];
@@ -31,12 +30,12 @@ new p5((p) => {
   let view;
 
   p.setup = () => {
-    view = createTracerView(p, { scene: makeScene(), camera: new Camera({ width: WIDTH, height: HEIGHT, ...OUTSIDE }), parent: 'picture', scale: 8, label: 'Click a pixel' });
+    view = p.createTracerView({ scene: makeScene(), camera: new Camera({ width: WIDTH, height: HEIGHT, ...OUTSIDE }), parent: 'picture', scale: 8, label: 'Click a pixel' });
     view.figure.parentElement.prepend(view.figure);
     p.createCanvas(620, 500).parent('diagram');
     p.pixelDensity(1);
     p.createElement('table').class('compare').id('compare').attribute('data-compare', '').parent('diagram');
-    createInspector({ view, parent: 'sketch' });
+    p.createInspector({ view, parent: 'sketch' });
     p.select('#inside').changed(function () {
       view.setCamera(new Camera({ width: WIDTH, height: HEIGHT, ...(this.checked() ? INSIDE : OUTSIDE) }));
     });
@@ -51,7 +50,7 @@ new p5((p) => {
     const ray = view.camera.primaryRay(s.x, s.y).ray, ball = view.scene.spheres[0];
     const q = intersectQuadratic(ray, ball), g = intersectGeometric(ray, ball);
     p.background('#f6f7f9');
-    drawGeometricConstruction(p, { sphere: ball, ray, result: g, x: 0, y: 0, w: 620, h: 500 });
+    p.drawGeometricConstruction({ sphere: ball, ray, result: g, x: 0, y: 0, w: 620, h: 500 });
     compare(q, g);
     explain(g);
   };

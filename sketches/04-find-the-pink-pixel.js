@@ -10,7 +10,7 @@
  */
 import p5 from 'p5';
 import { Camera, classScene, inspectPixel, colorName, toHex, pinkPixelVerdict, answerText, readAnswerLine } from '../lib/index.js';
-import { createTracerView, createInspector, formatAngle, createAnswerForm, createPixelHighlight } from '../lib/p5/index.js';
+import { formatAngle } from '../lib/p5/index.js'; // and the sketchbook's p5 addon: p.createTracerView, …
 
 // The screen and where the camera starts: change them and find pink again.
 const WIDTH = 32;
@@ -24,16 +24,17 @@ new p5((p) => {
   let view, form, pinkOnes;
 
   p.setup = () => {
-    view = createTracerView(p, { scene: classScene(), camera: cameraFor(START.h, START.v), parent: 'picture', grid: true, label: `The class scene: ${WIDTH} × ${HEIGHT} pixels` });
+    view = p.createTracerView({ scene: classScene(), camera: cameraFor(START.h, START.v), parent: 'picture', grid: true, label: `The class scene: ${WIDTH} × ${HEIGHT} pixels` });
     // The reverse question: every pink pixel, marked on this sketch's canvas laid over the picture.
-    pinkOnes = createPixelHighlight(p, view, {
+    pinkOnes = p.createPixelHighlight({
+      view,
       name: 'pink',
       label: 'Highlight every pink pixel (the reverse question)',
       test: (rgb) => colorName(rgb) === 'pink',
       describe: (count, total) => `${count} of ${total} pixels are pink: each one is a right answer for this camera.`,
     });
 
-    form = createAnswerForm({
+    form = p.createAnswerForm({
       parent: 'activity',
       boxes: {
         x: { label: 'Pixel x', value: START.x, rule: { min: 0, max: WIDTH - 1, integer: true } },
@@ -47,7 +48,7 @@ new p5((p) => {
     });
     for (const b of [form.boxes.h, form.boxes.v]) b.input.addEventListener('change', turnCamera);
 
-    createInspector({ view, parent: 'activity', title: 'The selected pixel\'s ray, with its own H and V' });
+    p.createInspector({ view, parent: 'activity', title: 'The selected pixel\'s ray, with its own H and V' });
     // A click or an arrow key picks a new pixel: it goes into the boxes and is checked.
     // A new camera re-announces the same pixel: the boxes keep what was typed.
     view.onSelect((s) => {

@@ -11,8 +11,7 @@
 import p5 from 'p5';
 import { Camera, classScene } from '../lib/index.js';
 import { sceneToJSON, sceneToCode } from '../lib/serialize.js';
-import { createTracerView, createInspector } from '../lib/p5/index.js';
-import { createSceneForm } from '../lib/p5/scene-form.js';
+import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
 import { readSceneLink, sceneLinkURL, linkNotice } from '../lib/p5/scene-link.js';
 import { element } from '../lib/p5/dom.js';
 
@@ -27,15 +26,15 @@ new p5((p) => {
   p.setup = async () => {
     p.noCanvas();
     const { scene, problem } = await sceneFromLink();
-    view = createTracerView(p, { scene, camera: new Camera({ width: WIDTH, height: HEIGHT, fov: FOV }), scale: 3, label: `${WIDTH} × ${HEIGHT} pixels` });
-    createInspector({ view }); // beside the picture
+    view = p.createTracerView({ scene, camera: new Camera({ width: WIDTH, height: HEIGHT, fov: FOV }), scale: 3, label: `${WIDTH} × ${HEIGHT} pixels` });
+    p.createInspector({ view }); // beside the picture
 
     const values = document.getElementById('values');
     values.parentElement.append(values); // under both: the boxes get the page's whole width
     values.parentElement.before(element('p', { class: 'notice', 'data-link-problem': '', role: 'alert' }, problem));
     const panel = element('section', { class: 'card' }, element('h2', {}, 'The values'));
     values.append(panel, shareTools());
-    createSceneForm({ json: sceneToJSON(scene), parent: panel, onChange: (changed, json) => {
+    p.createSceneForm({ json: sceneToJSON(scene), parent: panel, onChange: (changed, json) => {
       view.setScene(changed);
       shareInLink(json); // the link now shares this scene
     } });

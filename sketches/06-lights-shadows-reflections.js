@@ -7,7 +7,7 @@
  */
 import p5 from 'p5';
 import { Scene, Sphere, Plane, PointLight, Camera, EPSILON } from '../lib/index.js';
-import { createTracerView, createInspector, createSwitches } from '../lib/p5/index.js';
+import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
 
 const WIDTH = 160, HEIGHT = 120;    // traced pixels
 const SMALL_OFFSET = 1e-4;          // ε: how far a shadow ray starts off the surface
@@ -35,10 +35,10 @@ new p5((p) => {
   p.setup = () => {
     p.noCanvas(); // the tracer view brings its own canvas
     const column = p.createDiv().addClass('column'); // the picture, its switches below
-    const view = createTracerView(p, { scene, camera: new Camera({ width: WIDTH, height: HEIGHT, position: [0, 1.6, 2], pitch: -9 }), parent: column });
-    createInspector({ view, parent: p._userNode });
+    const view = p.createTracerView({ scene, camera: new Camera({ width: WIDTH, height: HEIGHT, position: [0, 1.6, 2], pitch: -9 }), parent: column });
+    p.createInspector({ view, parent: 'sketch' });
 
-    const panel = createSwitches(p, column, 'One switch per idea');
+    const panel = p.createSwitches({ parent: column, legend: 'One switch per idea' });
     const shadows = panel.toggle('shadows', 'a shadow ray from each hit point to each light: blocked means dark (scene.shadows).');
     const offset = panel.choice('shadow-ray offset', [[`${SMALL_OFFSET} (a small ε)`, SMALL_OFFSET], ['0 (none: acne)', 0], [`${BIG_OFFSET} (too big)`, BIG_OFFSET]],
       'a shadow or mirror ray starts this far off the surface, so that rounding cannot make it hit the very surface it starts on. ' +

@@ -10,7 +10,7 @@
  */
 import p5 from 'p5';
 import { Camera, classScene, classSceneAt } from '../lib/index.js';
-import { createTracerView, createInspector, Animation, createExamplePicker, exampleInLink } from '../lib/p5/index.js';
+import { exampleInLink } from '../lib/p5/index.js'; // and the sketchbook's p5 addon: p.createTracerView, …
 
 const STILL = { width: 160, height: 120 };   // traced pixels of the still scene
 const MOVIE = { width: 320, height: 240 };   // of each animation frame: bigger frames, more work to share
@@ -32,12 +32,12 @@ new p5((p) => {
   p.setup = () => {
     p.noCanvas();
     const column = p.createDiv().addClass('column');
-    const picker = createExamplePicker(column, EXAMPLES, choose); // a button per example
-    view = createTracerView(p, { scene: classScene(), camera: stillCamera, parent: column });
+    const picker = p.createExamplePicker({ parent: column, examples: EXAMPLES, onChoose: choose }); // a button per example
+    view = p.createTracerView({ scene: classScene(), camera: stillCamera, parent: column });
     // The animation: sceneAt(t) traced whole each frame, on this thread or over the workers, counted for the FPS.
-    movie = new Animation(view, { sceneAt, camera: movieCamera, workers: WORKERS });
+    movie = p.createAnimation({ view, sceneAt, camera: movieCamera, workers: WORKERS });
     picker.attach(movie); // Pause, the worker count, the frame counter
-    createInspector({ view, parent: p._userNode });
+    p.createInspector({ view, parent: 'sketch' });
     window.sketch = { sceneAt, camera: movieCamera }; // try sketch.sceneAt(3) in the browser console
 
     const { name, problem } = exampleInLink(location.search, EXAMPLES); // ?example=animated

@@ -8,9 +8,8 @@
  * The teacher's answer: open this page with ?solution=1.
  */
 import p5 from 'p5';
-import { Scene, Sphere, Box, Plane, PointLight, Camera } from '../lib/index.js';
-import { createTracerView, createInspector } from '../lib/p5/index.js';
-import { checkTrafficSignal, showCheck, solutionParameter } from '../lib/homework.js';
+import { Scene, Sphere, Box, Plane, PointLight, Camera, checkTrafficSignal, solutionParameter } from '../lib/index.js';
+import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
 
 /* ---------------------------- YOUR HOMEWORK ----------------------------
  * TODO: add three lights to the signal: red on top, yellow in the middle,
@@ -47,14 +46,10 @@ new p5((p) => {
     p.noCanvas(); // the tracer view brings its own canvas
     const { solution, message } = solutionParameter(location.search); // ?solution=1: the teacher's answer
     const scene = makeScene(solution ? (await import('./solutions/08-traffic-signal.js')).addLights : addLights);
-    const view = createTracerView(p, { scene, camera: makeCamera(), parent: 'picture',
+    const view = p.createTracerView({ scene, camera: makeCamera(), parent: 'picture',
       label: solution ? 'The reference solution (sketches/solutions/08-traffic-signal.js)' : 'Your traffic signal' });
-    createInspector({ view, parent: 'sketch' });
+    p.createInspector({ view, parent: 'sketch' });
 
-    const button = p.createButton('Check my scene').class('rt-button').parent('check');
-    const results = p.createDiv('Press the button to check your scene against the task.').parent('check');
-    results.attribute('data-check-results', '');
-    if (message) p.createP().class('hw-warning').attribute('role', 'alert').parent('check').elt.textContent = message; // text from the link: never HTML
-    button.mousePressed(() => showCheck(results.elt, checkTrafficSignal(view.scene, view.camera)));
+    p.createHomeworkCheck({ view, check: checkTrafficSignal, parent: 'check', problem: message });
   };
 }, 'sketch');

@@ -7,9 +7,8 @@
  * The teacher's answer: open this page with ?solution=1.
  */
 import p5 from 'p5';
-import { Scene, Sphere, Box, Plane, PointLight, Camera } from '../lib/index.js';
-import { createTracerView, createInspector } from '../lib/p5/index.js';
-import { checkRearLights, showCheck, solutionParameter } from '../lib/homework.js';
+import { Scene, Sphere, Box, Plane, PointLight, Camera, checkRearLights, solutionParameter } from '../lib/index.js';
+import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
 
 /* ---------------------------- YOUR HOMEWORK ----------------------------
  * TODO: add the car's two rear lights: red, side by side, at the same
@@ -52,14 +51,10 @@ new p5((p) => {
     p.noCanvas(); // the tracer view brings its own canvas
     const { solution, message } = solutionParameter(location.search); // ?solution=1: the teacher's answer
     const scene = makeScene(solution ? (await import('./solutions/09-rear-lights.js')).addLights : addLights);
-    const view = createTracerView(p, { scene, camera: makeCamera(), parent: 'picture',
+    const view = p.createTracerView({ scene, camera: makeCamera(), parent: 'picture',
       label: solution ? 'The reference solution (sketches/solutions/09-rear-lights.js)' : 'Your car, seen from behind' });
-    createInspector({ view, parent: 'sketch' });
+    p.createInspector({ view, parent: 'sketch' });
 
-    const button = p.createButton('Check my scene').class('rt-button').parent('check');
-    const results = p.createDiv('Press the button to check your scene against the task.').parent('check');
-    results.attribute('data-check-results', '');
-    if (message) p.createP().class('hw-warning').attribute('role', 'alert').parent('check').elt.textContent = message; // text from the link: never HTML
-    button.mousePressed(() => showCheck(results.elt, checkRearLights(view.scene, view.camera)));
+    p.createHomeworkCheck({ view, check: checkRearLights, parent: 'check', problem: message });
   };
 }, 'sketch');

@@ -9,7 +9,7 @@
  */
 import p5 from 'p5';
 import { Scene, Sphere, PointLight, Camera } from '../lib/index.js';
-import { createTracerView, createInspector } from '../lib/p5/index.js';
+import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
 
 const WIDTH = 64, HEIGHT = 48; // traced pixels: try 32 × 24 or 160 × 120
 
@@ -24,7 +24,7 @@ new p5((p) => {
   p.setup = () => {
     p.noCanvas(); // the tracer view brings its own canvas
     const eye = new Camera({ width: WIDTH, height: HEIGHT, fov: 30, position: [0, 0, 0] }); // looks toward −z
-    const view = createTracerView(p, { scene: makeScene(), camera: eye, grid: true });
-    createInspector({ view });
+    const view = p.createTracerView({ scene: makeScene(), camera: eye, grid: true });
+    p.createInspector({ view });
   };
 }, 'sketch');

@@ -15,7 +15,7 @@
  */
 import p5 from 'p5';
 import { Camera, classScene, render } from '../../lib/index.js';
-import { createTracerView } from '../../lib/p5/index.js';
+import '../../lib/p5/index.js';
 import { ParallelRenderer } from '../../lib/workers/parallel.js';
 
 const WIDTH = 640, HEIGHT = 480, BUDGET_MS = 8;
@@ -67,7 +67,7 @@ function progressivePart() {
     p.setup = () => {
       p.noCanvas();
       const start = performance.now();
-      view = createTracerView(p, {
+      view = p.createTracerView({
         scene: classScene(), camera: new Camera({ width: WIDTH, height: HEIGHT }),
         budgetMs: BUDGET_MS, renderMode: 'coarse', scale: 1, parent: 'sketch',
       });

@@ -69,6 +69,18 @@ export function blit(canvas, buffer, width, height) {
   canvas.getContext('2d').putImageData(new ImageData(buffer, width, height), 0, 0);
 }
 
+/**
+ * An animation shown in a tracer view: `p.createAnimation({ view, sceneAt, camera })`;
+ * the other options as for the Animation class below.
+ * @param {p5} p the sketch
+ * @param {object} options
+ * @param {import('./tracer-view.js').TracerView} options.view where the frames are shown
+ * @returns {Animation}
+ */
+export function createAnimation(p, { view, ...options } = {}) {
+  return new Animation(view, options);
+}
+
 export class Animation {
   #page;
   #parallel = null;
@@ -211,7 +223,7 @@ export function workerCountBox(animation, { min = 1, max = 8 } = {}) {
   const input = element('input', { type: 'number', min, max });
   input.value = String(animation.workers);
   const label = element('label', {}, `workers (${min}–${max}) `, input);
-  const message = element('span', { class: 'error', role: 'alert', 'data-error': 'workers' });
+  const message = element('span', { class: 'error', role: 'alert', 'data-message': 'workers' });
   input.addEventListener('change', () => {
     try {
       animation.workers = readWorkerCount(input.value, { min, max });

@@ -5,12 +5,12 @@
  * a Copy button, and a note. Pasting a whole answer line into any box fills
  * every box (`parse`).
  *
- *   const form = createAnswerForm({ parent: 'activity', boxes: { x: { label: 'Pixel x', rule } }, onCheck, parse: readAnswerLine });
+ *   const form = p.createAnswerForm({ parent: 'activity', boxes: { x: { label: 'Pixel x', rule } }, onCheck, parse: readAnswerLine });
  *   const values = form.read();   // { x: 10 }, or undefined after marking the bad box in red
  *   form.show({ ok: true, message: 'Pink!', color, answer: 'Pixel: 10,12; H: 30; V: -82' });
  */
 import { valueBox } from './scene-form.js';
-import { element } from './dom.js';
+import { element, resolveParent, sketchNode } from './dom.js';
 
 /**
  * Reads every box (each bad one shows its message): `{ name: value }`, or
@@ -23,15 +23,16 @@ export function readBoxes(boxes) {
 }
 
 /**
+ * @param {p5} p the sketch
  * @param {object} options
- * @param {string|HTMLElement} options.parent where the form goes (an id or an element)
+ * @param {string|HTMLElement} [options.parent] where the form goes (an id or an element); default the sketch's node
  * @param {Record<string, { label: string, value?: number|string, rule?: object }>} options.boxes by name, in order
  * @param {() => void} options.onCheck Check was pressed (or Enter)
  * @param {string} [options.title='Your answer'] the heading
  * @param {(text: string) => ?Record<string, string>} [options.parse] reads a pasted answer line into box texts by name, or null
  * @param {string|Node} [options.note] under the answer
  */
-export function createAnswerForm({ parent, boxes: specs, onCheck, title = 'Your answer', parse, note }) {
+export function createAnswerForm(p, { parent, boxes: specs, onCheck, title = 'Your answer', parse, note }) {
   const boxes = Object.fromEntries(Object.entries(specs).map(([name, spec]) => [name, valueBox({ name, ...spec })]));
   const checkButton = element('button', { type: 'submit', class: 'rt-button', 'data-check': '' }, 'Check');
   const form = element('form', { class: 'boxes', novalidate: '' }, ...Object.values(boxes).map((b) => b.element), checkButton);
@@ -53,7 +54,7 @@ export function createAnswerForm({ parent, boxes: specs, onCheck, title = 'Your 
   const section = element('section', { class: 'task' },
     element('h2', {}, title), form, element('div', { class: 'answer-row' }, answer, result, copyButton), detail,
     note && (note instanceof Node ? note : element('p', { class: 'note' }, note)));
-  (typeof parent === 'string' ? document.getElementById(parent) : parent).append(section);
+  resolveParent(parent, sketchNode(p)).append(section);
 
   /** Puts values in boxes (clearing their messages). */
   function fill(values) {

@@ -1,6 +1,7 @@
 /**
- * Small DOM helpers shared by the tracer view and the inspector panel.
+ * Small DOM helpers shared by the tracer view, the inspector panel and the controls.
  */
+import { show } from '../check.js';
 
 const STYLE_URL = new URL('./style.css', import.meta.url).href;
 
@@ -43,4 +44,33 @@ export function element(tag, attributes = {}, ...children) {
 export function withText(el, text) {
   (el.elt ?? el).textContent = String(text);
   return el;
+}
+
+/**
+ * The element a factory's `parent` option names: an element, a p5.Element, an
+ * element id or a CSS selector; `fallback` (an element) when it is left out.
+ */
+export function resolveParent(parent, fallback) {
+  if (parent == null) return fallback;
+  if (typeof parent === 'string') {
+    const found = document.getElementById(parent) ?? document.querySelector(parent);
+    if (!found) throw new TypeError(`parent: no element with id or selector ${show(parent)}`);
+    return found;
+  }
+  if (parent.elt instanceof HTMLElement) return parent.elt; // a p5.Element
+  if (parent instanceof HTMLElement) return parent;
+  throw new TypeError(`parent must be an element, its id or a p5.Element, got ${show(parent)}`);
+}
+
+/**
+ * The node a sketch was started in (`new p5(sketch, node)`), where its parts go
+ * by default; the page's <main> (or body) for a global-mode sketch. p5 keeps
+ * that node in a field of its own and has no public getter for it: this is the
+ * one place the kit reads it.
+ */
+export function sketchNode(p) {
+  const node = p?._userNode;
+  if (node instanceof HTMLElement) return node;
+  if (typeof node === 'string' && document.getElementById(node)) return document.getElementById(node);
+  return document.querySelector('main') ?? document.body;
 }

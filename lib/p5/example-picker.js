@@ -4,14 +4,14 @@
  * plays an Animation shows a row with Pause / Play (and, on the workers, how
  * many), and under the picture the frame counter and a note on what is shown.
  *
- *   const picker = createExamplePicker(column, EXAMPLES, choose); // EXAMPLES: { name: { note, thread? } }
- *   const view = createTracerView(p, { …, parent: column });      // the picture goes under the buttons
- *   picker.attach(new Animation(view, { sceneAt, camera }));
+ *   const picker = p.createExamplePicker({ parent: column, examples: EXAMPLES, onChoose }); // EXAMPLES: { name: { note, thread? } }
+ *   const view = p.createTracerView({ …, parent: column });      // the picture goes under the buttons
+ *   picker.attach(p.createAnimation({ view, sceneAt, camera }));
  *   picker.choose(exampleInLink(location.search, EXAMPLES).name);
  *
  * exampleInLink needs no page.
  */
-import { element } from './dom.js';
+import { element, resolveParent, sketchNode } from './dom.js';
 import { workerCountBox } from './animation.js';
 
 /**
@@ -29,18 +29,20 @@ export function exampleInLink(search, examples) {
 }
 
 /**
- * @param {HTMLElement|{elt: HTMLElement}} parent where the buttons go (an element or a p5.Element)
- * @param {Record<string, { note: string, thread?: 'main'|'workers' }>} examples by name, in order:
+ * @param {p5} p the sketch
+ * @param {object} options
+ * @param {HTMLElement|{elt: HTMLElement}|string} [options.parent] where the buttons go; default the sketch's node
+ * @param {Record<string, { note: string, thread?: 'main'|'workers' }>} options.examples by name, in order:
  *   the note under the picture, and for an animated one the thread its frames are traced on
- * @param {(name: string, example: object) => void} onChoose shows the chosen example
+ * @param {(name: string, example: object) => void} options.onChoose shows the chosen example
  * @returns {{ attach: Function, choose: Function, say: Function }}
  */
-export function createExamplePicker(parent, examples, onChoose) {
-  const host = parent.elt ?? parent;
+export function createExamplePicker(p, { parent, examples, onChoose }) {
+  const host = resolveParent(parent, sketchNode(p));
   const buttons = Object.keys(examples).map((name) => element('button', { class: 'rt-button', 'data-example': name }, name));
   const pause = element('button', { class: 'rt-button', 'data-pause': '' }, 'Pause');
   const row = element('div', { class: 'controls' }, pause);
-  const error = element('p', { class: 'error', role: 'alert', 'data-error': 'example' });
+  const error = element('p', { class: 'error', role: 'alert', 'data-message': 'example' });
   const stats = element('p', { class: 'stats', 'data-stats': '' });
   const note = element('p', { class: 'about' });
   host.append(element('div', { class: 'tabs' }, ...buttons), row, error);

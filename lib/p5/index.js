@@ -1,22 +1,25 @@
 /**
- * The p5 adapter of the Raytracing Sketchbook: a tracer view for sketches,
- * the inspector panel that explains the selected pixel, and the page contract
- * (`document.body.dataset.render`). The only part of lib/ that imports p5.
+ * The p5 adapter of the Raytracing Sketchbook, a p5 2.x addon. Importing it
+ * registers the addon: every sketch then has the kit's factories as methods,
+ *
+ *   p.createTracerView({ scene, camera })   the traced picture, progressive, clickable
+ *   p.createInspector({ view })             the whole story of the selected pixel
+ *   p.drawSideView({ … }) and the other diagrams, the controls of the lesson's pages
+ *
+ * (the full list: FACTORIES in ./addon.js; in global mode the same names are
+ * bare functions). The only part of lib/ that imports p5.
  */
-export { createTracerView, TracerView, pixelAt } from './tracer-view.js';
-// The scene in 3D beside a tracer view: eye, image plane, frustum and the selected pixel's rays:
-export { createSceneView, SceneView } from './scene-view.js';
-export { createInspector, Inspector, answerLine, formatNumber, formatVector, formatAngle, pixelCSV, routesAgree } from './inspector.js';
-export { registerView, pageRenderState } from './page-state.js';
-// Diagrams (side/top view, geometric construction, parabola) and legends:
-export { drawSideView, drawTopView, drawGeometricConstruction, drawParabola, drawLegend, createLegendElement, focusTest } from './diagrams.js';
-// An animation in a tracer view (main thread or Web Workers) with an FPS counter:
-export { Animation, FrameCounter, framesPerSecond, statsLine, readWorkerCount, sameBytes, blit, workerCountBox } from './animation.js';
-// An activity's answer form (checked boxes, Check, ✔/✘, the answer line) and marks over chosen pixels:
-export { createAnswerForm, readBoxes } from './answer-form.js';
-export { createPixelMarks, createPixelHighlight, findPixels } from './pixel-marks.js';
-// Controls a sketch builds its page from: slider fields, a panel of switches, a picker of examples:
-export { createSliderField, fieldMessage } from './slider-field.js';
-export { createSwitches } from './switches.js';
-export { createExamplePicker, exampleInLink } from './example-picker.js';
+import p5 from 'p5';
+import { sketchbookAddon } from './addon.js';
 import './live-coding.js'; // mistakes shown on the page (data-error); a save's reload keeps the page's place
+
+p5.registerAddon(sketchbookAddon);
+
+export { sketchbookAddon, FACTORIES } from './addon.js';
+export { TracerView } from './tracer-view.js';
+export { SceneView } from './scene-view.js';
+export { Inspector, answerLine, formatAngle } from './inspector.js';
+export { Animation } from './animation.js';
+export { exampleInLink } from './example-picker.js';
+export { fmt } from './diagrams/format.js';
+export { pageRenderState } from './page-state.js';

@@ -16,20 +16,22 @@
 import { inspectPixel } from '../explain.js';
 import { toHex, colorName } from '../color.js';
 import { show } from '../check.js';
-import { useStyle, element } from './dom.js';
+import { useStyle, element, resolveParent } from './dom.js';
 
 /** Relative tolerance within which the two intersection routes "agree". */
 export const AGREE_TOLERANCE = 1e-9;
 
 /**
- * Creates an inspector panel that follows `view`'s selected pixel.
+ * Creates an inspector panel that follows `view`'s selected pixel:
+ * `p.createInspector({ view })` in a sketch.
+ * @param {p5} p the sketch (unused: the panel goes beside the view)
  * @param {object} options
  * @param {import('./tracer-view.js').TracerView} options.view
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] default: beside the view (its parent)
  * @param {string} [options.title] a heading above the panel's answer line (say whose angles it shows)
  * @returns {Inspector}
  */
-export function createInspector({ view, parent, title } = {}) {
+export function createInspector(p, { view, parent, title } = {}) {
   return new Inspector({ view, parent, title });
 }
 
@@ -46,7 +48,7 @@ export class Inspector {
     this.answer = element('p', { class: 'rt-answer', 'data-answer': '' });
     this.body = element('div', { class: 'rt-inspector-body' });
     this.element.append(...[title && element('h2', { class: 'rt-inspector-title' }, title), this.answer, this.body, this.#csvTools()].filter(Boolean));
-    resolveParent(parent, view).append(this.element);
+    resolveParent(parent, view.figure?.parentElement ?? document.body).append(this.element);
     this.#unsubscribe = view.onSelect((selected) => this.show(selected));
     this.show(view.selected);
   }
@@ -342,16 +344,4 @@ export function csvCell(cell) {
   let text = String(cell);
   if (/^[=+\-@\t\r]/.test(text) && !PLAIN_NUMBER.test(text)) text = `'${text}`;
   return /[",\r\n]/.test(text) ? `"${text.replace(/"/g, '""')}"` : text;
-}
-
-function resolveParent(parent, view) {
-  if (parent == null) return view.figure?.parentElement ?? document.body;
-  if (typeof parent === 'string') {
-    const found = document.getElementById(parent) ?? document.querySelector(parent);
-    if (!found) throw new TypeError(`parent: no element with id or selector ${show(parent)}`);
-    return found;
-  }
-  if (parent.elt instanceof HTMLElement) return parent.elt;
-  if (parent instanceof HTMLElement) return parent;
-  throw new TypeError(`parent must be an element, its id or a p5.Element, got ${show(parent)}`);
 }

@@ -29,11 +29,12 @@ export function findPixels(rgba, width, height, test) {
 
 /**
  * Makes the sketch's canvas an overlay on the view's picture, with the class
- * `name` and the attributes `data-<name>` and `data-overlay`.
+ * `name` and the attributes `data-<name>` and `data-overlay`:
+ * `p.createPixelMarks({ view, name })`.
  * @returns {{ clear: () => void, draw: (pixels: {x: number, y: number}[]) => void }}
  *   clear() sizes the overlay to the picture on screen and empties it; draw() also marks each pixel with a dot
  */
-export function createPixelMarks(p, view, name = 'pixel-marks') {
+export function createPixelMarks(p, { view, name = 'pixel-marks' }) {
   const { width, height } = view.camera;
   p.createCanvas(width, height).parent(view.canvas.parentElement).class(name).attribute(`data-${name}`, '').attribute('data-overlay', '');
   p.pixelDensity(1);
@@ -60,8 +61,8 @@ export function createPixelMarks(p, view, name = 'pixel-marks') {
  * picture passing `test`, and a line saying how many. The marks are found once
  * per picture: again after the scene or the camera changes.
  * @param {p5} p the sketch: its canvas becomes the marks' overlay (see createPixelMarks)
- * @param {import('./tracer-view.js').TracerView} view
  * @param {object} options
+ * @param {import('./tracer-view.js').TracerView} options.view
  * @param {string} options.name names the parts: the box has `data-show-<name>`, the line
  *   `data-<name>-count` (set to the count), the overlay the class `<name>-marks`
  * @param {string} options.label the words beside the box
@@ -69,8 +70,8 @@ export function createPixelMarks(p, view, name = 'pixel-marks') {
  * @param {(count: number, total: number) => string} options.describe the line, from the count and the number of pixels
  * @returns {{ draw: () => void }} call draw() from the sketch's draw()
  */
-export function createPixelHighlight(p, view, { name, label, test, describe }) {
-  const marks = createPixelMarks(p, view, `${name}-marks`);
+export function createPixelHighlight(p, { view, name, label, test, describe }) {
+  const marks = createPixelMarks(p, { view, name: `${name}-marks` });
   const box = element('input', { type: 'checkbox', [`data-show-${name}`]: '' });
   const count = element('span', { [`data-${name}-count`]: '' });
   view.figure.after(element('div', { class: 'controls' }, element('label', {}, box, label), count));

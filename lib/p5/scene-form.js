@@ -5,7 +5,7 @@
  * every point light) that hands back a new Scene only when the values are good.
  * Also: a scene in a page's URL (`?scene=<base64url JSON>`), to share it.
  *
- *   const form = createSceneForm({ json: sceneToJSON(scene), parent, onChange: (scene, json) => view.setScene(scene) });
+ *   const form = p.createSceneForm({ json: sceneToJSON(scene), parent, onChange: (scene, json) => view.setScene(scene) });
  *
  * The pure functions (readNumber, readColor, colorText, tableColumns,
  * withValue, compactSceneJSON, encodeScene, decodeScene) need no page.
@@ -282,12 +282,13 @@ export function valueBox({ label, value = '', parse, rule, name, size = '6' }) {
  * buttons. Each change is checked box by box and then by sceneFromJSON; a bad
  * value gets a message beside its box and changes nothing, a good one calls
  * `onChange(scene, json)`.
+ * @param {p5} p the sketch (unused: the form goes into `parent`)
  * @param {object} options
  * @param {object} options.json scene JSON (sceneToJSON)
  * @param {HTMLElement} options.parent
  * @param {(scene: Scene, json: object) => void} options.onChange
  */
-export function createSceneForm({ json, parent, onChange }) {
+export function createSceneForm(p, { json, parent, onChange }) {
   return new SceneForm({ json, parent, onChange });
 }
 

@@ -9,8 +9,8 @@
  * pixel of the image plane to select it (the tracer view follows, and the
  * other way round).
  *
- *   const view = createTracerView(p, { scene, camera });
- *   createSceneView(p, { view });
+ *   const view = p.createTracerView({ scene, camera });
+ *   p.createSceneView({ view });
  *
  * It draws only when something changed (selection, orbit, new traced pixels),
  * on the next animation frame; while the picture is being traced it redraws

@@ -25,8 +25,8 @@ export function fieldMessage(label, error) {
 
 /**
  * @param {p5} p the sketch (its DOM functions make the parts)
- * @param {p5.Element} parent the grid the label, slider, text box and message go into
  * @param {object} field
+ * @param {p5.Element|HTMLElement|string} field.parent the grid the label, slider, text box and message go into
  * @param {string} field.name the text box's id is `field-<name>`, the message's `data-message-for` is `<name>`
  * @param {string} field.label what the field is called
  * @param {number} field.min the slider's range…
@@ -35,7 +35,7 @@ export function fieldMessage(label, error) {
  * @param {number} field.value …and its value at first
  * @param {(value: number) => void} field.use puts a number to use, or throws an Error saying why it cannot
  */
-export function createSliderField(p, parent, { name, label, min, max, step, value, use }) {
+export function createSliderField(p, { parent, name, label, min, max, step, value, use }) {
   const id = `field-${name}`;
   withText(p.createElement('label'), label).attribute('for', id).parent(parent);
   const slider = p.createSlider(min, max, value, step).parent(parent).attribute('aria-label', `${label} slider`);

@@ -2,7 +2,7 @@
  * A panel of switches, one per idea, each with a line saying what it does, as
  * in sketch 06: tick boxes, a choice and a slider that shows its value.
  *
- *   const panel = createSwitches(p, column, 'One switch per idea');
+ *   const panel = p.createSwitches({ parent: column, legend: 'One switch per idea' });
  *   const shadows = panel.toggle('shadows', 'a shadow ray from each hit point to each light…');
  *   const offset = panel.choice('shadow-ray offset', [['0.0001 (a small ε)', 1e-4], ['0 (none)', 0]], '…');
  *   const bounces = panel.slider('mirror bounces', { min: 0, max: 5, value: 5 }, '…');
@@ -15,10 +15,11 @@ import { element, withText } from './dom.js';
 
 /**
  * @param {p5} p the sketch (its DOM functions make the parts)
- * @param {p5.Element|HTMLElement|string} parent where the panel goes
- * @param {string} legend the panel's title
+ * @param {object} options
+ * @param {p5.Element|HTMLElement|string} options.parent where the panel goes
+ * @param {string} options.legend the panel's title
  */
-export function createSwitches(p, parent, legend) {
+export function createSwitches(p, { parent, legend }) {
   const panel = p.createElement('fieldset').addClass('switches').parent(parent);
   panel.child(withText(p.createElement('legend'), legend));
   const inputs = []; // [switch, the p5 event it changes on]

@@ -5,8 +5,8 @@
  *   new p5((p) => {
  *     p.setup = () => {
  *       p.noCanvas(); // the view brings its own canvas
- *       const view = createTracerView(p, { scene: classScene(), camera: new Camera({ width: 64, height: 48 }) });
- *       createInspector({ view });
+ *       const view = p.createTracerView({ scene: classScene(), camera: new Camera({ width: 64, height: 48 }) });
+ *       p.createInspector({ view });
  *     };
  *   });
  *
@@ -15,12 +15,11 @@
  * works the same whether the sketch has a draw(), animates, or calls noLoop()).
  * A sketch that animates just calls `view.setCamera(…)` from its draw().
  */
-import p5 from 'p5';
 import { ProgressiveRenderer, MODES as RENDER_MODES } from '../progressive.js';
 import { modeShader, modeLegend } from '../modes.js';
 import { pixelCoordinate, show } from '../check.js';
 import { registerView } from './page-state.js';
-import { useStyle, element } from './dom.js';
+import { useStyle, element, resolveParent, sketchNode } from './dom.js';
 import { createLegendElement } from './diagrams.js';
 
 /** On-screen pixels per traced pixel below which the grid would hide the picture. */
@@ -28,21 +27,6 @@ const GRID_MIN_SCALE = 6;
 /** 'auto' scale: the picture fits this box (px) and the parent's width. */
 const AUTO_MAX_WIDTH = 640;
 const AUTO_MAX_HEIGHT_SHARE = 0.7;
-
-// p5's sketch checker fetches the page's last script and parses it on the main
-// thread before setup(): harmless for a small sketch file, but in a production
-// build that script is the whole bundle (p5 included), a one-second freeze in
-// the middle of the first render. It looks for global-mode name clashes; the
-// kit's sketches use instance mode, so it has nothing to find.
-p5.disableSketchChecker = true;
-
-/** Every live view of each p5 instance, so `p.remove()` stops them too. */
-const viewsOf = new WeakMap();
-p5.registerAddon((p5Class, fn, lifecycles) => {
-  lifecycles.remove = function () {
-    for (const view of viewsOf.get(this) ?? []) view.destroy();
-  };
-});
 
 /**
  * Creates a tracer view inside a p5 sketch (call it from setup()).
@@ -81,9 +65,8 @@ export class TracerView {
     this.showLegend = legend;
 
     useStyle();
-    this.#buildDom(resolveParent(parent, p), label);
+    this.#buildDom(resolveParent(parent, sketchNode(p)), label);
     this.#page = registerView(this);
-    if (p) viewsOf.set(p, [...(viewsOf.get(p) ?? []), this]);
     this.#onResize = () => this.#layout();
     window.addEventListener('resize', this.#onResize);
     this.#started();
@@ -114,6 +97,11 @@ export class TracerView {
   get canvas() { return this.canvasElement; }
   /** The progressive renderer doing the work (read its buffer, pass, current…). */
   get renderer() { return this.#renderer; }
+
+  /** The traced pixel `{ x, y }` under a point of the screen (a pointer event's clientX, clientY), or null. */
+  pixelAt(clientX, clientY) {
+    return pixelAt(this.canvasElement, clientX, clientY, this.width, this.height);
+  }
 
   /** Traces a new scene, keeping camera, mode and selection. */
   setScene(scene) { return this.#change({ scene }); }
@@ -465,14 +453,3 @@ function checkBudget(ms) {
   return ms;
 }
 
-function resolveParent(parent, p) {
-  if (parent == null) return p?._userNode instanceof HTMLElement ? p._userNode : (document.querySelector('main') ?? document.body);
-  if (typeof parent === 'string') {
-    const found = document.getElementById(parent) ?? document.querySelector(parent);
-    if (!found) throw new TypeError(`parent: no element with id or selector ${show(parent)}`);
-    return found;
-  }
-  if (parent.elt instanceof HTMLElement) return parent.elt; // a p5.Element
-  if (parent instanceof HTMLElement) return parent;
-  throw new TypeError(`parent must be an element, its id or a p5.Element, got ${show(parent)}`);
-}

@@ -43,6 +43,8 @@ export function expectQuietConsole(test) {
  * canvas is visible, still and the one that receives the click.
  */
 export async function clickPixel(canvas, x, y) {
+  // A web font arriving late reflows the page: the canvas would move under the pointer.
+  await canvas.page().evaluate(() => document.fonts.ready);
   const box = await canvas.boundingBox();
   const width = Number(await canvas.getAttribute('data-width'));
   const height = Number(await canvas.getAttribute('data-height'));

@@ -38,7 +38,7 @@ function page(slug) {
 export function sketchSource({ sphere = 'new Sphere([0, 0, -20], 4, { color: [1, 0.32, 0.36] })', before = '', after = '', top = '', draw = '' } = {}) {
   return `import p5 from 'p5';
 import { Scene, Sphere, PointLight, Camera } from '../../../lib/index.js';
-import { createTracerView, createInspector } from '../../../lib/p5/index.js';
+import '../../../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
 ${top}
 new p5((p) => {
   let view;
@@ -48,8 +48,8 @@ ${before}
     const scene = new Scene({ background: [0.85, 0.92, 1] })
       .add(${sphere})
       .add(new PointLight([-10, 20, 0]));
-    view = createTracerView(p, { scene, camera: new Camera({ width: 64, height: 48 }), grid: true });
-    createInspector({ view }); // click a pixel: its whole story
+    view = p.createTracerView({ scene, camera: new Camera({ width: 64, height: 48 }), grid: true });
+    p.createInspector({ view }); // click a pixel: its whole story
 ${after}
   };
   p.draw = () => {

@@ -215,10 +215,10 @@ test.describe('07 · the original examples', () => {
     const box = page.getByLabel('workers (1–8)');
     await box.fill('9');
     await box.press('Enter');
-    await expect(page.locator('[data-error="workers"]')).toHaveText(/workers must be a whole number from 1 to 8, got "9"; still using 4/);
+    await expect(page.locator('[data-message="workers"]')).toHaveText(/workers must be a whole number from 1 to 8, got "9"; still using 4/);
     await box.fill('2');
     await box.press('Enter');
-    await expect(page.locator('[data-error="workers"]')).toBeHidden();
+    await expect(page.locator('[data-message="workers"]')).toBeHidden();
     await expect(stats(page)).toHaveText(/· 2 workers$/, { timeout: 60_000 });
     const before = await frame(page);
     await expect.poll(() => frame(page), { timeout: 60_000 }).toBeGreaterThan(before + 1); // frames from 2 workers
@@ -234,9 +234,9 @@ test.describe('07 · the original examples', () => {
   test('a bad ?example= says so and shows the still scene', async ({ page }) => {
     await page.goto(`${SKETCH_07}?example=movie`);
     await waitForDone(page);
-    await expect(page.locator('[data-error="example"]')).toHaveText('example must be still, animated, workers; got "movie", so here is the still scene.');
+    await expect(page.locator('[data-message="example"]')).toHaveText('example must be still, animated, workers; got "movie", so here is the still scene.');
     await expect(page.locator('[data-example="still"]')).toHaveAttribute('aria-pressed', 'true');
     await page.locator('[data-example="animated"]').click();
-    await expect(page.locator('[data-error="example"]')).toBeHidden();
+    await expect(page.locator('[data-message="example"]')).toBeHidden();
   });
 });

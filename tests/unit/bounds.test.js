@@ -2,7 +2,8 @@
 // one its ray cannot hit, so render()'s tiles give the very same picture.
 import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
-import { Camera, Scene, Sphere, Box, Plane, render, renderPixel, classScene } from '../../lib/index.js';
+import { Camera, Scene, Sphere, Box, Plane, render, classScene } from '../../lib/index.js';
+import { renderPixel } from '../../lib/render.js';
 import { screenBounds, tileCandidates, TILE } from '../../lib/bounds.js';
 
 const coord = fc.double({ min: -30, max: 30, noNaN: true });

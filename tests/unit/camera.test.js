@@ -1,6 +1,7 @@
 import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
-import { Camera, angles } from '../../lib/index.js';
+import { Camera } from '../../lib/index.js';
+import { angles } from '../../lib/camera.js';
 
 const DEG = Math.PI / 180;
 

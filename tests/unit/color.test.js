@@ -1,5 +1,6 @@
 import { describe, it, expect } from 'vitest';
-import { toColor, toHex, colorToHex, colorName } from '../../lib/index.js';
+import { toColor, toHex, colorName } from '../../lib/index.js';
+import { colorToHex } from '../../lib/color.js';
 
 const close = (actual, expected) => expected.forEach((c, i) => expect(actual[i]).toBeCloseTo(c, 12));
 

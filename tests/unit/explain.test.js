@@ -1,7 +1,6 @@
 import { describe, it, expect } from 'vitest';
-import {
-  Scene, Sphere, Plane, Box, PointLight, Camera, classScene, inspectPixel, colorName, angles, render,
-} from '../../lib/index.js';
+import { Scene, Sphere, Plane, Box, PointLight, Camera, classScene, inspectPixel, colorName, render } from '../../lib/index.js';
+import { angles } from '../../lib/camera.js';
 
 describe('inspectPixel: the full record of one pixel', () => {
   // Odd size: the centre pixel's ray is exactly (0, 0, −1), the worksheet's ray.

@@ -7,7 +7,7 @@ import { checkTrafficSignal, checkRearLights, lightColour, findLights, solutionP
 // The sketches are p5 sketches; their scenes are plain library code. Without
 // a browser, p5 and the adapter are stand-ins that do nothing.
 vi.mock('p5', () => ({ default: class {} }));
-vi.mock('../../lib/p5/index.js', () => ({ createTracerView() {}, createInspector() {} }));
+vi.mock('../../lib/p5/index.js', () => ({}));
 const signal = await import('../../sketches/08-homework-traffic-signal.js');
 const signalSolution = await import('../../sketches/solutions/08-traffic-signal.js');
 const car = await import('../../sketches/09-homework-rear-lights.js');

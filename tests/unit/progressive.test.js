@@ -1,6 +1,7 @@
 import { describe, it, expect } from 'vitest';
 import { ProgressiveRenderer, CHECK_EVERY, COARSE_PASSES } from '../../lib/progressive.js';
-import { render, renderPixel, Camera, Scene, Sphere, Plane, Box, PointLight, classScene } from '../../lib/index.js';
+import { render, Camera, Scene, Sphere, Plane, Box, PointLight, classScene } from '../../lib/index.js';
+import { renderPixel } from '../../lib/render.js';
 
 const MODES = ['coarse', 'scanline', 'slow'];
 

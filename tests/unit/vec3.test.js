@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import { vec3 } from '../../lib/index.js';
+import * as vec3 from '../../lib/vec3.js';
 
 const V = vec3.vec3;
 

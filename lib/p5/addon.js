@@ -1,0 +1,81 @@
+/**
+ * The sketchbook as a p5 2.x addon: every factory of the p5 adapter becomes a
+ * method of p5, taking one options object, so a sketch writes
+ *
+ *   p.createTracerView({ scene, camera })   // instance mode
+ *   createTracerView({ scene, camera })     // global mode (function setup() {…})
+ *
+ * Each factory module exports `createX(p, options)`; this table is the one
+ * place they become methods. A new factory is one more line here.
+ */
+import { createTracerView } from './tracer-view.js';
+import { createSceneView } from './scene-view.js';
+import { createInspector } from './inspector.js';
+import { createAnswerForm } from './answer-form.js';
+import { createPixelMarks, createPixelHighlight } from './pixel-marks.js';
+import { createSliderField } from './slider-field.js';
+import { createSwitches } from './switches.js';
+import { createExamplePicker } from './example-picker.js';
+import { createAnimation } from './animation.js';
+import { createSceneForm } from './scene-form.js';
+import { createHomeworkCheck } from './homework-check.js';
+import { drawSideView, drawTopView } from './diagrams/plane-views.js';
+import { drawGeometricConstruction } from './diagrams/construction.js';
+import { drawParabola } from './diagrams/parabola.js';
+import { drawLegend } from './diagrams/legend.js';
+import { show } from '../check.js';
+
+/** `name: (p, options) => part`: what each p5 method makes. */
+export const FACTORIES = {
+  createTracerView,
+  createSceneView,
+  createInspector,
+  createAnswerForm,
+  createPixelMarks,
+  createPixelHighlight,
+  createSliderField,
+  createSwitches,
+  createExamplePicker,
+  createAnimation,
+  createSceneForm,
+  createHomeworkCheck,
+  // Diagrams draw into the sketch's own canvas, inside the box { x, y, w, h }.
+  drawSideView,
+  drawTopView,
+  drawGeometricConstruction,
+  drawParabola,
+  drawLegend: (p, { legend, ...box }) => drawLegend(p, legend, box),
+};
+
+/** Every part with a `destroy()` made by each p5 instance, so `p.remove()` ends them too. */
+const partsOf = new WeakMap();
+
+/**
+ * The addon (`p5.registerAddon(sketchbookAddon)`; lib/p5/index.js does it).
+ * @param {typeof import('p5').default} p5Class
+ * @param {object} fn p5's prototype
+ * @param {object} lifecycles p5's lifecycle hooks
+ */
+export function sketchbookAddon(p5Class, fn, lifecycles) {
+  // p5's sketch checker fetches the page's last script and parses it before
+  // setup(): in a production build that script is the whole bundle, a
+  // one-second freeze in the middle of the first render. It looks for
+  // global-mode name clashes, which the kit's own names never make.
+  p5Class.disableSketchChecker = true;
+
+  for (const [name, make] of Object.entries(FACTORIES)) {
+    fn[name] = function (options = {}) {
+      if (options === null || typeof options !== 'object' || Array.isArray(options)) {
+        throw new TypeError(`${name} takes one options object, e.g. ${name}({ … }), got ${show(options)}`);
+      }
+      const part = make(this, options);
+      if (typeof part?.destroy === 'function') partsOf.set(this, [...(partsOf.get(this) ?? []), part]);
+      return part;
+    };
+  }
+
+  lifecycles.remove = function () {
+    for (const part of partsOf.get(this) ?? []) part.destroy();
+    partsOf.delete(this);
+  };
+}

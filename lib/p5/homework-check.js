@@ -1,0 +1,57 @@
+/**
+ * The homework pages' self-check: a "Check my scene" button under the
+ * picture and the result of a check (lib/homework.js) as a list, ✓, ✗ or –
+ * per check, in the student's words.
+ *
+ *   p.createHomeworkCheck({ view, check: checkTrafficSignal, parent: 'check', problem });
+ */
+import { element, resolveParent, sketchNode } from './dom.js';
+
+/**
+ * @param {p5} p the sketch
+ * @param {object} options
+ * @param {import('./tracer-view.js').TracerView} options.view whose scene and camera are checked
+ * @param {(scene: object, camera: object) => { passed: boolean, checks: object[] }} options.check e.g. checkTrafficSignal
+ * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where the button and the result go; default the sketch's node
+ * @param {string|null} [options.problem] a warning shown above the result (e.g. a bad ?solution= value), as plain text
+ * @returns {{ button: HTMLButtonElement, results: HTMLElement, run: () => void }}
+ */
+export function createHomeworkCheck(p, { view, check, parent, problem = null }) {
+  const host = resolveParent(parent, sketchNode(p));
+  const button = element('button', { type: 'button', class: 'rt-button' }, 'Check my scene');
+  const results = element('div', { 'data-check-results': '' }, 'Press the button to check your scene against the task.');
+  host.append(button, results);
+  if (problem) host.append(element('p', { class: 'hw-warning', role: 'alert' }, problem));
+  const run = () => showCheck(results, check(view.scene, view.camera));
+  button.addEventListener('click', run);
+  return { button, results, run };
+}
+
+/**
+ * Shows a check's result in `element` (a DOM element): a headline ("Passed!"
+ * or "Not yet: n checks to fix") and one line per check, ✓, ✗ or – (waiting),
+ * with its message. The element gets `data-check="passed"|"not-yet"`; each
+ * line `data-check-item="passed"|"failed"|"skipped"`.
+ */
+export function showCheck(element, { passed, checks }) {
+  const doc = element.ownerDocument;
+  const make = (tag, attributes, text) => {
+    const el = doc.createElement(tag);
+    for (const [k, v] of Object.entries(attributes)) el.setAttribute(k, v);
+    if (text !== undefined) el.textContent = text;
+    return el;
+  };
+  const toFix = checks.filter((c) => !c.passed && !c.skipped && !c.bonus).length;
+  const headline = passed ? 'Passed! Your scene does what the task asks.'
+    : `Not yet: ${toFix} ${toFix === 1 ? 'check' : 'checks'} to fix.`;
+  const list = make('ul', { class: 'hw-checks' });
+  for (const c of checks) {
+    const state = c.passed ? 'passed' : c.skipped ? 'skipped' : 'failed';
+    const item = make('li', { 'data-check-item': state, class: `hw-${state}${c.bonus ? ' hw-bonus' : ''}` });
+    item.append(make('span', { class: 'hw-mark', 'aria-hidden': 'true' }, c.passed ? '✓' : c.skipped ? '–' : '✗'),
+      make('b', {}, c.label), make('span', { class: 'hw-detail' }, c.detail));
+    list.append(item);
+  }
+  element.dataset.check = passed ? 'passed' : 'not-yet';
+  element.replaceChildren(make('p', { class: 'hw-headline' }, headline), list);
+}

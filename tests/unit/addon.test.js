@@ -1,0 +1,51 @@
+// The p5 addon: every factory becomes a p5 method taking one options object.
+import { describe, it, expect } from 'vitest';
+import { sketchbookAddon, FACTORIES } from '../../lib/p5/addon.js';
+
+function register() {
+  const p5Class = class {};
+  const lifecycles = {};
+  sketchbookAddon(p5Class, p5Class.prototype, lifecycles);
+  return { p5Class, fn: p5Class.prototype, lifecycles };
+}
+
+describe('sketchbookAddon', () => {
+  it('adds every factory to p5 as a method', () => {
+    const { fn } = register();
+    for (const name of Object.keys(FACTORIES)) expect(typeof fn[name], name).toBe('function');
+    expect(Object.keys(FACTORIES)).toEqual(expect.arrayContaining(['createTracerView', 'createInspector', 'drawParabola']));
+  });
+
+  it('turns off the sketch checker, which would parse a whole bundle before setup()', () => {
+    expect(register().p5Class.disableSketchChecker).toBe(true);
+  });
+
+  it('refuses anything but one options object, naming the method', () => {
+    const { fn } = register();
+    const sketch = Object.create(fn);
+    expect(() => sketch.createTracerView(64, 48)).toThrow(/createTracerView takes one options object.*got 64/);
+    expect(() => sketch.createInspector(null)).toThrow(TypeError);
+    expect(() => sketch.drawParabola([1, 2])).toThrow(/drawParabola takes one options object/);
+  });
+
+  it('passes the sketch and the options to the factory, and p.remove() destroys what it made', () => {
+    const made = [];
+    const saved = FACTORIES.createSwitches;
+    FACTORIES.createSwitches = (p, options) => {
+      const part = { p, options, destroyed: false, destroy() { this.destroyed = true; } };
+      made.push(part);
+      return part;
+    };
+    try {
+      const { fn, lifecycles } = register();
+      const sketch = Object.create(fn);
+      const part = sketch.createSwitches({ legend: 'One switch per idea' });
+      expect(part.p).toBe(sketch);
+      expect(part.options).toEqual({ legend: 'One switch per idea' });
+      lifecycles.remove.call(sketch);
+      expect(made[0].destroyed).toBe(true);
+    } finally {
+      FACTORIES.createSwitches = saved;
+    }
+  });
+});
