@@ -341,7 +341,9 @@ export class TracerView {
   }
 
   #listen(c) {
+    let pointer = { x: NaN, y: NaN }; // where the pointer last picked, in client coordinates
     const pick = (event) => {
+      pointer = { x: event.clientX, y: event.clientY };
       const { x, y } = pixelAt(c, event.clientX, event.clientY, this.width, this.height);
       if (x !== this.#selected?.x || y !== this.#selected?.y) this.select(x, y);
     };
@@ -352,7 +354,10 @@ export class TracerView {
       pick(event);
     });
     c.addEventListener('pointermove', (event) => {
-      if (event.buttons & 1 && c.hasPointerCapture?.(event.pointerId)) pick(event);
+      // Chromium also sends a move when the page reflows under a still pointer (the
+      // panel filling in beside the picture): that is no drag, and must not re-pick.
+      const moved = event.clientX !== pointer.x || event.clientY !== pointer.y;
+      if (moved && event.buttons & 1 && c.hasPointerCapture?.(event.pointerId)) pick(event);
     });
     c.addEventListener('keydown', (event) => {
       const step = ARROWS[event.key];
