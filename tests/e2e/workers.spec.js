@@ -36,7 +36,7 @@ const canvasVersusRender = (page) => page.evaluate(async () => {
 });
 
 async function fallsBackToTheMainThread(page, message) {
-  await expect(page.locator('[data-error="example"]')).toHaveText(message, { timeout: 30_000 });
+  await expect(page.locator('[data-message="example"]')).toHaveText(message, { timeout: 30_000 });
   await expect(page.locator('[data-stats]')).toHaveText(/· main thread$/);
   const before = await frameShown(page);
   await expect.poll(() => frameShown(page), { timeout: 30_000 }).toBeGreaterThan(before + 1); // frames go on
