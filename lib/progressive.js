@@ -51,6 +51,9 @@ export class ProgressiveRenderer {
   #done = false;
   /** The default shader's per-tile candidate shapes, `{ columns, lists }`; null for another shader. */
   #tiles = null;
+  /** 'slow' mode at `slowRaysPerSecond`: rays owed (fractional) and when the last step ran. */
+  #credit = 0;
+  #lastStepAt = null;
 
   /**
    * @param {object} options
@@ -71,6 +74,12 @@ export class ProgressiveRenderer {
     this.slowRaysPerStep = positiveInteger(slowRaysPerStep, 'slowRaysPerStep');
     /** The traced image, RGBA, width·height·4 bytes; a new array when the camera's size changes. */
     this.buffer = null;
+    /**
+     * In 'slow' mode, when above 0: rays per second instead of
+     * `slowRaysPerStep` per step (slower than one a frame, for rays a class
+     * can follow with its eyes).
+     */
+    this.slowRaysPerSecond = 0;
     /** In 'slow' and 'scanline' modes the pixel `{ x, y }` traced last, else null. */
     this.current = null;
     this.restart({ scene, camera, mode, shader });
@@ -118,6 +127,8 @@ export class ProgressiveRenderer {
     this.#traced = 0;
     this.#tracingMs = 0;
     this.#done = false;
+    this.#credit = 0;
+    this.#lastStepAt = null;
     this.current = null;
     this.#nextRow(); // a row with nothing to trace (1 px wide, later passes): on to one with something
     return this;
@@ -134,11 +145,23 @@ export class ProgressiveRenderer {
     budget(budgetMs, 'budgetMs');
     if (this.#done) return { changed: false, done: true };
     const start = this.now();
-    const count = this.mode === 'slow' ? this.#traceRun(this.slowRaysPerStep) : this.#traceFor(budgetMs, start);
+    const count = this.mode === 'slow' ? this.#traceRun(this.#slowCount(start)) : this.#traceFor(budgetMs, start);
+    if (count === 0) return { changed: false, done: false };
     this.#tracingMs += this.now() - start;
     this.#traced += count;
     if (this.mode !== 'coarse') this.current = { x: this.#lastX, y: this.#lastY };
     return { changed: true, done: this.#done };
+  }
+
+  /** Pixels due in a 'slow' step: `slowRaysPerStep`, or the rays per second owed since the last step. */
+  #slowCount(now) {
+    if (!(this.slowRaysPerSecond > 0)) return this.slowRaysPerStep;
+    const elapsed = this.#lastStepAt === null ? 1000 / this.slowRaysPerSecond : now - this.#lastStepAt;
+    this.#lastStepAt = now;
+    this.#credit = Math.min(this.#credit + (elapsed * this.slowRaysPerSecond) / 1000, Math.max(1, this.slowRaysPerSecond / 10));
+    const count = Math.floor(this.#credit);
+    this.#credit -= count;
+    return count;
   }
 
   /** True once every pixel is traced. */

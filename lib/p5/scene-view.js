@@ -42,7 +42,9 @@ const TRACE_SHARE = 6;
 /** Mouse travel (px) under which a press and release is a click, not a turn. */
 const CLICK_SLOP = 4;
 
-const OPTIONS = ['view', 'width', 'height', 'parent', 'label', 'planeDistance', 'frustum', 'orbit', 'controls'];
+const OPTIONS = ['view', 'width', 'height', 'parent', 'label', 'planeDistance', 'frustum', 'orbit', 'controls', 'raysPerSecond'];
+/** Speeds the shoot slider offers, rays per second. */
+const SPEEDS = [1, 2, 4, 8, 15, 30, 60, 120];
 
 /**
  * Creates a 3D view of a tracer view's scene (call it from setup()).
@@ -56,7 +58,8 @@ const OPTIONS = ['view', 'width', 'height', 'parent', 'label', 'planeDistance', 
  * @param {number|'auto'} [options.planeDistance='auto'] how far from the eye to show the image plane (the camera's own is at 1; rays through a pixel pass through the same pixel at any distance)
  * @param {boolean} [options.frustum=true] draw the view frustum
  * @param {{yaw?: number, pitch?: number, distance?: number}} [options.orbit] where to look from at first (degrees; distance in scene units)
- * @param {boolean} [options.controls=true] show the Reset button
+ * @param {boolean} [options.controls=true] show the Reset button, the Shoot button and its speed slider
+ * @param {number} [options.raysPerSecond=4] how fast Shoot sends rays (one of 1, 2, 4, 8, 15, 30, 60, 120)
  * @returns {SceneView}
  */
 export function createSceneView(p, options = {}) {
@@ -68,11 +71,15 @@ export class SceneView {
   #orbit; #home; #bounds; #planeDistance; #planeOption; #frustum;
   #picture; #pictureCtx; #k = 1; #pictureKey = ''; #lastDrawMs = 0; #lastDrawAt = -Infinity;
   #selected = null; #segments = []; #record = null;
-  #extra = []; #drag = null; #target; #watching = 0; #labels = [];
+  #extra = []; #drag = null; #target; #geometry = null;
+  /** Shoot: rays in flight `{ segments, t0 }`, the pixel traced last, the row / column fan ('h' / 'v'). */
+  #flying = []; #shots = 0; #shooting = false; #lastShot = null; #fan = null; #fanSegments = []; #watching = 0; #labels = [];
 
   constructor(p, options = {}) {
     checkOptions(options, OPTIONS, 'scene view');
-    const { view, width = 480, height = 360, parent, label = 'The scene in 3D', planeDistance = 'auto', frustum = true, orbit = {}, controls = true } = options;
+    const { view, width = 480, height = 360, parent, label = 'The scene in 3D', planeDistance = 'auto', frustum = true, orbit = {}, controls = true, raysPerSecond = 4 } = options;
+    if (!SPEEDS.includes(raysPerSecond)) throw new RangeError(`raysPerSecond must be one of ${SPEEDS.join(', ')}, got ${show(raysPerSecond)}`);
+    this.raysPerSecond = raysPerSecond;
     if (!view || typeof view.onSelect !== 'function' || !view.camera) throw new TypeError(`createSceneView needs { view }: a tracer view, got ${show(view)}`);
     for (const [name, v] of [['width', width], ['height', height]]) {
       if (!Number.isInteger(v) || v < 16 || v > 4096) throw new RangeError(`${name} must be a whole number of pixels from 16 to 4096, got ${show(v)}`);
@@ -110,6 +117,8 @@ export class SceneView {
   get orbit() { return { yaw: this.#orbit.yaw, pitch: this.#orbit.pitch, distance: this.#orbit.distance }; }
   /** The selected pixel's segments (see lib/rays3d.js raySegments), [] when none. */
   get segments() { return this.#segments; }
+  /** How long the last draw took, ms (for the benchmark). */
+  get lastDrawMs() { return this.#lastDrawMs; }
   /** How far from the eye the image plane is shown. */
   get planeDistance() { return this.#planeDistance; }
 
@@ -154,6 +163,52 @@ export class SceneView {
     return this.redraw();
   }
 
+  /**
+   * Shoot: traces the picture again in slow motion, scanline order, at
+   * `raysPerSecond`, and shows each ray leave the eye through its pixel, fly
+   * to its hit and send its shadow rays (and its bounces).
+   */
+  shoot(raysPerSecond = this.raysPerSecond) {
+    if (!(typeof raysPerSecond === 'number' && raysPerSecond > 0 && Number.isFinite(raysPerSecond))) throw new RangeError(`raysPerSecond must be a number greater than 0, got ${show(raysPerSecond)}`);
+    this.raysPerSecond = raysPerSecond;
+    this.#flying = [];
+    this.#lastShot = null;
+    this.#shots = 0;
+    this.#shooting = true;
+    this.#view.renderer.slowRaysPerSecond = raysPerSecond;
+    this.#view.setRenderMode('slow');
+    this.#watchTrace();
+    return this;
+  }
+
+  /** Changes how fast Shoot sends rays, even while it runs. */
+  setSpeed(raysPerSecond) {
+    if (!(typeof raysPerSecond === 'number' && raysPerSecond > 0 && Number.isFinite(raysPerSecond))) throw new RangeError(`raysPerSecond must be a number greater than 0, got ${show(raysPerSecond)}`);
+    this.raysPerSecond = raysPerSecond;
+    if (this.#shooting) this.#view.renderer.slowRaysPerSecond = raysPerSecond;
+    return this;
+  }
+
+  /**
+   * Shows every primary ray of the selected pixel's row ('row', key h) or
+   * column ('column', key v), or none (null). The same kind again hides it.
+   */
+  showFan(kind) {
+    if (kind !== null && kind !== 'row' && kind !== 'column') throw new RangeError(`showFan takes 'row', 'column' or null, got ${show(kind)}`);
+    this.#fan = kind;
+    this.#fanSegments = this.#fanFor(kind);
+    if (this.canvas) this.canvas.dataset.fan = kind ?? '';
+    return this.redraw();
+  }
+
+  /** Rays sent by the last Shoot so far (one per traced pixel). */
+  get shots() { return this.#shots; }
+  /** True while Shoot is under way. */
+  get shooting() { return this.#shooting; }
+
+  /** 'row', 'column' or null: the fan of rays shown. */
+  get fan() { return this.#fan; }
+
   /** The scene or camera changed in place (the tracer view's restart() does this too): measure it again. */
   refresh() {
     this.#sceneChanged();
@@ -188,6 +243,8 @@ export class SceneView {
     // far enough out to be seen, near enough to stay in front of everything the eye sees
     this.#planeDistance = this.#planeOption === 'auto' ? Math.max(1, nearestAhead(scene, camera) * 0.7) : this.#planeOption;
     this.#bounds = sceneBounds(scene, camera, this.#planeDistance);
+    if (this.#geometry && this.#g) this.#g.freeGeometry(this.#geometry); // built again on the next draw
+    this.#geometry = null;
     // look at a point between the middle of the scene and the eye: the eye, the image plane and the rays are the lesson
     const c = this.#bounds.center, e = camera.position;
     this.#target = vec3(c.x + (e.x - c.x) * 0.45, c.y + (e.y - c.y) * 0.45, c.z + (e.z - c.z) * 0.45);
@@ -202,6 +259,7 @@ export class SceneView {
     if (this.canvas) this.canvas.dataset.selected = s ? `${s.x},${s.y}` : '';
     const view = this.#view;
     this.#record = s ? inspectPixel(view.scene, view.camera, s.x, s.y) : null;
+    this.#fanSegments = this.#fanFor(this.#fan);
     this.#segments = this.#record ? raySegments(view.scene, this.#record, { missLength: this.#bounds.radius * 2.5, normalLength: this.#bounds.radius * 0.08 }) : [];
     this.#pictureKey = '';
     this.redraw();
@@ -216,7 +274,10 @@ export class SceneView {
    */
   #watchTrace() {
     if (!this.#observer) {
-      this.#observer = new MutationObserver(() => this.#watchTrace());
+      this.#observer = new MutationObserver(() => {
+        if (this.#view.figure.dataset.state === 'rendering') this.#sceneChanged(); // traced again: the scene may be new
+        this.#watchTrace();
+      });
       this.#observer.observe(this.#view.figure, { attributes: true, attributeFilter: ['data-state'] });
     }
     if (this.#watching || this.#destroyed) return;
@@ -225,6 +286,17 @@ export class SceneView {
       this.#watching = 0;
       const v = this.#view, progress = v.done ? 1 : v.progress;
       if (progress < seen) this.#sceneChanged(); // a restart
+      const c = v.renderer.current;
+      if (this.#shooting && v.renderMode === 'slow' && c && (c.x !== this.#lastShot?.x || c.y !== this.#lastShot?.y)) {
+        // every pixel traced since the last look, in scanline order; only the last few fly (the rest would overlap)
+        const W = v.width, from = this.#lastShot ? this.#lastShot.y * W + this.#lastShot.x + 1 : 0, to = c.y * W + c.x;
+        for (let i = Math.max(from, to - 7); i <= to; i++) this.#shot(i % W, Math.floor(i / W));
+        this.#shots += to - from + 1;
+        this.#lastShot = { ...c };
+        this.#pictureKey = '';
+        this.redraw();
+      }
+      if (this.#shooting && (v.done || v.renderMode !== 'slow')) this.#shooting = false;
       if (progress !== seen) {
         const now = performance.now();
         // keep the trace's pace: while it runs, redraw only when enough time has passed since the last draw
@@ -239,15 +311,42 @@ export class SceneView {
     poll();
   }
 
+  /** The primary rays of the selected pixel's row or column, each to its hit (or out to the background). */
+  #fanFor(kind) {
+    const s = this.#selected, view = this.#view;
+    if (!kind || !s) return [];
+    const out = [];
+    const n = kind === 'row' ? view.width : view.height;
+    for (let i = 0; i < n; i++) {
+      const x = kind === 'row' ? i : s.x, y = kind === 'row' ? s.y : i;
+      if (x === s.x && y === s.y) continue; // the selected pixel's own ray is drawn in full
+      const record = inspectPixel(view.scene, view.camera, x, y);
+      out.push(raySegments(view.scene, record, { missLength: this.#bounds.radius * 2.5 })[0]);
+    }
+    return out;
+  }
+
+  /** Shoot: a new pixel was traced: its ray starts flying. */
+  #shot(x, y) {
+    const view = this.#view;
+    const record = inspectPixel(view.scene, view.camera, x, y);
+    const segments = raySegments(view.scene, record, { missLength: this.#bounds.radius * 2.5, normalLength: this.#bounds.radius * 0.06 });
+    this.#flying.push({ segments, t0: performance.now() });
+    if (this.#flying.length > 60) this.#flying.shift();
+  }
+
+  /** Seconds a ray takes for one leg of its flight (eye → hit, hit → light, …). */
+  #legSeconds() {
+    return clamp(1.6 / this.raysPerSecond, 0.06, 0.8);
+  }
+
   /* ---------------- drawing ---------------- */
 
   #frame = () => {
     this.#raf = 0;
     if (this.#destroyed || !this.#g) return;
-    const start = performance.now();
     this.#g.redraw();
     this.#lastDrawAt = performance.now();
-    this.#lastDrawMs = this.#lastDrawAt - start;
     // "done" once it shows the finished picture and nothing more is waiting: tests and screenshots wait for it
     this.canvas.dataset.state = this.#view.done && !this.#raf ? 'done' : 'drawing';
   };
@@ -265,75 +364,96 @@ export class SceneView {
     // p5's WEBGL y axis points down: the scene is drawn with y negated (see P below)
     g.perspective(FOVY, this.width / this.height, this.#orbit.distance * 0.02, this.#orbit.distance * 20);
     g.camera(o.eye.x, -o.eye.y, o.eye.z, o.target.x, -o.target.y, o.target.z, 0, 1, 0);
-    g.ambientLight(120);
-    g.directionalLight(150, 150, 150, 0.3, 0.8, -0.5);
-    g.directionalLight(60, 60, 60, -0.4, -0.2, 0.8);
+    g.noLights();
     g.noStroke();
-
-    for (const object of scene.objects) this.#drawShape(g, object);
-    for (const light of scene.lights) if (!light.object) this.#drawPointLight(g, light.position);
-    this.#drawEye(g, camera);
+    g.model(this.#staticGeometry(g));
     this.#drawImagePlane(g, camera);
     if (this.#frustum) this.#drawFrustum(g, camera);
     for (const s of this.#segments) this.#drawSegment(g, s);
     for (const r of this.#extra) line3(g, r.from, r.to, r.color, r.weight ?? 1.5);
+    for (const f of this.#fanSegments) line3(g, f.from, f.to, RAY_COLORS.primary, 1);
+    const flying = this.#drawFlying(g);
     g.pop();
     this.#drawLabels(o);
+    if (flying) this.redraw(); // the next frame of the flight
   }
 
-  #drawShape(g, object) {
-    const m = object.material;
+  /**
+   * The rays in flight: each segment grows from its start in turn (the
+   * primary ray, then at its hit the normal and shadow rays and the bounce,
+   * and so on); a ray fades once it has arrived. True while any still moves.
+   */
+  #drawFlying(g) {
+    const now = performance.now(), leg = this.#legSeconds() * 1000;
+    let moving = false;
+    this.#flying = this.#flying.filter((f, i) => {
+      const phase = (now - f.t0) / leg;
+      const last = i === this.#flying.length - 1;
+      const end = Math.max(...f.segments.map((s) => startOf(s) + 1));
+      if (phase > end + 2 && !last) return false; // arrived a while ago: gone
+      if (phase < end) moving = true;
+      for (const s of f.segments) {
+        const k = clamp(phase - startOf(s), 0, 1);
+        if (k <= 0) continue;
+        const to = vec3(s.from.x + (s.to.x - s.from.x) * k, s.from.y + (s.to.y - s.from.y) * k, s.from.z + (s.to.z - s.from.z) * k);
+        this.#drawSegment(g, { ...s, to, blockedAt: k === 1 ? s.blockedAt : null, hit: s.hit && k === 1 });
+      }
+      return true;
+    });
+    if (this.#flying.length > 1) moving = true; // old ones still to clear away
+    return moving;
+  }
+
+  /**
+   * Everything that does not move (shapes, lights, the eye) as one p5.Geometry,
+   * built when the scene changes: each vertex carries its colour with the light
+   * already worked out (a fixed light from above right), so each frame draws it
+   * without p5's lights. Software WebGL lights every pixel in its shader, and
+   * that alone took a frame from 30 ms to 500 ms.
+   */
+  #staticGeometry(g) {
+    if (this.#geometry) return this.#geometry;
+    const { scene, camera } = this.#view;
+    const r = this.#bounds.radius;
     g.push();
-    const glow = m.isEmissive;
-    const rgb = glow ? [255, 214, 80] : m.color.map((c) => Math.round(255 * Math.min(1, c)));
-    if (glow) { g.emissiveMaterial(255, 200, 60); g.fill(255, 214, 80); } else g.fill(rgb[0], rgb[1], rgb[2], m.transparency > 0 ? 255 * (1 - 0.6 * m.transparency) : 255);
-    if (m.reflection > 0) { g.specularMaterial(200); g.shininess(40); }
-    if (object instanceof Sphere) {
-      if (object.radius > HUGE_RADIUS) this.#drawGroundPatch(g, object.center, sub(vec3(), this.#bounds.center, object.center), object.radius);
-      else { g.translate(object.center.x, -object.center.y, object.center.z); g.sphere(object.radius, 28, 18); }
-    } else if (object instanceof Plane) {
-      this.#drawGroundPatch(g, object.point, object.normal, 0);
-    } else if (object instanceof Box) {
-      const a = object.min, b = object.max;
-      g.translate((a.x + b.x) / 2, -(a.y + b.y) / 2, (a.z + b.z) / 2);
-      g.box(b.x - a.x, b.y - a.y, b.z - a.z);
-    }
+    this.#geometry = g.buildGeometry(() => {
+      g.noStroke();
+      g.beginShape(g.TRIANGLES);
+      for (const object of scene.objects) {
+        const m = object.material;
+        const rgb = m.isEmissive ? GLOW : m.color.map((c) => Math.min(1, c));
+        if (object instanceof Sphere) {
+          if (object.radius > HUGE_RADIUS) this.#groundPatch(g, object.center, sub(vec3(), this.#bounds.center, object.center), object.radius, rgb);
+          else sphereMesh(g, object.center, object.radius, rgb, !m.isEmissive);
+        } else if (object instanceof Plane) {
+          this.#groundPatch(g, object.point, object.normal, 0, rgb);
+        } else if (object instanceof Box) {
+          boxMesh(g, object.min, object.max, rgb);
+        }
+      }
+      for (const light of scene.lights) if (!light.object) sphereMesh(g, light.position, r * 0.025, GLOW, false, 8, 12);
+      sphereMesh(g, camera.position, r * 0.02, [0.11, 0.14, 0.2], true, 8, 12);
+      g.endShape();
+    });
     g.pop();
+    return this.#geometry;
   }
 
   /** A huge sphere or a plane: a square patch of it under the scene, big enough to stand on. */
-  #drawGroundPatch(g, origin, towardScene, radius) {
+  #groundPatch(g, origin, towardScene, radius, rgb) {
     const n = normalize(vec3(), towardScene);
     const c = this.#bounds.center;
     // the patch's middle: on the surface, under the middle of the scene
     const base = radius > 0 ? vec3(origin.x + n.x * radius, origin.y + n.y * radius, origin.z + n.z * radius) : origin;
     const k = dot(sub(vec3(), c, base), n);
     const mid = vec3(c.x - n.x * k, c.y - n.y * k, c.z - n.z * k);
-    g.translate(mid.x, -mid.y, mid.z);
-    // turn p5's plane (in its x-y plane, facing +z) to face n (y negated)
-    const np = normalize(vec3(), vec3(n.x, -n.y, n.z)), z = vec3(0, 0, 1);
-    const axis = cross(vec3(), z, np), angle = Math.acos(clamp(dot(z, np), -1, 1));
-    if (Math.hypot(axis.x, axis.y, axis.z) > 1e-9) g.rotate(angle, [axis.x, axis.y, axis.z]);
-    const size = this.#bounds.radius * 2.2;
-    g.plane(size, size);
-  }
-
-  #drawPointLight(g, at) {
-    g.push();
-    g.emissiveMaterial(255, 200, 60);
-    g.fill(255, 214, 80);
-    g.translate(at.x, -at.y, at.z);
-    g.sphere(this.#bounds.radius * 0.025, 12, 8);
-    g.pop();
-  }
-
-  #drawEye(g, camera) {
-    const e = camera.position;
-    g.push();
-    g.fill(29, 36, 51);
-    g.translate(e.x, -e.y, e.z);
-    g.sphere(this.#bounds.radius * 0.02, 14, 10);
-    g.pop();
+    const u = normalize(vec3(), cross(vec3(), n, Math.abs(n.x) < 0.9 ? vec3(1, 0, 0) : vec3(0, 0, 1)));
+    const v = cross(vec3(), n, u);
+    const h = this.#bounds.radius * 1.1;
+    const corner = (a, b) => vec3(mid.x + (u.x * a + v.x * b) * h, mid.y + (u.y * a + v.y * b) * h, mid.z + (u.z * a + v.z * b) * h);
+    const [p, q, s, t] = [corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1)];
+    const col = shade(rgb, n);
+    for (const x of [p, q, s, p, s, t]) coloredVertex(g, x, col);
   }
 
   /** The image plane, textured with the traced picture, its grid and the selected pixel. */
@@ -442,7 +562,23 @@ export class SceneView {
     if (controls) {
       const reset = element('button', { type: 'button', class: 'rt-button', 'data-view3d-reset': '', title: 'Look from the first point of view again' }, 'Reset view');
       reset.addEventListener('click', () => this.reset());
-      this.bar.append(reset);
+      const shoot = element('button', { type: 'button', class: 'rt-button', 'data-view3d-shoot': '', title: 'Trace the picture again, one ray at a time, and watch each ray fly' }, 'Shoot rays');
+      shoot.addEventListener('click', () => this.shoot());
+      const speedText = element('span', { class: 'rt-view3d-speed-text' }, `${this.raysPerSecond} rays/s`);
+      const speed = element('input', {
+        type: 'range', min: '0', max: String(SPEEDS.length - 1), step: '1', value: String(SPEEDS.indexOf(this.raysPerSecond)),
+        'data-view3d-speed': '', 'aria-label': 'Rays per second',
+      });
+      speed.addEventListener('input', () => {
+        const v = SPEEDS[Number(speed.value)];
+        speedText.textContent = `${v} rays/s`;
+        this.setSpeed(v);
+      });
+      const speedLabel = element('label', { class: 'rt-view3d-speed' }, 'Speed ', speed, speedText);
+      speedLabel.style.display = 'inline-flex';
+      speedLabel.style.alignItems = 'center';
+      speedLabel.style.gap = '0.4rem';
+      this.bar.append(shoot, speedLabel, reset);
     }
     this.figure.append(this.bar);
     const host = resolveParent(parent);
@@ -462,7 +598,7 @@ export class SceneView {
           this.#canvasReady(q.canvas, stage);
           resolve(this);
         };
-        q.draw = () => this.#draw();
+        q.draw = () => { const t = performance.now(); this.#draw(); this.#lastDrawMs = performance.now() - t; };
       }, stage);
     });
   }
@@ -485,6 +621,15 @@ export class SceneView {
   }
 
   #listen(c) {
+    // h / v: all rays of the selected pixel's row / column, from either view (as in RayTeaching)
+    const keys = (e) => {
+      if (e.ctrlKey || e.metaKey || e.altKey) return;
+      const kind = { h: 'row', v: 'column' }[e.key.toLowerCase()];
+      if (!kind) return;
+      this.showFan(this.#fan === kind ? null : kind);
+    };
+    c.addEventListener('keydown', keys);
+    this.#view.canvas.addEventListener('keydown', keys);
     c.addEventListener('pointerdown', (e) => {
       if (e.button !== 0) return;
       c.setPointerCapture?.(e.pointerId);
@@ -525,6 +670,52 @@ export class SceneView {
 }
 
 /* ---------------- helpers ---------------- */
+
+/** Emissive shapes and point lights: a warm glow. */
+const GLOW = [1, 0.84, 0.3];
+/** The fixed light the shapes are shaded by (from above, right, front) and how much light reaches everything. */
+const SUN = normalize(vec3(), vec3(0.35, 0.85, 0.4));
+const AMBIENT = 0.45;
+
+/** A colour [0–1] as lit by SUN on a surface with normal n: 0–255 bytes. */
+function shade(rgb, n, lit = true) {
+  const k = lit ? AMBIENT + (1 - AMBIENT) * Math.max(0, dot(n, SUN)) : 1;
+  return [Math.round(255 * rgb[0] * k), Math.round(255 * rgb[1] * k), Math.round(255 * rgb[2] * k)];
+}
+
+function coloredVertex(g, p, col) {
+  g.fill(col[0], col[1], col[2]);
+  g.vertex(p.x, -p.y, p.z);
+}
+
+/** A sphere as latitude/longitude triangles, each vertex coloured by its normal (flat glow when not lit). */
+function sphereMesh(g, c, r, rgb, lit = true, rings = 16, segments = 28) {
+  const at = (i, j) => {
+    const theta = (Math.PI * i) / rings, phi = (2 * Math.PI * j) / segments;
+    const n = vec3(Math.sin(theta) * Math.cos(phi), Math.cos(theta), Math.sin(theta) * Math.sin(phi));
+    return { p: vec3(c.x + r * n.x, c.y + r * n.y, c.z + r * n.z), col: shade(rgb, n, lit) };
+  };
+  for (let i = 0; i < rings; i++) {
+    for (let j = 0; j < segments; j++) {
+      const a = at(i, j), b = at(i + 1, j), d = at(i, j + 1), e = at(i + 1, j + 1);
+      for (const v of [a, b, e, a, e, d]) coloredVertex(g, v.p, v.col);
+    }
+  }
+}
+
+/** A box: two triangles a face, each face shaded by its normal. */
+function boxMesh(g, min, max, rgb) {
+  const P = (x, y, z) => vec3(x ? max.x : min.x, y ? max.y : min.y, z ? max.z : min.z);
+  const faces = [
+    [vec3(1, 0, 0), [P(1, 0, 0), P(1, 1, 0), P(1, 1, 1), P(1, 0, 1)]], [vec3(-1, 0, 0), [P(0, 0, 0), P(0, 0, 1), P(0, 1, 1), P(0, 1, 0)]],
+    [vec3(0, 1, 0), [P(0, 1, 0), P(0, 1, 1), P(1, 1, 1), P(1, 1, 0)]], [vec3(0, -1, 0), [P(0, 0, 0), P(1, 0, 0), P(1, 0, 1), P(0, 0, 1)]],
+    [vec3(0, 0, 1), [P(0, 0, 1), P(1, 0, 1), P(1, 1, 1), P(0, 1, 1)]], [vec3(0, 0, -1), [P(0, 0, 0), P(0, 1, 0), P(1, 1, 0), P(1, 0, 0)]],
+  ];
+  for (const [n, [a, b, c, d]] of faces) {
+    const col = shade(rgb, n);
+    for (const v of [a, b, c, a, c, d]) coloredVertex(g, v, col);
+  }
+}
 
 /** p5 coordinates of a scene point: y negated (p5's WEBGL y points down). */
 function vertexUV(g, p, u, v) { g.vertex(p.x, -p.y, p.z, u, v); }
@@ -571,6 +762,11 @@ function checkOrbit(orbit) {
     out[key] = v;
   }
   return out;
+}
+
+/** When a segment starts to grow, in legs of the flight: a ray of depth d after d legs, the normal and shadow rays at its end. */
+function startOf(s) {
+  return s.kind === 'normal' || s.kind === 'shadow' ? s.depth + 1 : s.depth;
 }
 
 function clamp(v, lo, hi) {

@@ -91,3 +91,38 @@ for (const [name, query] of [
     expect(await pixels(page.locator('[data-view3d]'))).toMatchSnapshot(`view3d-${name}.png`);
   });
 }
+
+test('h and v show every ray of the selected pixel\'s row and column; again hides them', async ({ page }) => {
+  await page.goto(`${PAGE}?select=16,12`);
+  await waitForView(page);
+  const view3d = page.locator('[data-view3d]'), tracer = page.locator('[data-tracer]');
+  const plain = await pixels(view3d);
+  await tracer.press('h');
+  await expect(view3d).toHaveAttribute('data-fan', 'row');
+  await expect(view3d).toHaveAttribute('data-state', 'done');
+  expect(await pixels(view3d)).toMatchSnapshot('view3d-row.png');
+  await view3d.press('v'); // from the 3D view too
+  await expect(view3d).toHaveAttribute('data-fan', 'column');
+  await expect(view3d).toHaveAttribute('data-state', 'done');
+  expect(await pixels(view3d)).toMatchSnapshot('view3d-column.png');
+  await tracer.press('v');
+  await expect(view3d).toHaveAttribute('data-fan', '');
+  await expect(view3d).toHaveAttribute('data-state', 'done');
+  expect((await pixels(view3d)).equals(plain)).toBe(true);
+});
+
+test('Shoot traces the picture again one ray at a time, each ray flying; the picture comes out the same', async ({ page }) => {
+  await page.goto(`${PAGE}?w=16&h=12`);
+  await waitForView(page);
+  const tracer = page.locator('[data-tracer]');
+  const picture = await tracer.evaluate((c) => c.toDataURL());
+  await page.locator('[data-view3d-speed]').fill('7'); // the fastest: 120 rays/s
+  await expect(page.locator('.rt-view3d-speed-text')).toHaveText('120 rays/s');
+  await page.locator('[data-view3d-shoot]').click();
+  await expect(page.locator('body')).toHaveAttribute('data-render', 'rendering');
+  expect(await page.evaluate(() => window.tracerView.renderMode)).toBe('slow');
+  await expect.poll(() => page.evaluate(() => window.sceneView.shots)).toBeGreaterThan(0);
+  await waitForView(page);
+  expect(await page.evaluate(() => [window.sceneView.shots, window.sceneView.shooting])).toEqual([16 * 12, false]);
+  expect(await tracer.evaluate((c) => c.toDataURL())).toBe(picture);
+});

@@ -201,6 +201,27 @@ describe('scanline and slow modes', () => {
     p.step();
     expect(p.traced).toBe(4);
   });
+
+  it('with slowRaysPerSecond, slow traces the rays owed by the clock: fewer than one a step, and the same picture', () => {
+    const clock = fakeClock();
+    const p = new ProgressiveRenderer({ scene, camera, mode: 'slow', now: clock.now });
+    p.slowRaysPerSecond = 4; // one ray every 250 ms
+    expect(p.step()).toEqual({ changed: true, done: false }); // the first ray at once
+    expect(p.traced).toBe(1);
+    clock.t += 100;
+    expect(p.step().changed).toBe(false);
+    clock.t += 100;
+    p.step();
+    expect(p.traced).toBe(1);
+    clock.t += 60;
+    p.step();
+    expect(p.traced).toBe(2);
+    clock.t += 60_000; // a long pause (a hidden tab) does not become a burst
+    p.step();
+    expect(p.traced).toBe(3);
+    while (!p.done) { clock.t += 250; p.step(); }
+    expect(p.buffer).toEqual(render(scene, camera));
+  });
 });
 
 describe('progress and restarts', () => {
