@@ -48,7 +48,8 @@ new p5((p) => {
     ctx = picture.getContext('2d');
     image = ctx.createImageData(WIDTH, HEIGHT);
     count = p.createP('').parent('light').class('count').elt;
-    const more = p.createButton(`Send ${PHOTONS.toLocaleString('en-US')} more`).parent('light').class('rt-button');
+    const more = p.createButton('').parent('light').class('rt-button');
+    more.elt.textContent = `Send ${PHOTONS.toLocaleString('en-US')} more`;
     more.mousePressed(() => { target += PHOTONS; page.rendering(); });
     page = registerView(picture);
 
