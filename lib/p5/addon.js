@@ -10,6 +10,7 @@
  */
 import { createTracerView } from './tracer-view.js';
 import { createSceneView } from './scene-view.js';
+import { createPhotonView } from './photon-view.js';
 import { createInspector } from './inspector.js';
 import { createAnswerForm } from './answer-form.js';
 import { createPixelMarks, createPixelHighlight } from './pixel-marks.js';
@@ -29,6 +30,7 @@ import { show } from '../check.js';
 export const FACTORIES = {
   createTracerView,
   createSceneView,
+  createPhotonView,
   createInspector,
   createAnswerForm,
   createPixelMarks,

@@ -18,6 +18,7 @@ p5.registerAddon(sketchbookAddon);
 export { sketchbookAddon, FACTORIES } from './addon.js';
 export { TracerView } from './tracer-view.js';
 export { SceneView } from './scene-view.js';
+export { PhotonView } from './photon-view.js';
 export { Inspector, answerLine, formatAngle } from './inspector.js';
 export { Animation } from './animation.js';
 export { exampleInLink } from './example-picker.js';
