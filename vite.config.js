@@ -2,7 +2,7 @@ import { defineConfig } from 'vite';
 import { readdirSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { p5OfflineI18n } from './scripts/p5-offline-i18n.js';
-import { reloadItsPagesOnly } from './scripts/vite-live-coding.js';
+import { reloadItsPagesOnly, syntaxErrorsWhereTheyAre } from './scripts/vite-live-coding.js';
 
 // Every page is an entry of the static build: the gallery and each sketch.
 const sketchPages = readdirSync('sketches')
@@ -12,8 +12,8 @@ const sketchPages = readdirSync('sketches')
 export default defineConfig({
   base: './',
   // p5's translations from node_modules, not a CDN (scripts/p5-offline-i18n.js): in the build and the dev server's bundle of p5.
-  // A saved sketch reloads only the pages running it (scripts/vite-live-coding.js).
-  plugins: [p5OfflineI18n(), reloadItsPagesOnly()],
+  // A saved sketch reloads only the pages running it; a syntax error is shown at its line (scripts/vite-live-coding.js).
+  plugins: [p5OfflineI18n(), reloadItsPagesOnly(), syntaxErrorsWhereTheyAre()],
   optimizeDeps: { rolldownOptions: { plugins: [p5OfflineI18n()] } },
   build: {
     target: 'es2022',

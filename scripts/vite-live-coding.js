@@ -1,6 +1,16 @@
 /**
  * Vite plugins for live coding in class.
  *
+ * syntaxErrorsWhereTheyAre: a syntax error in a sketch is reported at its
+ * own line and column. Vite's import analysis (es-module-lexer) fails on
+ * some syntax errors (an unclosed string or bracket) without a position, so
+ * its overlay pointed at 1:0; others (`1 +* 2`) it let through, and the page
+ * died in the browser with nothing on it, its modules never run. This
+ * plugin parses each of the project's scripts first (Vite's own parseAst,
+ * Oxc) and reports the first error with its position: a page's own script
+ * shows it in the kit's error panel on that page (file, line, the line
+ * itself), any other module in Vite's overlay (file, line, column, code).
+ *
  * reloadItsPagesOnly: a saved sketch file reloads the pages that run it, not
  * every page open on the dev server. Vite's default for a module with no HMR
  * boundary is a reload of every page, so one save by the teacher would reload
@@ -12,7 +22,51 @@
  * When a root has no such page (a worker), it leaves the update to Vite.
  */
 import { existsSync } from 'node:fs';
-import { relative } from 'node:path';
+import { relative, resolve } from 'node:path';
+import { parseAst } from 'vite';
+
+export function syntaxErrorsWhereTheyAre() {
+  let root = process.cwd();
+  return {
+    name: 'sketchbook:syntax-errors-where-they-are',
+    apply: 'serve',
+    enforce: 'pre',
+    configResolved(config) { root = config.root; },
+    transform(code, id) {
+      const [file, query = ''] = id.split('?');
+      if (!/\.m?js$/.test(file) || file.includes('/node_modules/') || id.startsWith('\0') || /(^|&)(raw|url|inline)\b/.test(query)) return null;
+      try {
+        parseAst(code, undefined, file);
+        return null;
+      } catch (error) {
+        if (typeof error?.pos !== 'number') throw error;
+        // "Parse failed with 1 error:\nUnterminated string\n2: …": the line that names it.
+        const message = String(error.message).split('\n')[1]?.trim() || 'invalid JavaScript';
+        if (!existsSync(file.replace(/\.m?js$/, '.html'))) this.error(`Syntax error: ${message}`, error.pos); // Vite's overlay
+        return mistakeModule(root, file, code, error.pos, message);
+      }
+    },
+  };
+}
+
+/**
+ * A page's script with a syntax error is served as a module that shows the
+ * mistake on that page alone, in the kit's own panel (lib/p5/error-panel.js),
+ * and in the console: Vite's overlay would appear on every page open on the
+ * server, each student's included.
+ */
+function mistakeModule(root, file, code, pos, message) {
+  const before = code.slice(0, pos).split('\n');
+  const line = before.length, column = before.at(-1).length + 1;
+  const where = { file: relative(root, file).split('\\').join('/'), line, column, source: code.split('\n')[line - 1], exact: true };
+  const panel = '/' + relative(root, resolve(import.meta.dirname, '../lib/p5/error-panel.js')).split('\\').join('/');
+  const text = `SyntaxError: ${message}`;
+  return [
+    `import { showMistake } from ${JSON.stringify(panel)};`,
+    `console.error(${JSON.stringify(`${text} (${where.file}:${line}:${column})`)});`,
+    `showMistake(${JSON.stringify(text)}, ${JSON.stringify(where)});`,
+  ].join('\n');
+}
 
 export function reloadItsPagesOnly() {
   return {

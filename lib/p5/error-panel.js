@@ -47,12 +47,24 @@ export function installErrorPanel(win = globalThis.window) {
  */
 export function showError(error, fallback = {}) {
   if (typeof document === 'undefined' || !document.body) return null;
-  const message = errorMessage(error);
   const origin = location.origin;
   const stack = /** @type {any} */ (error)?.stack;
   const frame = sketchFrame(typeof stack === 'string' ? stack : '', origin)
     ?? (fallback.url && fallback.line ? sketchFrame(`at ${fallback.url}:${fallback.line}:${fallback.column || 1}`, origin) : null);
-  const key = `${message}\n${frame?.file}:${frame?.line}`;
+  return showMistake(errorMessage(error), frame);
+}
+
+/**
+ * Shows a mistake in the page's error panel: its message, and where it is
+ * (the line itself is fetched from `url` unless `source` gives it).
+ * @param {string} message
+ * @param {{ url?: string, file: string, line: number, column: number, source?: string, exact?: boolean }|null} [where]
+ *   `exact`: the column is the mistake's own (a syntax error), so it is shown too
+ * @returns {HTMLElement|null} the panel (null outside a page)
+ */
+export function showMistake(message, where = null) {
+  if (typeof document === 'undefined' || !document.body) return null;
+  const key = `${message}\n${where?.file}:${where?.line}`;
   const seen = shown.get(key);
   if (seen) {
     seen.count += 1;
@@ -66,9 +78,11 @@ export function showError(error, fallback = {}) {
   const entry = element('section', { class: 'rt-error-entry' });
   const countElement = element('span', { class: 'rt-error-count', 'data-error-count': '' });
   entry.append(element('p', { class: 'rt-error-message', 'data-error-message': '' }, message, ' ', countElement));
-  if (frame) {
-    entry.append(element('p', { class: 'rt-error-where', 'data-error-where': '' }, `${frame.file}:${frame.line}`));
-    showSourceLine(entry, frame);
+  if (where) {
+    const place = `${where.file}:${where.line}${where.exact ? `:${where.column}` : ''}`;
+    entry.append(element('p', { class: 'rt-error-where', 'data-error-where': '' }, place));
+    if (typeof where.source === 'string') showLine(entry, where, where.source);
+    else showSourceLine(entry, where);
   }
   panel.querySelector('.rt-error-list').append(entry);
   shown.set(key, { count: 1, countElement });
@@ -110,26 +124,30 @@ export function sketchFrame(stack, origin) {
   return null;
 }
 
-/** Fetches the sketch file (same origin only) and shows the offending line with a caret under the column. */
+/** Fetches the sketch file (same origin only) and shows the offending line. */
 async function showSourceLine(entry, frame) {
   try {
     const response = await fetch(frame.url, { cache: 'no-store' });
     if (!response.ok) return;
-    const line = (await response.text()).split(/\r?\n/)[frame.line - 1];
-    if (line === undefined || !line.trim()) return;
-    const indent = line.length - line.trimStart().length;
-    let code = line.trim(), at = Math.max(0, Math.min(code.length - 1, frame.column - 1 - indent));
-    if (code.length > SHOWN_CHARS) { // a long (built, minified) line: the part around the column
-      const from = Math.max(0, Math.min(at - SHOWN_CHARS / 2, code.length - SHOWN_CHARS));
-      code = (from > 0 ? '…' : '') + code.slice(from, from + SHOWN_CHARS) + (from + SHOWN_CHARS < code.length ? '…' : '');
-      at = at - from + (from > 0 ? 1 : 0);
-    }
-    const caret = ' '.repeat(at) + '^';
-    const number = `${frame.line} │ `;
-    entry.append(element('pre', { class: 'rt-error-source', 'data-error-source': '' }, number + code, '\n', ' '.repeat(number.length) + caret));
+    showLine(entry, frame, (await response.text()).split(/\r?\n/)[frame.line - 1]);
   } catch {
     // The file cannot be had (offline, another origin): the file and line are enough.
   }
+}
+
+/** The offending line, with a caret under the column (1-based). */
+function showLine(entry, frame, line) {
+  if (line === undefined || !line.trim()) return;
+  const indent = line.length - line.trimStart().length;
+  let code = line.trim(), at = Math.max(0, Math.min(code.length - 1, frame.column - 1 - indent));
+  if (code.length > SHOWN_CHARS) { // a long (built, minified) line: the part around the column
+    const from = Math.max(0, Math.min(at - SHOWN_CHARS / 2, code.length - SHOWN_CHARS));
+    code = (from > 0 ? '…' : '') + code.slice(from, from + SHOWN_CHARS) + (from + SHOWN_CHARS < code.length ? '…' : '');
+    at = at - from + (from > 0 ? 1 : 0);
+  }
+  const caret = ' '.repeat(at) + '^';
+  const number = `${frame.line} │ `;
+  entry.append(element('pre', { class: 'rt-error-source', 'data-error-source': '' }, number + code, '\n', ' '.repeat(number.length) + caret));
 }
 
 function buildPanel() {

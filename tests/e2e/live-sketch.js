@@ -81,3 +81,25 @@ export function liveSketch(slug, source) {
     },
   };
 }
+
+/**
+ * Saves `text` as the sketch and waits for the page's reload to settle: an
+ * editor's save can reach the file watcher as two changes, so a second
+ * reload may follow the first; it returns once no load came for `quietMs`.
+ */
+export async function saveAndWaitForReload(page, sketch, text, quietMs = 800) {
+  let loads = 0;
+  const count = () => { loads += 1; };
+  page.on('load', count);
+  try {
+    const first = page.waitForEvent('load');
+    sketch.save(text);
+    await first;
+    for (let seen = -1; seen !== loads;) {
+      seen = loads;
+      await page.waitForTimeout(quietMs);
+    }
+  } finally {
+    page.off('load', count);
+  }
+}

@@ -6,7 +6,7 @@
  */
 import { test, expect } from '@playwright/test';
 import { waitForDone, clickPixel } from './helpers.js';
-import { liveSketch, sketchSource, lineOf } from './live-sketch.js';
+import { liveSketch, sketchSource, lineOf, saveAndWaitForReload } from './live-sketch.js';
 
 const FIXED = sketchSource();
 
@@ -66,6 +66,46 @@ const MISTAKES = [
   },
 ];
 
+/** Syntax errors: the page's own panel, at the line and column of the sketch file. */
+const SYNTAX = [
+  { name: 'an unclosed string', before: "    const label = 'big sphere;", message: 'SyntaxError: Unterminated string', at: "'" },
+  { name: 'a stray operator', before: '    const r = 4 +* 2;', message: 'SyntaxError: Unexpected token', at: '*' },
+  // The parser notices at the end of the statement, the line after: where any JavaScript engine says it is.
+  { name: 'a missing bracket', sphere: 'new Sphere([0, 0, -20], 4', message: 'SyntaxError: Expected `,` or `)` but found `;`', at: ';', line: '.add(new PointLight' },
+];
+
+SYNTAX.forEach((mistake, i) => {
+  test(`a syntax error, ${mistake.name}: the panel shows the line and column; a fixed save clears it`, async ({ page }) => {
+    const source = sketchSource(mistake);
+    const sketch = liveSketch(`live-syntax-${i}`, source);
+    try {
+      const consoleErrors = [];
+      page.on('console', (m) => { if (m.type() === 'error') consoleErrors.push(m.text()); });
+      await page.goto(sketch.url);
+      const panel = page.locator('[data-error]');
+      await expect(panel).toBeVisible();
+      await expect(panel.locator('[data-error-message]')).toContainText(mistake.message);
+      const line = lineOf(source, mistake.line ?? (mistake.before ?? mistake.sphere).trim());
+      const text = source.split('\n')[line - 1].trim();
+      const where = await panel.locator('[data-error-where]').textContent();
+      expect(where).toMatch(new RegExp(`^${sketch.file}:${line}:\\d+$`));
+      if (mistake.at) { // the column is the offending character's (1-based)
+        const column = Number(where.split(':').at(-1));
+        expect(source.split('\n')[line - 1][column - 1]).toBe(mistake.at);
+      }
+      await expect(panel.locator('[data-error-source]')).toContainText(`${line} │ ${text}`);
+      expect(consoleErrors.some((e) => e.startsWith('SyntaxError') && e.includes(`${sketch.file}:${line}:`))).toBe(true);
+
+      await saveAndWaitForReload(page, sketch, FIXED);
+      await waitForDone(page);
+      await expect(panel).toHaveCount(0);
+      await expectPicture(page);
+    } finally {
+      sketch.remove();
+    }
+  });
+});
+
 MISTAKES.forEach((mistake, i) => {
   test(`${mistake.name}: the panel names it and the sketch's line; a fixed save clears it`, async ({ page }) => {
     const sketch = liveSketch(`live-mistake-${i}`, mistake.source);
@@ -88,9 +128,7 @@ MISTAKES.forEach((mistake, i) => {
       await expect(page.locator('body')).toHaveAttribute('data-render', mistake.picture ? 'done' : 'error');
       if (mistake.picture) await expectPicture(page); // the last good picture stays under the panel
 
-      const reloaded = page.waitForEvent('load');
-      sketch.save(FIXED);
-      await reloaded;
+      await saveAndWaitForReload(page, sketch, FIXED);
       await waitForDone(page);
       await expect(panel).toHaveCount(0);
       await expectPicture(page);

@@ -3,7 +3,7 @@
  */
 import { test, expect } from '@playwright/test';
 import { waitForDone, clickPixel } from './helpers.js';
-import { liveSketch, sketchSource } from './live-sketch.js';
+import { liveSketch, sketchSource, saveAndWaitForReload } from './live-sketch.js';
 
 test('a save reloads the pages running that sketch, not every page on the server', async ({ browser }) => {
   const edited = liveSketch('live-save-edited', sketchSource());
@@ -54,9 +54,7 @@ test('a save keeps the selected pixel, the mode, the boxes and the scroll positi
     expect(before).toMatch(/^Pixel: 10,12; H: /);
     await page.evaluate(() => window.scrollTo(0, 700));
 
-    let reloaded = page.waitForEvent('load');
-    sketch.save(sketchSource({ ...PLACE, sphere: 'new Sphere([0, 0, -20], 5, { color: [1, 0.32, 0.36] })' }));
-    await reloaded;
+    await saveAndWaitForReload(page, sketch, sketchSource({ ...PLACE, sphere: 'new Sphere([0, 0, -20], 5, { color: [1, 0.32, 0.36] })' }));
     await waitForDone(page);
     await expect(answer).toHaveText(before); // the same pixel, through the same turned camera
     expect(await page.evaluate(() => window.view.mode)).toBe('discriminant');
@@ -65,9 +63,7 @@ test('a save keeps the selected pixel, the mode, the boxes and the scroll positi
     await expect.poll(() => page.evaluate(() => window.scrollY)).toBe(700);
 
     // The code changes the box's value: the new code's value shows, the rest of the place stays.
-    reloaded = page.waitForEvent('load');
-    sketch.save(sketchSource({ ...PLACE, after: PLACE.after.replace("createInput('0')", "createInput('-5')") }));
-    await reloaded;
+    await saveAndWaitForReload(page, sketch, sketchSource({ ...PLACE, after: PLACE.after.replace("createInput('0')", "createInput('-5')") }));
     await waitForDone(page);
     await expect(page.locator('#yaw')).toHaveValue('-5');
     expect(await page.evaluate(() => window.view.camera.yaw)).toBe(0); // the sketch's own camera: the box was not typed in
@@ -91,13 +87,9 @@ test('a save that breaks setup, then one that fixes it, comes back to the place 
     await page.goto(sketch.url);
     await waitForDone(page);
     await clickPixel(page.locator('[data-tracer]'), 20, 30);
-    let reloaded = page.waitForEvent('load');
-    sketch.save(sketchSource({ ...PLACE, sphere: 'new Sphere([0, 0, -20], "4")' }));
-    await reloaded;
+    await saveAndWaitForReload(page, sketch, sketchSource({ ...PLACE, sphere: 'new Sphere([0, 0, -20], "4")' }));
     await expect(page.locator('[data-error]')).toBeVisible();
-    reloaded = page.waitForEvent('load');
-    sketch.save(sketchSource(PLACE));
-    await reloaded;
+    await saveAndWaitForReload(page, sketch, sketchSource(PLACE));
     await waitForDone(page);
     await expect(page.locator('[data-inspector] [data-answer]')).toHaveText(/^Pixel: 20,30; H: /);
   } finally {

@@ -1,0 +1,34 @@
+import { describe, it, expect } from 'vitest';
+import { resolve } from 'node:path';
+import { syntaxErrorsWhereTheyAre } from '../../scripts/vite-live-coding.js';
+
+const ROOT = resolve('.');
+const plugin = syntaxErrorsWhereTheyAre();
+plugin.configResolved({ root: ROOT });
+const context = { error: (message, pos) => { throw Object.assign(new Error(message), { pos }); } };
+const transform = (code, id) => plugin.transform.call(context, code, id);
+
+const BROKEN = "import p5 from 'p5';\n\nfunction f() {\n  const s = 'abc;\n}\n";
+
+describe('syntaxErrorsWhereTheyAre', () => {
+  it('leaves valid code and files it does not own alone', () => {
+    expect(transform("import p5 from 'p5';\nnew p5(() => {});\n", resolve('sketches/10-playground.js'))).toBeNull();
+    expect(transform(BROKEN, resolve('node_modules/x/index.js'))).toBeNull();
+    expect(transform('body { color: red }', resolve('sketches/sketch.css'))).toBeNull();
+  });
+
+  it("a page's script with a syntax error becomes a module showing it on that page, at its line and column", () => {
+    const code = transform(BROKEN, resolve('sketches/10-playground.js'));
+    expect(code).toContain('import { showMistake } from "/lib/p5/error-panel.js";');
+    expect(code).toContain('console.error("SyntaxError: Unterminated string (sketches/10-playground.js:4:13)");');
+    expect(code).toContain('"file":"sketches/10-playground.js","line":4,"column":13,"source":"  const s = \'abc;","exact":true');
+    expect(BROKEN.split('\n')[3][12]).toBe("'"); // column 13 is the quote that opens the string
+  });
+
+  it('any other module reports it to Vite (its overlay) at the offset of the mistake, not at 1:0', () => {
+    let thrown;
+    try { transform(BROKEN, resolve('lib/some-helper.js')); } catch (error) { thrown = error; }
+    expect(thrown.message).toBe('Syntax error: Unterminated string');
+    expect(thrown.pos).toBe(BROKEN.indexOf("'abc"));
+  });
+});
