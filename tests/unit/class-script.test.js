@@ -1,0 +1,60 @@
+import { describe, it, expect } from 'vitest';
+import { spawn } from 'node:child_process';
+import { createServer } from 'node:net';
+import { networkInterfaces } from 'node:os';
+import { classroomAddresses, portFrom } from '../../scripts/class.js';
+
+describe('npm run class', () => {
+  it('offers every outside IPv4 address, private networks first, never the loopback or a link-local one', () => {
+    const interfaces = {
+      lo: [{ address: '127.0.0.1', family: 'IPv4', internal: true }, { address: '::1', family: 'IPv6', internal: true }],
+      docker0: [{ address: '203.0.113.5', family: 'IPv4', internal: false }],
+      wlan0: [{ address: '192.168.1.23', family: 'IPv4', internal: false }, { address: 'fe80::1', family: 'IPv6', internal: false }],
+      eth1: [{ address: '169.254.3.4', family: 'IPv4', internal: false }],
+    };
+    expect(classroomAddresses(interfaces, 5173)).toEqual(['http://192.168.1.23:5173/', 'http://203.0.113.5:5173/']);
+    expect(classroomAddresses({ lo: interfaces.lo }, 5173)).toEqual([]);
+  });
+
+  it('takes --port N, else 5173, and names a bad port', () => {
+    expect(portFrom(['node', 'class.js'])).toBe(5173);
+    expect(portFrom(['node', 'class.js', '--port', '8080'])).toBe(8080);
+    expect(() => portFrom(['node', 'class.js', '--port', 'eighty'])).toThrow(/--port must be a whole number/);
+  });
+
+  it('serves the gallery on the network and prints the address students type', async () => {
+    const port = await freePort();
+    const child = spawn(process.execPath, ['scripts/class.js', '--port', String(port)], { stdio: ['ignore', 'pipe', 'pipe'] });
+    try {
+      let output = '';
+      const address = await new Promise((resolveAddress, reject) => {
+        const timer = setTimeout(() => reject(new Error(`no address printed in 30 s:\n${output}`)), 30_000);
+        child.stdout.on('data', (d) => {
+          output += d;
+          const m = /Students type this address[^\n]*\n\s*\n\s*(http:\/\/\S+)/.exec(output);
+          if (m || /No network found/.test(output)) { clearTimeout(timer); resolveAddress(m?.[1] ?? null); }
+        });
+        child.on('exit', () => reject(new Error(`the script ended:\n${output}`)));
+      });
+      if (address === null) { // a machine on no network says so, and has no address to offer
+        expect(classroomAddresses(networkInterfaces(), port)).toEqual([]);
+        return;
+      }
+      expect(address).toMatch(new RegExp(`^http://\\d+\\.\\d+\\.\\d+\\.\\d+:${port}/$`));
+      const page = await (await fetch(address)).text();
+      expect(page).toContain('Raytracing Sketchbook');
+    } finally {
+      child.kill('SIGTERM');
+    }
+  }, 60_000);
+});
+
+/** A port nothing listens on now. */
+function freePort() {
+  return new Promise((resolvePort) => {
+    const server = createServer().listen(0, () => {
+      const { port } = server.address();
+      server.close(() => resolvePort(port));
+    });
+  });
+}
