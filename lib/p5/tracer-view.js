@@ -20,13 +20,23 @@ import { modeShader, modeLegend } from '../modes.js';
 import { pixelCoordinate, show } from '../check.js';
 import { registerView } from './page-state.js';
 import { useStyle, element, resolveParent, sketchNode } from './dom.js';
+import { addProjectorSwitch } from './projector.js';
 import { createLegendElement } from './diagrams.js';
 
 /** On-screen pixels per traced pixel below which the grid would hide the picture. */
 const GRID_MIN_SCALE = 6;
-/** 'auto' scale: the picture fits this box (px) and the parent's width. */
-const AUTO_MAX_WIDTH = 640;
+/**
+ * 'auto' scale: the picture fits its parent's width, 40rem, 70% of the
+ * window's height, and leaves 34rem of the window's width for a panel beside
+ * it (so that at 1024×768 the inspector still sits next to the picture).
+ * Sizes are in rem so that the picture grows with the page's text on a big
+ * screen (sketch.css sets the root font size from the window's width).
+ */
+const AUTO_MAX_WIDTH_REM = 40;
+const AUTO_PANEL_ROOM_REM = 34;
 const AUTO_MAX_HEIGHT_SHARE = 0.7;
+/** The size of text a numeric `scale` is given for: the browser's default rem. */
+const BASE_REM = 16;
 
 /**
  * Creates a tracer view inside a p5 sketch (call it from setup()).
@@ -34,7 +44,7 @@ const AUTO_MAX_HEIGHT_SHARE = 0.7;
  * @param {object} options
  * @param {import('../scene.js').Scene} options.scene
  * @param {import('../camera.js').Camera} options.camera its width × height is the traced resolution
- * @param {'auto'|number} [options.scale='auto'] on-screen pixels per traced pixel; 'auto' = the largest whole number that fits
+ * @param {'auto'|number} [options.scale='auto'] on-screen pixels per traced pixel with 16 px text (more, in whole steps, when the page's text is larger); 'auto' = the largest whole number that fits
  * @param {boolean} [options.grid=false] draw the pixel grid (on an overlay, never into the picture)
  * @param {string} [options.mode='shaded'] visual mode: 'shaded', 'discriminant', 'roots', 'h', 'v', 'normals', 'depth'
  * @param {'coarse'|'scanline'|'slow'} [options.renderMode='coarse'] the order pixels are traced in
@@ -65,6 +75,7 @@ export class TracerView {
     this.showLegend = legend;
 
     useStyle();
+    addProjectorSwitch();
     this.#buildDom(resolveParent(parent, sketchNode(p)), label);
     this.#page = registerView(this);
     this.#onResize = () => this.#layout();
@@ -273,9 +284,15 @@ export class TracerView {
   /* ---------------- layout and overlay ---------------- */
 
   #screenScale() {
-    if (this.#scale !== 'auto') return this.#scale;
-    const available = this.figure.parentElement?.clientWidth || AUTO_MAX_WIDTH;
-    const maxW = Math.min(available, AUTO_MAX_WIDTH);
+    const rem = rootFontSize();
+    if (this.#scale !== 'auto') {
+      // A number is for 16 px text; larger text (a projector) makes the pixels larger, in whole steps.
+      const s = this.#scale * (rem / BASE_REM);
+      return Number.isInteger(this.#scale) ? Math.max(1, Math.round(s)) : s;
+    }
+    const available = this.figure.parentElement?.clientWidth || AUTO_MAX_WIDTH_REM * rem;
+    const besidePanel = window.innerWidth - AUTO_PANEL_ROOM_REM * rem; // on a narrow screen the panel goes below instead
+    const maxW = Math.min(available, AUTO_MAX_WIDTH_REM * rem, besidePanel >= 20 * rem ? besidePanel : Infinity);
     const maxH = window.innerHeight * AUTO_MAX_HEIGHT_SHARE;
     const fit = Math.min(maxW / this.width, maxH / this.height);
     return fit >= 1 ? Math.floor(fit) : fit; // whole numbers keep every pixel the same size
@@ -431,6 +448,11 @@ function drawCrosshair(g, x, y, k, W, H) {
   g.stroke();
   g.restore();
   outlinePixel(g, x, y, k, '#ffffff', Math.max(2, Math.round(k / 8)));
+}
+
+/** The root element's font size in px (1rem). */
+function rootFontSize() {
+  return parseFloat(getComputedStyle(document.documentElement).fontSize) || BASE_REM;
 }
 
 function clamp(v, lo, hi) {
