@@ -22,6 +22,13 @@ import { useStyle, element, resolveParent } from './dom.js';
 export const AGREE_TOLERANCE = 1e-9;
 
 /**
+ * A scene with more spheres than this shows only the rows that matter (the
+ * hit, the other spheres the ray meets, the nearest misses) and the rest on
+ * demand: a 1,000-sphere table took a click a quarter of a second.
+ */
+export const SPHERE_ROWS = 12;
+
+/**
  * Creates an inspector panel that follows `view`'s selected pixel:
  * `p.createInspector({ view })` in a sketch.
  * @param {p5} p the sketch (unused: the panel goes beside the view)
@@ -67,10 +74,27 @@ export class Inspector {
     this.answer.textContent = answerLine(r);
     this.element.dataset.x = String(r.x);
     this.element.dataset.y = String(r.y);
-    this.body.replaceChildren(colorSection(r), raySection(r), hitSection(r), lightsSection(r), quadraticSection(r), geometricSection(r));
-    this.csvBox.value = pixelCSV(r);
+    this.#showBody(r, rowsThatMatter(r));
+    this.csvBox.value = this.csvDetails.open ? pixelCSV(r) : ''; // written when opened or copied: 1,000 rows cost time
     this.status.textContent = '';
     this.element.dataset.state = 'shown';
+  }
+
+  /** The sections, with the spheres' tables limited to the tests `shown` (all when null). */
+  #showBody(r, shown) {
+    const tests = shown ?? r.tests;
+    const more = shown ? this.#moreButton(r) : null;
+    this.body.replaceChildren(colorSection(r), raySection(r), hitSection(r), lightsSection(r),
+      quadraticSection(r, tests, more), geometricSection(r, tests, more && this.#moreButton(r)));
+  }
+
+  /** "Show all 1,000 spheres": the whole tables, for this pixel. */
+  #moreButton(r) {
+    const n = r.tests.length.toLocaleString('en');
+    const button = element('button', { type: 'button', class: 'rt-button rt-more', 'data-show-all-spheres': '' }, `Show all ${n} spheres`);
+    button.addEventListener('click', () => { if (this.record === r) this.#showBody(r, null); });
+    return element('p', { class: 'rt-note', 'data-sphere-rows': `${SPHERE_ROWS} of ${r.tests.length}` },
+      `Showing the ${SPHERE_ROWS} spheres that matter for this ray (the hit, the others it meets, the nearest misses) of ${n}. `, button);
   }
 
   /** The shown pixel's data as CSV (one row per sphere), or '' when none. */
@@ -110,6 +134,7 @@ export class Inspector {
     this.status = element('span', { class: 'rt-status', 'data-copy-status': '', role: 'status' });
     this.csvBox = element('textarea', { class: 'rt-csv', 'data-csv': '', rows: '6', readonly: '', spellcheck: 'false', 'aria-label': 'This pixel as CSV' });
     this.csvDetails = element('details', { class: 'rt-csv-details' }, element('summary', {}, 'CSV text'), this.csvBox);
+    this.csvDetails.addEventListener('toggle', () => { if (this.csvDetails.open) this.csvBox.value = this.csv(); });
     return element('footer', { class: 'rt-inspector-tools' }, element('div', { class: 'rt-row' }, button, this.status), this.csvDetails);
   }
 }
@@ -249,13 +274,30 @@ function sphereCell(test, i) {
   return element('th', { scope: 'row' }, nameOf(test.sphere, `sphere ${i}`));
 }
 
+/**
+ * The tests worth a row when there are more than SPHERE_ROWS (else null: all):
+ * the spheres the ray meets, nearest first, then the misses by how near the
+ * ray passes (√d² − r), shown in the scene's order.
+ */
+export function rowsThatMatter(r, limit = SPHERE_ROWS) {
+  if (r.tests.length <= limit) return null;
+  const gap = (test) => {
+    if (test.sphere === r.hit?.object) return -Infinity;
+    if (test.quadratic.t !== null) return -1e300 + test.quadratic.t; // met further on: after the hit, before any miss
+    return Math.sqrt(Math.max(0, test.geometric.d2)) - test.sphere.radius;
+  };
+  const ranked = r.tests.map((test, i) => [gap(test), i]).sort((a, b) => a[0] - b[0]).slice(0, limit);
+  return ranked.map(([, i]) => i).sort((a, b) => a - b).map((i) => r.tests[i]);
+}
+
 function rowClass(r, test) {
   return [test.sphere === r.hit?.object ? 'rt-hit-row' : '', test.quadratic.roots === 0 ? 'rt-miss-row' : ''].join(' ').trim();
 }
 
-function quadraticSection(r) {
+function quadraticSection(r, tests = r.tests, more = null) {
   const head = ['sphere', 'A', 'B', 'C', 'B² − 4AC', 'meaning', 't0', 't1'];
-  const rows = r.tests.map((test, i) => {
+  const rows = tests.map((test, k) => {
+    const i = tests === r.tests ? k : r.tests.indexOf(test);
     const q = test.quadratic, at = { 'data-sphere': String(i), 'data-route': 'quadratic' };
     return element('tr', { class: rowClass(r, test) }, sphereCell(test, i),
       ...['A', 'B', 'C', 'discriminant'].map((f) => element('td', {}, value(f, q[f], at))),
@@ -266,13 +308,14 @@ function quadraticSection(r) {
       element('td', {}, value('t0', q.t0, at)),
       element('td', {}, value('t1', q.t1, at)));
   });
-  return section('Quadratic route: At² + Bt + C = 0', rows.length ? table(head, rows) : noSpheres(),
+  return section('Quadratic route: At² + Bt + C = 0', rows.length ? table(head, rows) : noSpheres(), more,
     element('p', { class: 'rt-note' }, 'Discriminant < 0: no hit; = 0: tangent; > 0: two hits, t = (−B ± √(B² − 4AC)) / 2A. The nearest hit is the smallest positive t (highlighted row).'));
 }
 
-function geometricSection(r) {
+function geometricSection(r, tests = r.tests, more = null) {
   const head = ['sphere', 'L = C − Ro', 'tca', 'd²', 'thc', 't0', 't1', 'agree'];
-  const rows = r.tests.map((test, i) => {
+  const rows = tests.map((test, k) => {
+    const i = tests === r.tests ? k : r.tests.indexOf(test);
     const g = test.geometric, at = { 'data-sphere': String(i), 'data-route': 'geometric' };
     const agree = routesAgree(test.quadratic, g);
     return element('tr', { class: rowClass(r, test) }, sphereCell(test, i),
@@ -283,7 +326,7 @@ function geometricSection(r) {
         title: agree ? 'Both routes find the same roots' : 'The two routes disagree',
       }, agree ? '✓' : '✗')));
   });
-  return section('Geometric route: tca = L·Rd, d² = L·L − tca², thc = √(r² − d²)', rows.length ? table(head, rows) : noSpheres(),
+  return section('Geometric route: tca = L·Rd, d² = L·L − tca², thc = √(r² − d²)', rows.length ? table(head, rows) : noSpheres(), more,
     element('p', { class: 'rt-note' }, 'd > r: the ray passes the sphere by. Otherwise t = tca ∓ thc — the same roots as the quadratic.'));
 }
 
