@@ -46,6 +46,7 @@ test.describe('1,000 spheres in sketch 05', () => {
   });
 
   test('a click shows the rows that matter, the rest on demand; the form a page of rows', async ({ page }) => {
+    test.setTimeout(180_000); // tracing 1,000 spheres, and every row on demand, on a busy machine
     const errors = watchConsole(page);
     await page.goto(`/sketches/05-value-boxes.html#scene=${await encodeSceneLink(wall())}`);
     await waitForDone(page, 60_000);
