@@ -1,7 +1,9 @@
 /**
  * 07 · The original examples (slide "Javascript Ray Tracer — out of the box"):
  * the class library's three examples on one page.
- *   still     the class scene, traced once;
+ *   still     the class scene, traced once, 160 × 120 big pixels;
+ *   original  the same at the class library's own size, 640 × 480 (its example
+ *             1), traced progressively so the page answers clicks as it sharpens;
  *   animated  the spheres circle the pink one; each frame is traced whole on
  *             the main thread, and an FPS counter says how many per second;
  *   workers   the same frames shared out over Web Workers (ParallelRenderer):
@@ -13,11 +15,13 @@ import { Camera, classScene, classSceneAt } from '../lib/index.js';
 import { exampleInLink } from '../lib/p5/index.js'; // and the sketchbook's p5 addon: p.createTracerView, …
 
 const STILL = { width: 160, height: 120 };   // traced pixels of the still scene
+const ORIGINAL = { width: 640, height: 480 }; // of example 1 as the class library drew it
 const MOVIE = { width: 320, height: 240 };   // of each animation frame: bigger frames, more work to share
 const SECONDS_PER_TURN = 12;                 // the spheres circle the pink one this fast
 const WORKERS = 4;                           // worker count at first (the box takes 1–8)
 const EXAMPLES = { // the note under the picture; an animation's frames are traced on `thread`
   still: { note: 'The class scene, traced once, coarse to fine. Click a pixel to see its story.' },
+  original: { label: '640×480', note: 'Example 1 at the class library’s own size, 640 × 480: traced a little each frame, coarse to fine. Click a pixel to see its story.' },
   animated: { thread: 'main', note: 'Every frame is traced whole on the page’s own thread. Pause to click a pixel of the frame.' },
   workers: { thread: 'workers', note: 'The rows of each frame are dealt out to the workers; the page only copies them onto the screen. Pause to click a pixel.' },
 };
@@ -26,7 +30,7 @@ const EXAMPLES = { // the note under the picture; an animation's frames are trac
 const sceneAt = (t) => classSceneAt(t, SECONDS_PER_TURN);
 
 new p5((p) => {
-  const stillCamera = new Camera(STILL), movieCamera = new Camera(MOVIE);
+  const stillCamera = new Camera(STILL), originalCamera = new Camera(ORIGINAL), movieCamera = new Camera(MOVIE);
   let view, movie;
 
   p.setup = () => {
@@ -52,6 +56,6 @@ new p5((p) => {
     if (thread) return movie.start(thread);
     movie.stop();
     view.budgetMs = 8; // traced a little per frame: watch it sharpen
-    view.setCamera(stillCamera).setScene(classScene());
+    view.setCamera(name === 'original' ? originalCamera : stillCamera).setScene(classScene());
   }
 }, document.getElementById('sketch'));

@@ -4,7 +4,7 @@
  * plays an Animation shows a row with Pause / Play (and, on the workers, how
  * many), and under the picture the frame counter and a note on what is shown.
  *
- *   const picker = p.createExamplePicker({ parent: column, examples: EXAMPLES, onChoose }); // EXAMPLES: { name: { note, thread? } }
+ *   const picker = p.createExamplePicker({ parent: column, examples: EXAMPLES, onChoose }); // EXAMPLES: { name: { note, label?, thread? } }
  *   const view = p.createTracerView({ …, parent: column });      // the picture goes under the buttons
  *   picker.attach(p.createAnimation({ view, sceneAt, camera }));
  *   picker.choose(exampleInLink(location.search, EXAMPLES).name);
@@ -32,14 +32,14 @@ export function exampleInLink(search, examples) {
  * @param {p5} p the sketch
  * @param {object} options
  * @param {HTMLElement|{elt: HTMLElement}|string} [options.parent] where the buttons go; default the sketch's node
- * @param {Record<string, { note: string, thread?: 'main'|'workers' }>} options.examples by name, in order:
- *   the note under the picture, and for an animated one the thread its frames are traced on
+ * @param {Record<string, { note: string, label?: string, thread?: 'main'|'workers' }>} options.examples by name, in order:
+ *   the note under the picture, the button's text (default the name), and for an animated one the thread its frames are traced on
  * @param {(name: string, example: object) => void} options.onChoose shows the chosen example
  * @returns {{ attach: Function, choose: Function, say: Function }}
  */
 export function createExamplePicker(p, { parent, examples, onChoose }) {
   const host = resolveParent(parent, sketchNode(p));
-  const buttons = Object.keys(examples).map((name) => element('button', { class: 'rt-button', 'data-example': name }, name));
+  const buttons = Object.entries(examples).map(([name, { label = name }]) => element('button', { class: 'rt-button', 'data-example': name }, label));
   const pause = element('button', { class: 'rt-button', 'data-pause': '' }, 'Pause');
   const row = element('div', { class: 'controls' }, pause);
   const error = element('p', { class: 'error', role: 'alert', 'data-message': 'example' });

@@ -147,8 +147,8 @@ test.describe('07 · the original examples', () => {
     const c = document.querySelector('[data-tracer]');
     const shown = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
     const t = Number(document.querySelector('[data-stats]').dataset.time);
-    const expected = example === 'still'
-      ? render(classScene(), new Camera({ width: 160, height: 120 }))
+    const expected = example === 'still' || example === 'original'
+      ? render(classScene(), new Camera(example === 'still' ? { width: 160, height: 120 } : { width: 640, height: 480 }))
       : render(window.sketch.sceneAt(t), window.sketch.camera);
     let differ = Math.abs(shown.length - expected.length);
     for (let i = 0; i < Math.min(shown.length, expected.length); i++) if (shown[i] !== expected[i]) differ++;
@@ -178,6 +178,34 @@ test.describe('07 · the original examples', () => {
     expect(await canvasVersusRender(page, 'still')).toEqual({ differ: 0, length: 160 * 120 * 4 });
     await selectPixel(page, 80, 60);
     await expect(hitObject(page)).toHaveText('pink');
+  });
+
+  test('640×480: example 1 at the class library\'s own size, traced progressively, and the inspector answers', async ({ page }) => {
+    await page.goto(SKETCH_07);
+    await waitForDone(page);
+    // Progressive: traced a frame's worth at a time (8 ms), so the page draws many frames while "rendering".
+    await page.evaluate(() => {
+      window.framesWhileRendering = 0;
+      const count = () => { if (document.body.dataset.render === 'rendering') window.framesWhileRendering++; requestAnimationFrame(count); };
+      requestAnimationFrame(count);
+    });
+    await page.locator('[data-example="original"]').click();
+    await expect(page.locator('[data-example="original"]')).toHaveText('640×480');
+    await expect(page.locator('[data-example="original"]')).toHaveAttribute('aria-pressed', 'true');
+    const view = page.locator('[data-tracer]');
+    await expect(view).toHaveAttribute('data-width', '640');
+    await expect(view).toHaveAttribute('data-height', '480');
+    await selectPixel(page, 320, 240); // a click while it traces is answered at once
+    await waitForDone(page);
+    expect(await page.evaluate(() => window.framesWhileRendering)).toBeGreaterThanOrEqual(3); // not one long task
+    expect(await canvasVersusRender(page, 'original')).toEqual({ differ: 0, length: 640 * 480 * 4 });
+    await expect(hitObject(page)).toHaveText('pink');
+    await selectPixel(page, 10, 10);
+    await expect(hitObject(page)).not.toHaveText('pink');
+    // The link opens it too.
+    await page.goto(`${SKETCH_07}?example=original`);
+    await waitForDone(page);
+    await expect(view).toHaveAttribute('data-width', '640');
   });
 
   test('animated: the frame counter rises with an FPS figure; Pause stops it at "done" and the frame can be inspected', async ({ page }) => {
@@ -234,7 +262,7 @@ test.describe('07 · the original examples', () => {
   test('a bad ?example= says so and shows the still scene', async ({ page }) => {
     await page.goto(`${SKETCH_07}?example=movie`);
     await waitForDone(page);
-    await expect(page.locator('[data-message="example"]')).toHaveText('example must be still, animated, workers; got "movie", so here is the still scene.');
+    await expect(page.locator('[data-message="example"]')).toHaveText('example must be still, original, animated, workers; got "movie", so here is the still scene.');
     await expect(page.locator('[data-example="still"]')).toHaveAttribute('aria-pressed', 'true');
     await page.locator('[data-example="animated"]').click();
     await expect(page.locator('[data-message="example"]')).toBeHidden();
