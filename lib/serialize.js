@@ -166,7 +166,7 @@ function parse(json, what) {
     try {
       data = JSON.parse(json);
     } catch (error) {
-      throw new TypeError(`${what} is not valid JSON: ${error.message.slice(0, 160)}`);
+      throw new TypeError(`${what} is not valid JSON: ${error.message.slice(0, 160)}`, { cause: error });
     }
   }
   if (data === null || typeof data !== 'object' || Array.isArray(data)) {
@@ -241,8 +241,8 @@ function named(make, prefix) {
   try {
     return make();
   } catch (error) {
-    if (error instanceof TypeError) throw new TypeError(prefix + error.message);
-    if (error instanceof RangeError) throw new RangeError(prefix + error.message);
+    if (error instanceof TypeError) throw new TypeError(prefix + error.message, { cause: error });
+    if (error instanceof RangeError) throw new RangeError(prefix + error.message, { cause: error });
     throw error;
   }
 }

@@ -8,7 +8,7 @@
  * `trace` fills `out` ([r, g, b], 0–1 and above) and allocates nothing; given a
  * `steps` object it also records every intermediate value for the inspector.
  */
-import { vec3, dot, copy, scaleAndAdd, sub, length, reflect, scale } from './vec3.js';
+import { vec3, dot, copy, scaleAndAdd, reflect } from './vec3.js';
 import { Ray } from './ray.js';
 import { EPSILON } from './shapes/sphere.js';
 

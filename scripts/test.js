@@ -1,6 +1,6 @@
 /**
- * npm test: the unit tests (Vitest), then the browser tests (Playwright),
- * then one closing line with the totals.
+ * npm test: the linter and format check (ESLint), the unit tests (Vitest),
+ * then the browser tests (Playwright), then one closing line with the totals.
  */
 import { spawnSync } from 'node:child_process';
 import { readFileSync, mkdirSync } from 'node:fs';
@@ -10,11 +10,13 @@ mkdirSync('test-results', { recursive: true });
 const run = (cmd, args) => spawnSync(cmd, args, { stdio: 'inherit', shell: false }).status;
 const bin = (name) => `node_modules/.bin/${name}`;
 
+const lintStatus = run(bin('eslint'), ['.']);
+if (lintStatus !== 0) console.error('\nESLint found problems (above): `npm run lint` lists them, `npx eslint --fix .` mends the format ones.\n');
 const unitStatus = run(bin('vitest'), ['run', '--reporter=default', '--reporter=json', '--outputFile=test-results/unit.json']);
 const unit = readJSON('test-results/unit.json');
 const counts = {
   passed: unit?.numPassedTests ?? 0,
-  failed: unit ? unit.numFailedTests : 1,
+  failed: (unit ? unit.numFailedTests : 1) + (lintStatus === 0 ? 0 : 1),
 };
 
 let e2eStatus = 1;
@@ -28,7 +30,7 @@ if (findBrowser() === null) {
   counts.failed += stats ? stats.unexpected + stats.flaky : 1;
 }
 
-const ok = unitStatus === 0 && e2eStatus === 0 && counts.failed === 0;
+const ok = lintStatus === 0 && unitStatus === 0 && e2eStatus === 0 && counts.failed === 0;
 console.log(`\ntotal: ${counts.passed} passed, ${counts.failed} failed`);
 process.exit(ok ? 0 : 1);
 

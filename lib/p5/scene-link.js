@@ -53,7 +53,7 @@ export async function decodeSceneLink(text) {
     bytes = await pipe(fromBase64url(body), new DecompressionStream('deflate-raw'), MAX_SCENE_BYTES);
   } catch (error) {
     if (error instanceof RangeError) throw error;
-    throw new TypeError('the scene in the link is cut short or damaged');
+    throw new TypeError('the scene in the link is cut short or damaged', { cause: error });
   }
   let json;
   try {

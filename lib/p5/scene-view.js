@@ -67,9 +67,9 @@ export function createSceneView(p, options = {}) {
 }
 
 export class SceneView {
-  #p; #g = null; #view; #raf = 0; #destroyed = false; #unlisten;
+  #g = null; #view; #raf = 0; #destroyed = false; #unlisten;
   #orbit; #home; #bounds; #planeDistance; #planeOption; #frustum;
-  #picture; #pictureCtx; #k = 1; #pictureKey = ''; #lastDrawMs = 0; #lastDrawAt = -Infinity;
+  #picture; #pictureCtx; #pictureKey = ''; #lastDrawMs = 0; #lastDrawAt = -Infinity;
   #selected = null; #segments = []; #record = null;
   #extra = []; #drag = null; #target; #geometry = null;
   /** Shoot: rays in flight `{ segments, t0 }`, the pixel traced last, the row / column fan ('h' / 'v'). */
@@ -87,7 +87,6 @@ export class SceneView {
     if (planeDistance !== 'auto' && !(typeof planeDistance === 'number' && planeDistance > 0 && Number.isFinite(planeDistance))) {
       throw new RangeError(`planeDistance must be 'auto' or a distance greater than 0, got ${show(planeDistance)}`);
     }
-    this.#p = p;
     this.#view = view;
     this.#planeOption = planeDistance;
     this.#frustum = Boolean(frustum);
@@ -357,7 +356,7 @@ export class SceneView {
   }
 
   #draw() {
-    const g = this.#g, view = this.#view, scene = view.scene, camera = view.camera;
+    const g = this.#g, view = this.#view, camera = view.camera;
     const o = this.#eye();
     g.push();
     g.background(246, 247, 249);
@@ -499,11 +498,11 @@ export class SceneView {
    * when the picture or the selection changed.
    */
   #updatePicture() {
-    const view = this.#view, W = view.width, H = view.height, r = view.renderer;
+    const view = this.#view, W = view.width, H = view.height;
     const key = `${W}x${H}:${this.#selected?.x},${this.#selected?.y}`;
     if (this.#pictureKey === key) return;
     this.#pictureKey = key;
-    const k = this.#k = Math.max(1, Math.floor(MAX_TEXTURE / Math.max(W, H)));
+    const k = Math.max(1, Math.floor(MAX_TEXTURE / Math.max(W, H)));
     const pic = this.#picture;
     if (pic.width !== W * k || pic.height !== H * k) { pic.resizeCanvas(W * k, H * k); this.#pictureCtx = pic.drawingContext; }
     const c = pic.elt, ctx = this.#pictureCtx;

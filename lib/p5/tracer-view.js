@@ -59,13 +59,12 @@ export function createTracerView(p, options = {}) {
 }
 
 export class TracerView {
-  #p; #renderer; #page; #imageData = null; #raf = 0; #destroyed = false;
+  #renderer; #page; #imageData = null; #raf = 0; #destroyed = false;
   #scale; #grid; #mode; #selected = null; #listeners = [];
   #shownCurrent = null; #progressText = '';
   #ctx; #overlayCtx; #onResize;
 
   constructor(p, { scene, camera, scale = 'auto', grid = false, mode = 'shaded', renderMode = 'coarse', budgetMs = 8, parent, label, legend = true } = {}) {
-    this.#p = p;
     this.#scale = checkScale(scale);
     this.#grid = Boolean(grid);
     this.budgetMs = checkBudget(budgetMs);

@@ -58,7 +58,7 @@ describe('render and inspectPixel arguments', () => {
 });
 
 describe('colour text', () => {
-  it("names from Object.prototype are no colours", () => {
+  it('names from Object.prototype are no colours', () => {
     for (const name of ['constructor', '__proto__', 'toString', 'hasOwnProperty', 'valueOf']) {
       expect(() => toColor(name)).toThrow(TypeError);
       expect(() => toColor(name)).toThrow(`color must be a colour like '#ff5160', 'rgb(255, 81, 96)' or 'pink', got "${name.toLowerCase()}"`);

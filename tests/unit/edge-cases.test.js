@@ -33,7 +33,7 @@ describe('a light lying on a surface', () => {
   // the shadow ray reaches the face at the light's own distance, a tie that
   // must not count as a blocker (else the lit side gets speckled).
   it('is not shadowed by the surface it lies on', () => {
-    
+
     const scene = new Scene()
       .add(new Box([-1, -1, -6], [1, 1, -4], { color: [0.5, 0.5, 0.5] }))
       .add(new Sphere([0, 3, -5], 0.5, { color: [1, 1, 1] }))
