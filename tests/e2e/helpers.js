@@ -4,7 +4,7 @@
  * screenshots of a canvas.
  */
 import { test, expect } from '@playwright/test';
-import { readFileSync } from 'node:fs';
+import { existsSync, readFileSync } from 'node:fs';
 import { PNG } from 'pngjs';
 
 /**
@@ -67,11 +67,25 @@ export async function expectCanvasScreenshot(canvas, name) {
   await page.evaluate(() => document.fonts.ready); // late fonts would move the canvas after we measure
   await canvas.scrollIntoViewIfNeeded();
   const { clip, cssWidth, cssHeight } = await canvas.evaluate(paintedClip);
+  const referencePath = test.info().snapshotPath(name, { kind: 'screenshot' });
+  const isNew = !existsSync(referencePath);
   await expect(page).toHaveScreenshot(name, { clip });
-  const reference = PNG.sync.read(readFileSync(test.info().snapshotPath(name, { kind: 'screenshot' })));
+  // A missing reference fails the test without throwing ("writing actual"): say what to do next.
+  if (isNew && test.info().errors.length) throw new Error(firstPictureHelp(page.url(), name));
+  const reference = PNG.sync.read(readFileSync(referencePath));
   expect([reference.width, reference.height], `${name} is the canvas's CSS size`).toEqual([cssWidth, cssHeight]);
   const own = PNG.sync.read(Buffer.from((await canvas.evaluate((c) => c.toDataURL('image/png'))).split(',')[1], 'base64'));
   expect(firstForeignRow(reference, own), `${name}: first row that is not the canvas's pixels`).toBe(-1);
+}
+
+/** What to do when a picture had no reference: look at the one just written; for a sketch, the script that makes its alone. */
+export function firstPictureHelp(url, name) {
+  const sketch = /\/sketches\/(\d\d-[\w-]+\.html)/.exec(new URL(url).pathname)?.[1];
+  const look = `${name} had no reference picture: the picture just seen was written as one. Look at it; commit it if it is right.`;
+  return sketch
+    ? `${look}\nIf not, delete it, fix the sketch, and make this new sketch's reference alone (checked on a second run) with\n` +
+      `  npm run test:new-picture -- sketches/${sketch}\n(README: "How the first reference picture is made").`
+    : `${look} (README: "How the first reference picture is made").`;
 }
 
 /** In the page: the screen pixels the canvas is painted on (its edges rounded, as Chromium paints it). */
