@@ -16,6 +16,7 @@
 import { registerView } from './page-state.js';
 import { element } from './dom.js';
 import { ParallelRenderer } from '../workers/parallel.js';
+import { checkOptions } from '../check.js';
 
 /** Frames per second from the times (ms) frames reached the screen: 0 with fewer than two. */
 export function framesPerSecond(stamps) {
@@ -77,8 +78,9 @@ export function blit(canvas, buffer, width, height) {
  * @param {import('./tracer-view.js').TracerView} options.view where the frames are shown
  * @returns {Animation}
  */
-export function createAnimation(p, { view, ...options } = {}) {
-  return new Animation(view, options);
+export function createAnimation(p, options = {}) {
+  const { view, ...rest } = checkOptions(options, ['view', 'sceneAt', 'camera', 'workers', 'stats', 'onPlay', 'onPause', 'onError'], 'createAnimation');
+  return new Animation(view, rest);
 }
 
 export class Animation {

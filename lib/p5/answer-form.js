@@ -11,6 +11,7 @@
  */
 import { valueBox } from './scene-form.js';
 import { element, resolveParent, sketchNode } from './dom.js';
+import { checkOptions } from '../check.js';
 
 /**
  * Reads every box (each bad one shows its message): `{ name: value }`, or
@@ -32,7 +33,8 @@ export function readBoxes(boxes) {
  * @param {(text: string) => ?Record<string, string>} [options.parse] reads a pasted answer line into box texts by name, or null
  * @param {string|Node} [options.note] under the answer
  */
-export function createAnswerForm(p, { parent, boxes: specs, onCheck, title = 'Your answer', parse, note }) {
+export function createAnswerForm(p, options) {
+  const { parent, boxes: specs, onCheck, title = 'Your answer', parse, note } = checkOptions(options, ['parent', 'boxes', 'onCheck', 'title', 'parse', 'note'], 'createAnswerForm');
   const boxes = Object.fromEntries(Object.entries(specs).map(([name, spec]) => [name, valueBox({ name, ...spec })]));
   const checkButton = element('button', { type: 'submit', class: 'rt-button', 'data-check': '' }, 'Check');
   const form = element('form', { class: 'boxes', novalidate: '' }, ...Object.values(boxes).map((b) => b.element), checkButton);

@@ -13,6 +13,7 @@
  */
 import { element, resolveParent, sketchNode } from './dom.js';
 import { workerCountBox } from './animation.js';
+import { checkOptions } from '../check.js';
 
 /**
  * The example a link asks for with `?example=…`: when it names none of the
@@ -37,7 +38,8 @@ export function exampleInLink(search, examples) {
  * @param {(name: string, example: object) => void} options.onChoose shows the chosen example
  * @returns {{ attach: Function, choose: Function, say: Function }}
  */
-export function createExamplePicker(p, { parent, examples, onChoose }) {
+export function createExamplePicker(p, options) {
+  const { parent, examples, onChoose } = checkOptions(options, ['parent', 'examples', 'onChoose'], 'createExamplePicker');
   const host = resolveParent(parent, sketchNode(p));
   const buttons = Object.entries(examples).map(([name, { label = name }]) => element('button', { class: 'rt-button', 'data-example': name }, label));
   const pause = element('button', { class: 'rt-button', 'data-pause': '' }, 'Pause');

@@ -6,6 +6,7 @@
  *   p.createHomeworkCheck({ view, check: checkTrafficSignal, parent: 'check', problem });
  */
 import { element, resolveParent, sketchNode } from './dom.js';
+import { checkOptions } from '../check.js';
 
 /**
  * @param {p5} p the sketch
@@ -16,7 +17,8 @@ import { element, resolveParent, sketchNode } from './dom.js';
  * @param {string|null} [options.problem] a warning shown above the result (e.g. a bad ?solution= value), as plain text
  * @returns {{ button: HTMLButtonElement, results: HTMLElement, run: () => void }}
  */
-export function createHomeworkCheck(p, { view, check, parent, problem = null }) {
+export function createHomeworkCheck(p, options) {
+  const { view, check, parent, problem = null } = checkOptions(options, ['view', 'check', 'parent', 'problem'], 'createHomeworkCheck');
   const host = resolveParent(parent, sketchNode(p));
   const button = element('button', { type: 'button', class: 'rt-button' }, 'Check my scene');
   const results = element('div', { 'data-check-results': '' }, 'Press the button to check your scene against the task.');

@@ -15,7 +15,7 @@
  */
 import { inspectPixel } from '../explain.js';
 import { toHex, colorName } from '../color.js';
-import { show } from '../check.js';
+import { show, checkOptions } from '../check.js';
 import { useStyle, element, resolveParent } from './dom.js';
 
 /** Relative tolerance within which the two intersection routes "agree". */
@@ -38,7 +38,8 @@ export const SPHERE_ROWS = 12;
  * @param {string} [options.title] a heading above the panel's answer line (say whose angles it shows)
  * @returns {Inspector}
  */
-export function createInspector(p, { view, parent, title } = {}) {
+export function createInspector(p, options = {}) {
+  const { view, parent, title } = checkOptions(options, ['view', 'parent', 'title'], 'createInspector');
   return new Inspector({ view, parent, title });
 }
 

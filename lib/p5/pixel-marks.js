@@ -11,6 +11,7 @@
  *   p.draw = () => pinkOnes.draw();
  */
 import { element } from './dom.js';
+import { checkOptions } from '../check.js';
 
 /**
  * Every pixel `{ x, y }` of an RGBA buffer whose `[r, g, b]` (0–255) passes
@@ -34,7 +35,8 @@ export function findPixels(rgba, width, height, test) {
  * @returns {{ clear: () => void, draw: (pixels: {x: number, y: number}[]) => void }}
  *   clear() sizes the overlay to the picture on screen and empties it; draw() also marks each pixel with a dot
  */
-export function createPixelMarks(p, { view, name = 'pixel-marks' }) {
+export function createPixelMarks(p, options) {
+  const { view, name = 'pixel-marks' } = checkOptions(options, ['view', 'name'], 'createPixelMarks');
   const { width, height } = view.camera;
   p.createCanvas(width, height).parent(view.canvas.parentElement).class(name).attribute(`data-${name}`, '').attribute('data-overlay', '');
   p.pixelDensity(1);
@@ -70,7 +72,8 @@ export function createPixelMarks(p, { view, name = 'pixel-marks' }) {
  * @param {(count: number, total: number) => string} options.describe the line, from the count and the number of pixels
  * @returns {{ draw: () => void }} call draw() from the sketch's draw()
  */
-export function createPixelHighlight(p, { view, name, label, test, describe }) {
+export function createPixelHighlight(p, options) {
+  const { view, name, label, test, describe } = checkOptions(options, ['view', 'name', 'label', 'test', 'describe'], 'createPixelHighlight');
   const marks = createPixelMarks(p, { view, name: `${name}-marks` });
   const box = element('input', { type: 'checkbox', [`data-show-${name}`]: '' });
   const count = element('span', { [`data-${name}-count`]: '' });

@@ -14,7 +14,7 @@ import { Scene } from '../scene.js';
 import { Sphere } from '../shapes/sphere.js';
 import { toColor, colorToHex } from '../color.js';
 import { sceneToJSON, sceneFromJSON } from '../serialize.js';
-import { show } from '../check.js';
+import { show, checkOptions } from '../check.js';
 import { useStyle, element } from './dom.js';
 
 /* ---------------- reading one box ---------------- */
@@ -295,7 +295,8 @@ export const FORM_ROWS = 40;
  * @param {HTMLElement} options.parent
  * @param {(scene: Scene, json: object) => void} options.onChange
  */
-export function createSceneForm(p, { json, parent, onChange }) {
+export function createSceneForm(p, options) {
+  const { json, parent, onChange } = checkOptions(options, ['json', 'parent', 'onChange'], 'createSceneForm');
   return new SceneForm({ json, parent, onChange });
 }
 

@@ -11,6 +11,7 @@
  */
 import { readNumber } from './scene-form.js';
 import { withText } from './dom.js';
+import { checkOptions } from '../check.js';
 
 /**
  * The line under a field with a bad value: its label, what is wrong, and that
@@ -35,7 +36,8 @@ export function fieldMessage(label, error) {
  * @param {number} field.value …and its value at first
  * @param {(value: number) => void} field.use puts a number to use, or throws an Error saying why it cannot
  */
-export function createSliderField(p, { parent, name, label, min, max, step, value, use }) {
+export function createSliderField(p, options) {
+  const { parent, name, label, min, max, step, value, use } = checkOptions(options, ['parent', 'name', 'label', 'min', 'max', 'step', 'value', 'use'], 'createSliderField');
   const id = `field-${name}`;
   withText(p.createElement('label'), label).attribute('for', id).parent(parent);
   const slider = p.createSlider(min, max, value, step).parent(parent).attribute('aria-label', `${label} slider`);

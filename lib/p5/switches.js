@@ -12,6 +12,7 @@
  * Every text is set as text, never parsed as HTML.
  */
 import { element, withText } from './dom.js';
+import { checkOptions } from '../check.js';
 
 /**
  * @param {p5} p the sketch (its DOM functions make the parts)
@@ -19,7 +20,8 @@ import { element, withText } from './dom.js';
  * @param {p5.Element|HTMLElement|string} options.parent where the panel goes
  * @param {string} options.legend the panel's title
  */
-export function createSwitches(p, { parent, legend }) {
+export function createSwitches(p, options) {
+  const { parent, legend } = checkOptions(options, ['parent', 'legend'], 'createSwitches');
   const panel = p.createElement('fieldset').addClass('switches').parent(parent);
   panel.child(withText(p.createElement('legend'), legend));
   const inputs = []; // [switch, the p5 event it changes on]

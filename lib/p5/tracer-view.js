@@ -17,7 +17,7 @@
  */
 import { ProgressiveRenderer, MODES as RENDER_MODES } from '../progressive.js';
 import { modeShader, modeLegend } from '../modes.js';
-import { pixelCoordinate, show } from '../check.js';
+import { pixelCoordinate, show, checkOptions } from '../check.js';
 import { registerView } from './page-state.js';
 import { useStyle, element, resolveParent, sketchNode } from './dom.js';
 import { addProjectorSwitch } from './projector.js';
@@ -55,8 +55,11 @@ const BASE_REM = 16;
  * @returns {TracerView}
  */
 export function createTracerView(p, options = {}) {
-  return new TracerView(p, options);
+  return new TracerView(p, checkOptions(options, TRACER_VIEW_OPTIONS, 'createTracerView'));
 }
+
+/** The options createTracerView takes. */
+const TRACER_VIEW_OPTIONS = ['scene', 'camera', 'scale', 'grid', 'mode', 'renderMode', 'budgetMs', 'parent', 'label', 'legend'];
 
 export class TracerView {
   #renderer; #page; #imageData = null; #raf = 0; #destroyed = false;

@@ -52,3 +52,26 @@ describe('sketchbookAddon', () => {
     }
   });
 });
+
+describe('every factory refuses an options key it does not know, naming it and the closest known one', () => {
+  // The check comes first, before any page or sketch is touched: a stand-in sketch is enough.
+  const CASES = [
+    ['createTracerView', { gird: true }, 'unknown createTracerView option "gird" (did you mean "grid"?)'],
+    ['createTracerView', { scale: 4, lable: 'x' }, 'unknown createTracerView option "lable" (did you mean "label"?)'],
+    ['createInspector', { veiw: {} }, 'unknown createInspector option "veiw" (did you mean "view"?)'],
+    ['createAnswerForm', { onCheck: () => {}, box: [] }, 'unknown createAnswerForm option "box" (did you mean "boxes"?)'],
+    ['createPixelMarks', { names: 'x' }, 'unknown createPixelMarks option "names" (did you mean "name"?)'],
+    ['createPixelHighlight', { tests: () => true }, 'unknown createPixelHighlight option "tests" (did you mean "test"?)'],
+    ['createSliderField', { maximum: 3 }, 'unknown createSliderField option "maximum" (did you mean "max"?'],
+    ['createSwitches', { legnd: 'x' }, 'unknown createSwitches option "legnd" (did you mean "legend"?)'],
+    ['createExamplePicker', { onChose: () => {} }, 'unknown createExamplePicker option "onChose" (did you mean "onChoose"?)'],
+    ['createAnimation', { worker: 2 }, 'unknown createAnimation option "worker" (did you mean "workers"?)'],
+    ['createSceneForm', { onchange: () => {} }, 'unknown createSceneForm option "onchange" (did you mean "onChange"?)'],
+    ['createHomeworkCheck', { checks: () => [] }, 'unknown createHomeworkCheck option "checks" (did you mean "check"?)'],
+  ];
+  it.each(CASES)('%s(%o)', (name, options, message) => {
+    const sketch = Object.create(register().fn);
+    expect(() => sketch[name](options)).toThrow(TypeError);
+    expect(() => sketch[name](options)).toThrow(message);
+  });
+});
