@@ -6,7 +6,8 @@
  * way Appel described it: scanline by scanline, left to right, top to bottom.
  * Point at (or click) a pixel to see its ray in the side view (its row, its
  * vertical angle V) and the top view (its column, its horizontal angle H).
- * Tick "slow motion" to watch one ray at a time.
+ * Tick "slow motion" to watch one ray at a time, or Shoot in the 3D view to
+ * watch each ray fly from the eye through its pixel to what it hits.
  */
 import p5 from 'p5';
 import { Camera, Scene, Sphere, PointLight, inspectPixel } from '../lib/index.js';
@@ -40,6 +41,7 @@ new p5((p) => {
     view = p.createTracerView({ scene: makeScene(), camera: eye, parent: 'picture', scale: 16, grid: true, renderMode: 'scanline', label: `The screen: ${WIDTH} × ${HEIGHT} pixels` });
     view.renderer.slowRaysPerStep = SLOW_RAYS_PER_FRAME;
     p.createInspector({ view, parent: 'picture' });
+    p.createSceneView({ view, parent: 'diagram', width: 600, height: 420, label: 'The same rays in 3D: drag to turn, h / v for a whole row / column' });
 
     const slow = p.createCheckbox(' Slow motion: one ray at a time', false);
     const again = p.createButton('Trace again');

@@ -36,6 +36,10 @@ new p5((p) => {
     p.pixelDensity(1);
     p.createElement('table').class('compare').id('compare').attribute('data-compare', '').parent('diagram');
     p.createInspector({ view, parent: 'sketch' });
+    p.createSceneView({
+      view, parent: 'diagram', width: 620, height: 420, planeDistance: 3, orbit: { yaw: -62, pitch: 14, distance: 24 },
+      construction: view.scene.spheres[0], label: 'L, tca, d and thc in 3D: drag to turn',
+    });
     p.select('#inside').changed(function () {
       view.setCamera(new Camera({ width: WIDTH, height: HEIGHT, ...(this.checked() ? INSIDE : OUTSIDE) }));
     });

@@ -59,5 +59,6 @@ new p5((p) => {
       glass.material.transparency = seeThrough.checked() ? GLASS : 0;
       view.restart();
     });
+    p.createSceneView({ view, parent: column, width: 600, height: 400, label: 'In 3D: click a pixel to see its shadow rays and bounces' });
   };
 }, document.getElementById('sketch'));

@@ -17,14 +17,14 @@
  * the picture only now and then, so the trace keeps its pace.
  */
 import p5 from 'p5';
-import { Sphere } from '../shapes/sphere.js';
+import { Sphere, intersectGeometric } from '../shapes/sphere.js';
 import { Plane } from '../shapes/plane.js';
 import { Box } from '../shapes/box.js';
 import { inspectPixel } from '../explain.js';
 import { vec3, sub, dot, normalize, cross } from '../vec3.js';
 import { show, checkOptions } from '../check.js';
 import {
-  imagePlane, pixelCenter, pickImagePlane, raySegments, sceneBounds, orbitCamera, screenRay, projectToScreen, HUGE_RADIUS,
+  imagePlane, pixelCenter, pickImagePlane, geometricConstruction, raySegments, sceneBounds, orbitCamera, screenRay, projectToScreen, HUGE_RADIUS,
 } from '../rays3d.js';
 import { useStyle, element } from './dom.js';
 import { INK, MUTED, RAY, NORMAL, LIT, SHADOW, CONSTRUCT, FONT } from './diagrams/style.js';
@@ -42,7 +42,7 @@ const TRACE_SHARE = 6;
 /** Mouse travel (px) under which a press and release is a click, not a turn. */
 const CLICK_SLOP = 4;
 
-const OPTIONS = ['view', 'width', 'height', 'parent', 'label', 'planeDistance', 'frustum', 'orbit', 'controls', 'raysPerSecond'];
+const OPTIONS = ['view', 'width', 'height', 'parent', 'label', 'planeDistance', 'frustum', 'orbit', 'controls', 'raysPerSecond', 'construction'];
 /** Speeds the shoot slider offers, rays per second. */
 const SPEEDS = [1, 2, 4, 8, 15, 30, 60, 120];
 
@@ -59,6 +59,7 @@ const SPEEDS = [1, 2, 4, 8, 15, 30, 60, 120];
  * @param {boolean} [options.frustum=true] draw the view frustum
  * @param {{yaw?: number, pitch?: number, distance?: number}} [options.orbit] where to look from at first (degrees; distance in scene units)
  * @param {boolean} [options.controls=true] show the Reset button, the Shoot button and its speed slider
+ * @param {import('../shapes/sphere.js').Sphere} [options.construction] a sphere: draw the geometric route (L, tca, d, thc, with their values) of the selected ray for it
  * @param {number} [options.raysPerSecond=4] how fast Shoot sends rays (one of 1, 2, 4, 8, 15, 30, 60, 120)
  * @returns {SceneView}
  */
@@ -73,11 +74,14 @@ export class SceneView {
   #selected = null; #segments = []; #record = null;
   #extra = []; #drag = null; #target; #geometry = null;
   /** Shoot: rays in flight `{ segments, t0 }`, the pixel traced last, the row / column fan ('h' / 'v'). */
+  #constructionSphere = null; #construction = []; #constructionLabels = [];
   #flying = []; #shots = 0; #shooting = false; #lastShot = null; #fan = null; #fanSegments = []; #watching = 0; #labels = [];
 
   constructor(p, options = {}) {
     checkOptions(options, OPTIONS, 'scene view');
-    const { view, width = 480, height = 360, parent, label = 'The scene in 3D', planeDistance = 'auto', frustum = true, orbit = {}, controls = true, raysPerSecond = 4 } = options;
+    const { view, width = 480, height = 360, parent, label = 'The scene in 3D', planeDistance = 'auto', frustum = true, orbit = {}, controls = true, raysPerSecond = 4, construction = null } = options;
+    if (construction !== null && !(construction instanceof Sphere)) throw new TypeError(`construction must be a Sphere of the scene, got ${show(construction)}`);
+    this.#constructionSphere = construction;
     if (!SPEEDS.includes(raysPerSecond)) throw new RangeError(`raysPerSecond must be one of ${SPEEDS.join(', ')}, got ${show(raysPerSecond)}`);
     this.raysPerSecond = raysPerSecond;
     if (!view || typeof view.onSelect !== 'function' || !view.camera) throw new TypeError(`createSceneView needs { view }: a tracer view, got ${show(view)}`);
@@ -259,6 +263,7 @@ export class SceneView {
     const view = this.#view;
     this.#record = s ? inspectPixel(view.scene, view.camera, s.x, s.y) : null;
     this.#fanSegments = this.#fanFor(this.#fan);
+    this.#buildConstruction();
     this.#segments = this.#record ? raySegments(view.scene, this.#record, { missLength: this.#bounds.radius * 2.5, normalLength: this.#bounds.radius * 0.08 }) : [];
     this.#pictureKey = '';
     this.redraw();
@@ -308,6 +313,27 @@ export class SceneView {
       if (!v.done || seen !== 1) this.#watching = requestAnimationFrame(poll);
     };
     poll();
+  }
+
+  /** The geometric route for the selected ray and the construction sphere: L, tca, d, thc as lines with their values. */
+  #buildConstruction() {
+    const sphere = this.#constructionSphere, record = this.#record;
+    this.#construction = [];
+    this.#constructionLabels = [];
+    if (!sphere || !record) return;
+    const g = intersectGeometric(record.ray, sphere);
+    const parts = geometricConstruction(record.ray, sphere, g);
+    // labels part-way along, so that L and tca (both from the eye) do not sit on each other
+    const along = ([a, b], k) => vec3(a.x + (b.x - a.x) * k, a.y + (b.y - a.y) * k, a.z + (b.z - a.z) * k);
+    const add = (seg, color, text, k, dy) => {
+      if (!seg) return;
+      this.#construction.push({ from: seg[0], to: seg[1], color, weight: 3 });
+      this.#constructionLabels.push({ at: along(seg, k), text, color, dy });
+    };
+    add(parts.L, CONSTRUCT, 'L', 0.7, -14);
+    add(parts.tca, CONSTRUCT, `tca = ${g.tca.toFixed(2)}`, 0.4, 14);
+    add(parts.d, INK, `d = ${Math.sqrt(Math.max(0, g.d2)).toFixed(2)}`, 0.5, 0);
+    add(parts.thc, NORMAL, `thc = ${g.thc?.toFixed(2)}`, 0.5, 16);
   }
 
   /** The primary rays of the selected pixel's row or column, each to its hit (or out to the background). */
@@ -371,6 +397,8 @@ export class SceneView {
     for (const s of this.#segments) this.#drawSegment(g, s);
     for (const r of this.#extra) line3(g, r.from, r.to, r.color, r.weight ?? 1.5);
     for (const f of this.#fanSegments) line3(g, f.from, f.to, RAY_COLORS.primary, 1);
+    if (this.#constructionSphere) wireSphere(g, this.#constructionSphere);
+    for (const c of this.#construction) line3(g, c.from, c.to, c.color, c.weight);
     const flying = this.#drawFlying(g);
     g.pop();
     this.#drawLabels(o);
@@ -421,6 +449,7 @@ export class SceneView {
       for (const object of scene.objects) {
         const m = object.material;
         const rgb = m.isEmissive ? GLOW : m.color.map((c) => Math.min(1, c));
+        if (object === this.#constructionSphere) continue; // drawn as a wire ball: the construction is inside it
         if (object instanceof Sphere) {
           if (object.radius > HUGE_RADIUS) this.#groundPatch(g, object.center, sub(vec3(), this.#bounds.center, object.center), object.radius, rgb);
           else sphereMesh(g, object.center, object.radius, rgb, !m.isEmissive);
@@ -531,17 +560,19 @@ export class SceneView {
   #drawLabels(o) {
     const c = this.labelLayer, ctx = c.getContext('2d');
     ctx.clearRect(0, 0, c.width, c.height);
-    if (!this.#labels.length) return;
+    const labels = this.#constructionLabels.length ? [...this.#labels, ...this.#constructionLabels] : this.#labels;
+    if (!labels.length) return;
     ctx.font = `bold 14px ${FONT}`;
     ctx.textAlign = 'center';
     ctx.textBaseline = 'middle';
-    for (const l of this.#labels) {
+    for (const l of labels) {
       const at = projectToScreen(o, l.at, this.width, this.height, FOVY);
       if (!at) continue;
       ctx.lineWidth = 4; ctx.strokeStyle = 'rgba(255, 255, 255, 0.9)';
-      ctx.strokeText(l.text, at.x, at.y);
+      const y = at.y + (l.dy ?? 0);
+      ctx.strokeText(l.text, at.x, y);
       ctx.fillStyle = l.color ?? INK;
-      ctx.fillText(l.text, at.x, at.y);
+      ctx.fillText(l.text, at.x, y);
     }
   }
 
@@ -700,6 +731,29 @@ function sphereMesh(g, c, r, rgb, lit = true, rings = 16, segments = 28) {
       for (const v of [a, b, e, a, e, d]) coloredVertex(g, v.p, v.col);
     }
   }
+}
+
+/** A sphere as a few circles (three great circles and two latitudes), so what is inside it shows. */
+function wireSphere(g, sphere) {
+  const c = sphere.center, r = sphere.radius, m = sphere.material.color, n = 48;
+  g.push();
+  g.noFill();
+  g.stroke(Math.round(255 * Math.min(1, m[0])), Math.round(255 * Math.min(1, m[1])), Math.round(255 * Math.min(1, m[2])));
+  g.strokeWeight(1.5);
+  g.beginShape(g.LINES);
+  const circle = (point) => {
+    for (let i = 0; i < n; i++) {
+      const a = point((2 * Math.PI * i) / n), b = point((2 * Math.PI * (i + 1)) / n);
+      g.vertex(c.x + a[0] * r, -(c.y + a[1] * r), c.z + a[2] * r);
+      g.vertex(c.x + b[0] * r, -(c.y + b[1] * r), c.z + b[2] * r);
+    }
+  };
+  circle((t) => [Math.cos(t), Math.sin(t), 0]);
+  circle((t) => [Math.cos(t), 0, Math.sin(t)]);
+  circle((t) => [0, Math.cos(t), Math.sin(t)]);
+  for (const y of [-0.6, 0.6]) { const k = Math.sqrt(1 - y * y); circle((t) => [k * Math.cos(t), y, k * Math.sin(t)]); }
+  g.endShape();
+  g.pop();
 }
 
 /** A box: two triangles a face, each face shaded by its normal. */
