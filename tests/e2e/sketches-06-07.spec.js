@@ -81,7 +81,7 @@ test.describe('06 · lights, shadows and reflections', () => {
     const before = await pixels(page);
     await selectPixel(page, 35, 54);
     await expect(hitObject(page)).toHaveText('mirror');
-    const slider = page.locator('input[type="range"]');
+    const slider = page.locator('.switches input[type="range"]'); // not the 3D view's speed slider
 
     const flat = await retrace(page, () => slider.fill('0'));
     await expect(page.getByText('mirror bounces: 0')).toBeVisible();
