@@ -72,7 +72,7 @@ export class SceneView {
   #orbit; #home; #bounds; #planeDistance; #planeOption; #frustum;
   #picture; #pictureCtx; #pictureKey = ''; #lastDrawMs = 0; #lastDrawAt = -Infinity;
   #selected = null; #segments = []; #record = null;
-  #extra = []; #drag = null; #target; #geometry = null;
+  #extra = []; #drag = null; #target; #geometry = null; #geometryKey = '';
   /** Shoot: rays in flight `{ segments, t0 }`, the pixel traced last, the row / column fan ('h' / 'v'). */
   #constructionSphere = null; #construction = []; #constructionLabels = [];
   #flying = []; #shots = 0; #shooting = false; #lastShot = null; #fan = null; #fanSegments = []; #watching = 0; #labels = [];
@@ -246,14 +246,22 @@ export class SceneView {
     // far enough out to be seen, near enough to stay in front of everything the eye sees
     this.#planeDistance = this.#planeOption === 'auto' ? Math.max(1, nearestAhead(scene, camera) * 0.7) : this.#planeOption;
     this.#bounds = sceneBounds(scene, camera, this.#planeDistance);
-    if (this.#geometry && this.#g) this.#g.freeGeometry(this.#geometry); // built again on the next draw
-    this.#geometry = null;
     // look at a point between the middle of the scene and the eye: the eye, the image plane and the rays are the lesson
     const c = this.#bounds.center, e = camera.position;
     this.#target = vec3(c.x + (e.x - c.x) * 0.45, c.y + (e.y - c.y) * 0.45, c.z + (e.z - c.z) * 0.45);
     this.#home = { ...HOME, distance: this.#bounds.radius * 0.95 };
     if (!this.#orbit) return;
     this.#pictureKey = '';
+    this.#redrawUnlessRestarting();
+  }
+
+  /**
+   * A restart (the picture just cleared) is followed by the trace watch, which
+   * redraws at a pace the trace can afford; anything else redraws at once.
+   */
+  #redrawUnlessRestarting() {
+    const v = this.#view;
+    if (!v.done && v.progress === 0 && this.#observer) return this.#watchTrace();
     this.redraw();
   }
 
@@ -266,7 +274,7 @@ export class SceneView {
     this.#buildConstruction();
     this.#segments = this.#record ? raySegments(view.scene, this.#record, { missLength: this.#bounds.radius * 2.5, normalLength: this.#bounds.radius * 0.08 }) : [];
     this.#pictureKey = '';
-    this.redraw();
+    this.#redrawUnlessRestarting();
   }
 
   #observer = null;
@@ -304,7 +312,7 @@ export class SceneView {
       if (progress !== seen) {
         const now = performance.now();
         // keep the trace's pace: while it runs, redraw only when enough time has passed since the last draw
-        if (v.done || now - this.#lastDrawAt > this.#lastDrawMs * TRACE_SHARE + 100) {
+        if (v.done || now - this.#lastDrawAt > this.#lastDrawMs * TRACE_SHARE + 250) {
           seen = progress;
           this.#pictureKey = '';
           this.redraw();
@@ -439,32 +447,43 @@ export class SceneView {
    * that alone took a frame from 30 ms to 500 ms.
    */
   #staticGeometry(g) {
-    if (this.#geometry) return this.#geometry;
+    const key = this.#shapesKey();
+    if (this.#geometry && this.#geometryKey === key) return this.#geometry;
+    if (this.#geometry) g.freeGeometry(this.#geometry);
     const { scene, camera } = this.#view;
     const r = this.#bounds.radius;
-    g.push();
-    this.#geometry = g.buildGeometry(() => {
-      g.noStroke();
-      g.beginShape(g.TRIANGLES);
-      for (const object of scene.objects) {
-        const m = object.material;
-        const rgb = m.isEmissive ? GLOW : m.color.map((c) => Math.min(1, c));
-        if (object === this.#constructionSphere) continue; // drawn as a wire ball: the construction is inside it
-        if (object instanceof Sphere) {
-          if (object.radius > HUGE_RADIUS) this.#groundPatch(g, object.center, sub(vec3(), this.#bounds.center, object.center), object.radius, rgb);
-          else sphereMesh(g, object.center, object.radius, rgb, !m.isEmissive);
-        } else if (object instanceof Plane) {
-          this.#groundPatch(g, object.point, object.normal, 0, rgb);
-        } else if (object instanceof Box) {
-          boxMesh(g, object.min, object.max, rgb);
-        }
+    const mesh = { positions: [], colors: [] };
+    for (const object of scene.objects) {
+      const m = object.material;
+      const rgb = m.isEmissive ? GLOW : m.color.map((c) => Math.min(1, c));
+      if (object === this.#constructionSphere) continue; // drawn as a wire ball: the construction is inside it
+      if (object instanceof Sphere) {
+        if (object.radius > HUGE_RADIUS) this.#groundPatch(mesh, object.center, sub(vec3(), this.#bounds.center, object.center), object.radius, rgb);
+        else sphereMesh(mesh, object.center, object.radius, rgb, !m.isEmissive);
+      } else if (object instanceof Plane) {
+        this.#groundPatch(mesh, object.point, object.normal, 0, rgb);
+      } else if (object instanceof Box) {
+        boxMesh(mesh, object.min, object.max, rgb);
       }
-      for (const light of scene.lights) if (!light.object) sphereMesh(g, light.position, r * 0.025, GLOW, false, 8, 12);
-      sphereMesh(g, camera.position, r * 0.02, [0.11, 0.14, 0.2], true, 8, 12);
-      g.endShape();
-    });
-    g.pop();
+    }
+    for (const light of scene.lights) if (!light.object) sphereMesh(mesh, light.position, r * 0.025, GLOW, false, 8, 12);
+    sphereMesh(mesh, camera.position, r * 0.02, [0.11, 0.14, 0.2], true, 8, 12);
+    this.#geometry = toGeometry(g, mesh);
+    this.#geometryKey = key;
     return this.#geometry;
+  }
+
+  /** What the static geometry depends on: the shapes, their colours, the lights, the eye and the framing. */
+  #shapesKey() {
+    const { scene, camera } = this.#view;
+    const parts = [camera.position.x, camera.position.y, camera.position.z, this.#bounds.radius, this.#constructionSphere ? 1 : 0];
+    for (const o of scene.objects) {
+      const m = o.material;
+      parts.push(o.center?.x, o.center?.y, o.center?.z, o.radius, o.point?.x, o.point?.y, o.point?.z, o.normal?.x, o.normal?.y, o.normal?.z,
+        o.min?.x, o.min?.y, o.min?.z, o.max?.x, o.max?.y, o.max?.z, ...m.color, m.isEmissive ? 1 : 0);
+    }
+    for (const l of scene.lights) parts.push(l.position.x, l.position.y, l.position.z);
+    return parts.join(',');
   }
 
   /** A huge sphere or a plane: a square patch of it under the scene, big enough to stand on. */
@@ -713,9 +732,26 @@ function shade(rgb, n, lit = true) {
   return [Math.round(255 * rgb[0] * k), Math.round(255 * rgb[1] * k), Math.round(255 * rgb[2] * k)];
 }
 
-function coloredVertex(g, p, col) {
-  g.fill(col[0], col[1], col[2]);
-  g.vertex(p.x, -p.y, p.z);
+function coloredVertex(mesh, p, col) {
+  mesh.positions.push(p.x, -p.y, p.z);
+  mesh.colors.push(col[0] / 255, col[1] / 255, col[2] / 255, 1);
+}
+
+/**
+ * A p5.Geometry from flat triangle lists (x, −y, z per vertex; r, g, b, a),
+ * filled in directly: building it through fill() and vertex() parses a colour
+ * per vertex, a second for the class scene's 20,000 vertices.
+ */
+function toGeometry(g, { positions, colors }) {
+  return new p5.Geometry(1, 1, function () {
+    const n = positions.length / 3;
+    for (let i = 0; i < n; i++) {
+      this.vertices.push(g.createVector(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]));
+      this.vertexNormals.push(g.createVector(0, 0, 1));
+    }
+    for (let i = 0; i < n; i += 3) this.faces.push([i, i + 1, i + 2]);
+    this.vertexColors = colors;
+  }, g._renderer);
 }
 
 /** A sphere as latitude/longitude triangles, each vertex coloured by its normal (flat glow when not lit). */
