@@ -80,6 +80,8 @@ import { findBrowser, HOW_TO_GET_ONE } from '../scripts/find-browser.js';
 const PORT = port(option('--port') ?? process.env.BENCH_PORT);
 const ROOT = resolve(import.meta.dirname, '..');
 const PAGE = 'bench/browser/bench.html';
+const VIEW3D_PAGE = 'bench/browser/view3d.html';
+const ONLY_VIEW3D = option('--only') === 'view3d'; // `npm run bench:browser -- --only view3d`: section 5 alone
 const DEV = process.argv.includes('--dev');
 const TASK_LIMIT_MS = 16;
 const CHANGES = 12;           // per way of making a change
@@ -117,7 +119,7 @@ async function buildPage() {
   const { build } = await import('vite');
   await build({
     root: ROOT, configFile: false, base: './', logLevel: 'warn',
-    build: { target: 'es2022', outDir, emptyOutDir: true, rollupOptions: { input: resolve(ROOT, PAGE) } },
+    build: { target: 'es2022', outDir, emptyOutDir: true, rollupOptions: { input: [resolve(ROOT, PAGE), resolve(ROOT, VIEW3D_PAGE)] } },
     worker: { format: 'es' },
   });
   return outDir;
@@ -367,6 +369,45 @@ function reportWorkers(result) {
     ` ('first' = the first frame, workers starting)`);
 }
 
+/* ---------------- 5. the 3D scene view ---------------- */
+
+const VIEW3D_TRACES = 5, VIEW3D_TURN_MS = 4000;
+
+/**
+ * The 3D view's own cost: frames per second while turning it (class scene,
+ * selected pixel, software WebGL), and the progressive trace's time with and
+ * without a 3D view following it, the two kinds of page in turn.
+ */
+async function view3d(browser, base, errors) {
+  const open = async (withView) => {
+    const page = await browser.newPage({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1 });
+    watch(page, errors);
+    await page.goto(`${base}${VIEW3D_PAGE}?view3d=${withView ? 1 : 0}`);
+    await page.waitForFunction(() => window.bench?.ready, null, { timeout: 60_000, polling: 100 });
+    return page;
+  };
+  const traces = { without: [], with: [] };
+  for (let round = 0; round < 2; round++) {
+    for (const kind of ['without', 'with']) {
+      const page = await open(kind === 'with');
+      traces[kind].push(...(await page.evaluate((n) => window.bench.trace(n), VIEW3D_TRACES)).slice(round === 0 ? 1 : 0));
+      await page.close();
+    }
+  }
+  const page = await open(true);
+  const turn = await page.evaluate((ms) => window.bench.turn(ms), VIEW3D_TURN_MS);
+  await page.close();
+  return { traces, turn };
+}
+
+function reportView3d({ traces, turn }) {
+  console.log(`\n5. The 3D scene view (class scene; software WebGL in headless Chromium)`);
+  console.log(`   turning, a new orbit every frame for ${VIEW3D_TURN_MS / 1000} s: ${turn.fps.toFixed(1)} frames/s (goal ≥ 30), median draw ${ms(turn.drawMs)} ms of script`);
+  const a = median(traces.without), b = median(traces.with);
+  console.log(`   progressive trace 640×480, restart to done (median of ${traces.without.length}): without a 3D view ${ms(a)} ms, with one ${ms(b)} ms: ` +
+    `${(((b - a) / a) * 100).toFixed(0)} % slower (goal ≤ 20 %)`);
+}
+
 /* ---------------- main ---------------- */
 
 const executablePath = findBrowser();
@@ -384,16 +425,19 @@ try {
   const base = `http://localhost:${PORT}/`;
   console.log(`Browser benchmark: Chromium ${browser.version()} headless, ${DEV ? 'Vite dev server (unbundled modules)' : 'production build (vite build + vite preview)'},` +
     ` ${availableParallelism()} cores, load average ${loadavg()[0].toFixed(1)}`);
-  reportProgressive(await progressive(browser, base, errors));
-  const w = await workers(browser, base, errors);
-  reportWorkers(w);
-  if (w.cases.some((c) => c.differing !== 0)) errors.push('a worker picture differs from render()');
-  const devServer = DEV && SAVE_PORT === PORT ? null : await startServer(null, SAVE_PORT);
-  try {
-    reportSaves(await saves(browser, `http://localhost:${SAVE_PORT}/`, errors));
-  } finally {
-    devServer?.kill(); // the dev server this script started for part 4, by its PID
+  if (!ONLY_VIEW3D) {
+    reportProgressive(await progressive(browser, base, errors));
+    const w = await workers(browser, base, errors);
+    reportWorkers(w);
+    if (w.cases.some((c) => c.differing !== 0)) errors.push('a worker picture differs from render()');
+    const devServer = DEV && SAVE_PORT === PORT ? null : await startServer(null, SAVE_PORT);
+    try {
+      reportSaves(await saves(browser, `http://localhost:${SAVE_PORT}/`, errors));
+    } finally {
+      devServer?.kill(); // the dev server this script started for part 4, by its PID
+    }
   }
+  reportView3d(await view3d(browser, base, errors));
   console.log(`\nload average at the end: ${loadavg()[0].toFixed(1)}`);
 } catch (error) {
   errors.push(error.stack ?? String(error));
