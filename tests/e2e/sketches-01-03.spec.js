@@ -55,7 +55,7 @@ test.describe('01 · rays through pixels', () => {
   test('clicking a pixel draws its ray in the diagram and writes the answer line', async ({ page }) => {
     await page.goto(PAGE);
     await waitForDone(page);
-    const diagram = page.locator('#diagram > canvas') // the side and top views (the 3D view has its own);
+    const diagram = page.locator('#diagram > canvas'); // the side and top views (the 3D view has its own)
     const before = await pixelsOf(diagram);
 
     await clickPixel(page.locator('[data-tracer]'), 20, 10);
@@ -75,7 +75,7 @@ test.describe('01 · rays through pixels', () => {
   test('pointing at a pixel shows its ray without selecting it', async ({ page }) => {
     await page.goto(PAGE);
     await waitForDone(page);
-    const diagram = page.locator('#diagram > canvas') // the side and top views (the 3D view has its own);
+    const diagram = page.locator('#diagram > canvas'); // the side and top views (the 3D view has its own)
     const before = await pixelsOf(diagram);
     const box = await page.locator('[data-tracer]').boundingBox();
     await page.mouse.move(box.x + (5.5 * box.width) / 32, box.y + (3.5 * box.height) / 24);
@@ -89,7 +89,7 @@ test.describe('01 · rays through pixels', () => {
     await page.goto(PAGE);
     await waitForDone(page);
     const finished = await pixelsOf(page.locator('[data-tracer]'));
-    const diagram = page.locator('#diagram > canvas') // the side and top views (the 3D view has its own);
+    const diagram = page.locator('#diagram > canvas'); // the side and top views (the 3D view has its own)
     const states = await watchRenderState(page);
 
     await page.getByLabel('Slow motion').check();
