@@ -5,5 +5,7 @@ export default defineConfig({
   test: {
     include: ['tests/unit/**/*.test.js'],
     environment: 'node',
+    // Picture and property tests trace whole frames: room for a loaded 2-core machine.
+    testTimeout: 30_000,
   },
 });

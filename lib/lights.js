@@ -4,23 +4,25 @@
  */
 import { toVec3, vec3 } from './vec3.js';
 import { toColor, MAX_COLOR } from './color.js';
-import { finiteNumber, checkOptions } from './check.js';
+import { finiteNumber, checkOptions, show } from './check.js';
 
 /** The options a point light takes as its second argument. */
-const OPTIONS = ['color', 'intensity'];
+const OPTIONS = ['color', 'intensity', 'name'];
 
 export class PointLight {
   /**
    * `new PointLight([0, 20, 0])`, `new PointLight(position, color, intensity)`
-   * or `new PointLight(position, { color, intensity })`.
+   * or `new PointLight(position, { color, intensity, name })`.
    * @param {number[]|{x,y,z}} position where the light is
-   * @param {number[]|string|{ color?: number[]|string, intensity?: number }} [color=[1,1,1]] its colour, or the options
+   * @param {number[]|string|{ color?: number[]|string, intensity?: number, name?: string }} [color=[1,1,1]] its colour, or the options
    * @param {number} [intensity=1] a multiplier, ≥ 0
    */
   constructor(position, color = [1, 1, 1], intensity = 1) {
+    let name = '';
     if (isOptions(color)) {
       if (arguments.length > 2) throw new TypeError('a point light takes (position, { color, intensity }) or (position, color, intensity), not both');
-      ({ color = [1, 1, 1], intensity = 1 } = checkOptions(color, OPTIONS, 'point light'));
+      ({ color = [1, 1, 1], intensity = 1, name = '' } = checkOptions(color, OPTIONS, 'point light'));
+      if (typeof name !== 'string') throw new TypeError(`name must be text, got ${show(name)}`);
     }
     this.position = toVec3(position, 'position');
     finiteNumber(intensity, 'intensity');
@@ -30,7 +32,7 @@ export class PointLight {
     this.intensity = intensity;
     /** What it gives off: colour × intensity. */
     this.emission = this.color.map((c) => c * intensity);
-    this.name = '';
+    this.name = name;
   }
 }
 

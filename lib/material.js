@@ -49,3 +49,18 @@ export class Material {
     return new Material(value ?? {});
   }
 }
+
+/**
+ * A shape's last argument: a Material, or material options that may also name
+ * the shape, `{ color: 'pink', name: 'ball' }` (the inspector and the
+ * diagrams call it by that name).
+ * @param {Material|object} [value]
+ * @returns {{ name: string, material: Material }}
+ */
+export function shapeOptions(value) {
+  if (value === undefined || value instanceof Material) return { name: '', material: Material.from(value) };
+  checkOptions(value, [...OPTIONS, 'name'], 'material');
+  const { name = '', ...material } = value;
+  if (typeof name !== 'string') throw new TypeError(`name must be text, got ${show(name)}`);
+  return { name, material: Material.from(material) };
+}

@@ -14,14 +14,13 @@ import { finiteNumber } from './check.js';
  */
 export function classScene({ full = false } = {}) {
   const scene = new Scene({ background: [2, 2, 2] });
-  const named = (sphere, name) => Object.assign(sphere, { name });
-  scene.add(named(new Sphere([0, -10004, -20], 10000, { color: [0.2, 0.2, 0.2] }), 'ground'));
-  scene.add(named(new Sphere([0, 0, -20], 4, { color: [1, 0.32, 0.36], ...(full && { reflection: 0.5, transparency: 0.5 }) }), 'pink'));
-  scene.add(named(new Sphere([5, -1, -15], 2, { color: [0.9, 0.76, 0.46], ...(full && { reflection: 0.5 }) }), 'yellow'));
-  scene.add(named(new Sphere([5, 0, -25], 3, { color: [0.65, 0.77, 0.97], ...(full && { reflection: 0.5 }) }), 'blue'));
-  scene.add(named(new Sphere([-5.5, 0, -15], 3, { color: [0.9, 0.9, 0.9], ...(full && { reflection: 0.5, specular: 0.5 }) }), 'white'));
-  scene.add(named(new Sphere([0, 20, -30], 3, { color: [0, 0, 0], emission: 1.2 }), 'light 1'));
-  scene.add(named(new Sphere([0, 10, 10], 3, { color: [0, 0, 0], emission: 1 }), 'light 2'));
+  scene.add(new Sphere([0, -10004, -20], 10000, { color: [0.2, 0.2, 0.2], name: 'ground' }));
+  scene.add(new Sphere([0, 0, -20], 4, { color: [1, 0.32, 0.36], ...(full && { reflection: 0.5, transparency: 0.5 }), name: 'pink' }));
+  scene.add(new Sphere([5, -1, -15], 2, { color: [0.9, 0.76, 0.46], ...(full && { reflection: 0.5 }), name: 'yellow' }));
+  scene.add(new Sphere([5, 0, -25], 3, { color: [0.65, 0.77, 0.97], ...(full && { reflection: 0.5 }), name: 'blue' }));
+  scene.add(new Sphere([-5.5, 0, -15], 3, { color: [0.9, 0.9, 0.9], ...(full && { reflection: 0.5, specular: 0.5 }), name: 'white' }));
+  scene.add(new Sphere([0, 20, -30], 3, { color: [0, 0, 0], emission: 1.2, name: 'light 1' }));
+  scene.add(new Sphere([0, 10, 10], 3, { color: [0, 0, 0], emission: 1, name: 'light 2' }));
   return scene;
 }
 

@@ -27,7 +27,7 @@ const SLOW_RAYS_PER_FRAME = 2;
 
 function makeScene() {
   const scene = new Scene({ background: [0.85, 0.92, 1], ambient: 0.2 });
-  for (const s of SPHERES) scene.add(Object.assign(new Sphere(s.center, s.radius, { color: s.color }), { name: s.name }));
+  for (const s of SPHERES) scene.add(new Sphere(s.center, s.radius, { color: s.color, name: s.name }));
   return scene.add(new PointLight(LIGHT));
 }
 

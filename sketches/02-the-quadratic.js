@@ -28,7 +28,7 @@ const FIELDS = [ // [name, label, slider min, max, step]
 ];
 
 function makeScene({ x, y, z, r }) {
-  const ball = Object.assign(new Sphere([x, y, z], r, { color: COLOR }), { name: 'pink' });
+  const ball = new Sphere([x, y, z], r, { color: COLOR, name: 'pink' });
   return new Scene({ background: [0.93, 0.95, 0.98], ambient: 0.15 }).add(ball).add(new PointLight(LIGHT));
 }
 

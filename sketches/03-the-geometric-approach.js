@@ -20,8 +20,8 @@ const WIDTH = 64, HEIGHT = 48;
 const FIRST_PIXEL = [40, 16]; // selected at the start: a ray that passes off the centre
 
 function makeScene() {
-  const ball = Object.assign(new Sphere(SPHERE_CENTER, SPHERE_RADIUS, { color: COLOR }), { name: 'pink' });
-  const lamp = (position, name) => Object.assign(new PointLight(position), { name });
+  const ball = new Sphere(SPHERE_CENTER, SPHERE_RADIUS, { color: COLOR, name: 'pink' });
+  const lamp = (position, name) => new PointLight(position, { name });
   return new Scene({ background: [0.93, 0.95, 0.98], ambient: 0.15 })
     .add(ball).add(lamp([-10, 10, 10], 'lamp outside')).add(lamp([2, 2, -19], 'lamp inside the sphere'));
 }

@@ -18,13 +18,12 @@ const GLASS = 0.9;                  // the glass sphere's transparency when it i
 /** A floor, a mirror, a red ball, a glass ball, a point light and a lamp (an emissive sphere). */
 function makeScene() {
   const scene = new Scene({ background: [0.55, 0.7, 0.9], ambient: 0.2, maxDepth: MAX_BOUNCES });
-  const add = (name, thing) => scene.add(Object.assign(thing, { name }));
-  add('floor', new Plane([0, -1, 0], [0, 1, 0], { color: [0.8, 0.8, 0.76] }));
-  add('mirror', new Sphere([-2.4, 0, -10], 1, { color: [0.95, 0.95, 0.95], reflection: 0.85, specular: 0.6 }));
-  add('red ball', new Sphere([0, 0, -11], 1, { color: [0.95, 0.25, 0.3], specular: 0.6, shininess: 40 }));
-  add('glass', new Sphere([2.4, 0, -10], 1, { color: [0.95, 1, 0.97], transparency: GLASS, ior: 1.5, specular: 0.8 }));
-  add('point light', new PointLight([4, 8, -3], [1, 1, 1], 0.85));
-  add('lamp', new Sphere([-4, 3, -16], 0.6, { color: [0, 0, 0], emission: [1, 0.8, 0.5] }));
+  scene.add(new Plane([0, -1, 0], [0, 1, 0], { color: [0.8, 0.8, 0.76], name: 'floor' }));
+  scene.add(new Sphere([-2.4, 0, -10], 1, { color: [0.95, 0.95, 0.95], reflection: 0.85, specular: 0.6, name: 'mirror' }));
+  scene.add(new Sphere([0, 0, -11], 1, { color: [0.95, 0.25, 0.3], specular: 0.6, shininess: 40, name: 'red ball' }));
+  scene.add(new Sphere([2.4, 0, -10], 1, { color: [0.95, 1, 0.97], transparency: GLASS, ior: 1.5, specular: 0.8, name: 'glass' }));
+  scene.add(new PointLight([4, 8, -3], { intensity: 0.85, name: 'point light' }));
+  scene.add(new Sphere([-4, 3, -16], 0.6, { color: [0, 0, 0], emission: [1, 0.8, 0.5], name: 'lamp' }));
   return scene;
 }
 

@@ -28,11 +28,10 @@ const WIDTH = 160, HEIGHT = 120; // traced pixels
 /** The street: a road, the pole, the signal's housing, the sun; then the lights. */
 export function makeScene(addTheLights = addLights) {
   const scene = new Scene({ background: [0.62, 0.78, 0.95], ambient: 0.2 });
-  const add = (name, shape) => scene.add(Object.assign(shape, { name }));
-  add('road', new Plane([0, 0, 0], [0, 1, 0], { color: [0.32, 0.33, 0.36] }));
-  add('pole', new Box([-0.15, 0, -16.65], [0.15, 3.4, -16.35], { color: [0.35, 0.36, 0.38] }));
-  add('housing', new Box([-0.8, 3.4, -16.8], [0.8, 7.4, -16.2], { color: [0.15, 0.15, 0.16] }));
-  add('sun', new PointLight([40, 200, 60], [1, 1, 1], 0.8));
+  scene.add(new Plane([0, 0, 0], [0, 1, 0], { color: [0.32, 0.33, 0.36], name: 'road' }));
+  scene.add(new Box([-0.15, 0, -16.65], [0.15, 3.4, -16.35], { color: [0.35, 0.36, 0.38], name: 'pole' }));
+  scene.add(new Box([-0.8, 3.4, -16.8], [0.8, 7.4, -16.2], { color: [0.15, 0.15, 0.16], name: 'housing' }));
+  scene.add(new PointLight([40, 200, 60], { intensity: 0.8, name: 'sun' }));
   addTheLights(scene);
   return scene;
 }

@@ -2,7 +2,7 @@
  * An axis-aligned box between corners `min` and `max` (the slab method).
  */
 import { toVec3, vec3, set } from '../vec3.js';
-import { Material } from '../material.js';
+import { shapeOptions } from '../material.js';
 import { EPSILON } from './sphere.js';
 
 const AXES = ['x', 'y', 'z'];
@@ -11,7 +11,7 @@ export class Box {
   /**
    * @param {number[]|{x,y,z}} min the corner with the smallest x, y, z
    * @param {number[]|{x,y,z}} max the opposite corner; larger on every axis
-   * @param {Material|object} [material]
+   * @param {import('../material.js').Material|object} [material] a Material or its options, which may also give the shape a `name`
    */
   constructor(min, max, material) {
     this.min = toVec3(min, 'min');
@@ -21,8 +21,7 @@ export class Box {
         throw new RangeError(`max.${a} must be greater than min.${a}, got ${this.max[a]} ≤ ${this.min[a]}`);
       }
     }
-    this.material = Material.from(material);
-    this.name = '';
+    ({ name: this.name, material: this.material } = shapeOptions(material));
   }
 
   /** Smallest t > tMin where the ray meets the box, or Infinity. */

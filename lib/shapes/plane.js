@@ -2,21 +2,20 @@
  * An infinite plane through `point` with unit `normal` (a floor, a wall).
  */
 import { toVec3, toUnit, vec3, copy } from '../vec3.js';
-import { Material } from '../material.js';
+import { shapeOptions } from '../material.js';
 import { EPSILON } from './sphere.js';
 
 export class Plane {
   /**
    * @param {number[]|{x,y,z}} point any point on the plane
    * @param {number[]|{x,y,z}} normal the side it faces; normalised here, not zero-length
-   * @param {Material|object} [material]
+   * @param {import('../material.js').Material|object} [material] a Material or its options, which may also give the shape a `name`
    */
   constructor(point = [0, 0, 0], normal = [0, 1, 0], material) {
     this.point = toVec3(point, 'point');
     const n = toVec3(normal, 'normal');
     this.normal = toUnit(n, n, 'normal');
-    this.material = Material.from(material);
-    this.name = '';
+    ({ name: this.name, material: this.material } = shapeOptions(material));
   }
 
   /** t where the ray meets the plane (t > tMin), or Infinity; a ray along the plane misses. */

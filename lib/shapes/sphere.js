@@ -4,7 +4,7 @@
  */
 import { toVec3, vec3, sub, normalize } from '../vec3.js';
 import { finiteNumber } from '../check.js';
-import { Material } from '../material.js';
+import { shapeOptions } from '../material.js';
 
 /** Hits closer than this are the surface the ray starts on, not a new hit. */
 export const EPSILON = 1e-6;
@@ -20,15 +20,14 @@ export class Sphere {
   /**
    * @param {number[]|{x,y,z}} center Sc
    * @param {number} radius Sr, > 0
-   * @param {Material|object} [material] a Material or its options
+   * @param {import('../material.js').Material|object} [material] a Material or its options, which may also give the shape a `name`
    */
   constructor(center, radius, material) {
     this.center = toVec3(center, 'center');
     finiteNumber(radius, 'radius');
     if (radius <= 0) throw new RangeError(`radius must be greater than 0, got ${radius}`);
     this.radius = radius;
-    this.material = Material.from(material);
-    this.name = '';
+    ({ name: this.name, material: this.material } = shapeOptions(material));
   }
 
   /**

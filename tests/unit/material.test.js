@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import { Material, Sphere } from '../../lib/index.js';
+import { Material, Sphere, Plane, Box, PointLight } from '../../lib/index.js';
 
 describe('Material', () => {
   it('defaults: white, no emission, no reflection, no transparency', () => {
@@ -67,5 +67,28 @@ describe('Material: bad input names the field', () => {
     expect(() => new Material(null)).toThrow(TypeError);
     expect(() => new Material('red')).toThrow(/material/);
     expect(() => new Sphere([0, 0, 0], 1, 'red')).toThrow(/material/);
+  });
+});
+
+describe('a shape or light named in its constructor', () => {
+  it('takes name beside the material options, and keeps the material as it was', () => {
+    const ball = new Sphere([0, 0, -20], 4, { color: [1, 0, 0], reflection: 0.5, name: 'pink' });
+    expect(ball.name).toBe('pink');
+    expect(ball.material).toEqual(new Material({ color: [1, 0, 0], reflection: 0.5 }));
+    expect(new Plane([0, 0, 0], [0, 1, 0], { name: 'ground' }).name).toBe('ground');
+    expect(new Box([0, 0, 0], [1, 1, 1], { color: 'gray', name: 'pole' }).name).toBe('pole');
+    expect(new PointLight([0, 10, 0], { intensity: 0.5, name: 'sun' }).name).toBe('sun');
+  });
+
+  it('is empty when not given, also with a Material', () => {
+    expect(new Sphere([0, 0, 0], 1).name).toBe('');
+    expect(new Sphere([0, 0, 0], 1, new Material({ color: 'red' })).name).toBe('');
+    expect(new PointLight([0, 10, 0]).name).toBe('');
+  });
+
+  it('must be text, and a misspelt name is named with the suggestion', () => {
+    expect(() => new Sphere([0, 0, 0], 1, { name: 7 })).toThrow(/name must be text, got 7/);
+    expect(() => new Sphere([0, 0, 0], 1, { nmae: 'ball' })).toThrow('unknown material option "nmae" (did you mean "name"?)');
+    expect(() => new PointLight([0, 0, 0], { name: null })).toThrow(/name must be text/);
   });
 });
