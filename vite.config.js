@@ -9,6 +9,11 @@ const sketchPages = readdirSync('sketches')
   .filter((file) => file.endsWith('.html'))
   .map((file) => resolve('sketches', file));
 
+// Cross-origin isolation: a page may then share one frame with its render
+// workers (SharedArrayBuffer) instead of copying rows between threads. Every
+// page loads only its own origin's files, so nothing it uses is refused.
+const isolation = { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-Embedder-Policy': 'require-corp' };
+
 export default defineConfig({
   base: './',
   // p5's translations from node_modules, not a CDN (scripts/p5-offline-i18n.js): in the build and the dev server's bundle of p5.
@@ -21,7 +26,9 @@ export default defineConfig({
     rollupOptions: { input: [resolve('index.html'), ...sketchPages] },
   },
   worker: { format: 'es' },
+  preview: { headers: isolation },
   server: {
+    headers: isolation,
     // Test output must not reload pages under test.
     watch: { ignored: ['**/test-results/**', '**/playwright-report/**', '**/__screenshots__/**', '**/tests/pictures/**'] },
   },

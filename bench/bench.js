@@ -54,7 +54,10 @@
  * pixel for every pixel of a 64×48 class scene, both ways (exit code 1 if not).
  */
 import { performance, PerformanceObserver } from 'node:perf_hooks';
-import { loadavg, availableParallelism } from 'node:os';
+import { loadavg, availableParallelism, tmpdir } from 'node:os';
+import { spawnSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
+import { join } from 'node:path';
 import { Camera, classScene, render, inspectPixel } from '../lib/index.js';
 import { ProgressiveRenderer } from '../lib/progressive.js';
 
@@ -194,4 +197,66 @@ for (const c of large) {
   const { before, after, collections } = await heapAcross(c, 10);
   console.log(`heap, 10 frames of ${c.label}: ${mb(before)} before, ${mb(after)} after, ${collections} collections` +
     `${globalThis.gc ? '' : ' (run with node --expose-gc for a clean "before")'}`);
+}
+
+/* ---------------- the C reference ---------------- */
+
+/**
+ * Compiles bench/reference.c (the same work as (a): the class scene, 640×480,
+ * nearest hit, one shadow ray per light, Lambert) with `cc -O3 -march=native`
+ * (plain -O3 where the compiler refuses -march=native); null when there is no
+ * C compiler.
+ */
+function compileReference(dir) {
+  const source = join(import.meta.dirname, 'reference.c'), binary = join(dir, 'reference');
+  for (const flags of [['-O3', '-march=native'], ['-O3']]) {
+    const cc = spawnSync(process.env.CC ?? 'cc', [...flags, '-o', binary, source, '-lm'], { encoding: 'utf8' });
+    if (cc.error) return null; // no compiler at all
+    if (cc.status === 0) return { binary, flags: flags.join(' ') };
+  }
+  return null;
+}
+
+/** Runs the reference for `frames` frames; returns each frame's milliseconds (its own clock). */
+function runReference(binary, frames, out) {
+  const run = spawnSync(binary, [String(frames), ...(out ? [out] : [])], { encoding: 'utf8' });
+  if (run.status !== 0) throw new Error(`${binary} failed: ${run.stderr || run.status}`);
+  return run.stdout.trim().split('\n').map(Number);
+}
+
+const ROUNDS = 9, PER_ROUND = 3;
+const dir = mkdtempSync(join(tmpdir(), 'rt-bench-c-'));
+try {
+  const reference = compileReference(dir);
+  if (!reference) {
+    console.log('\nC reference: skipped (no C compiler: install one, e.g. `sudo apt-get install -y gcc`, or set CC)');
+  } else {
+    const c = large[0], out = join(dir, 'frame.rgba');
+    runReference(reference.binary, 1, out);
+    const cFrame = readFileSync(out), jsFrame = render(c.scene, c.camera);
+    let differ = 0;
+    for (let i = 0; i < jsFrame.length; i++) if (jsFrame[i] !== cFrame[i]) differ++;
+    // Alternately: a few frames of C, then as many of render(), round after round, so
+    // that both see the machine's same moments; the ratio is taken within each round.
+    const cTimes = [], jsTimes = [], ratios = [];
+    for (let i = 0; i < WARMUP; i++) c.run();
+    for (let round = 0; round < ROUNDS; round++) {
+      const cRound = runReference(reference.binary, PER_ROUND);
+      const jsRound = [];
+      for (let i = 0; i < PER_ROUND; i++) {
+        const start = performance.now();
+        c.run();
+        jsRound.push(performance.now() - start);
+      }
+      cTimes.push(...cRound);
+      jsTimes.push(...jsRound);
+      ratios.push(median(jsRound) / median(cRound));
+    }
+    console.log(`\nC reference (bench/reference.c, cc ${reference.flags}, one thread), the frame of (a), ${ROUNDS} rounds of ${PER_ROUND} frames each way, alternating:`);
+    console.log(`  bytes: ${differ === 0 ? 'identical to render()' : `${differ} bytes differ from render()`}`);
+    console.log(`  C ${median(cTimes).toFixed(2)} ms/frame (min ${Math.min(...cTimes).toFixed(2)}), render() ${median(jsTimes).toFixed(2)} ms/frame (min ${Math.min(...jsTimes).toFixed(2)})`);
+    console.log(`  render() / C: ${median(ratios).toFixed(2)}× (median of the rounds' ratios; ${(median(jsTimes) / median(cTimes)).toFixed(2)}× of the medians; goal 2.0×)`);
+  }
+} finally {
+  rmSync(dir, { recursive: true, force: true });
 }

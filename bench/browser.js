@@ -23,7 +23,9 @@
  * Times are printed, never asserted; the exit code is 1 only when something
  * is broken (a page error, a picture that differs, no browser).
  *
- * Options: --dev (the dev server instead of build + preview); --port N or
+ * Options: --dev (the dev server instead of build + preview); --runs N (worker
+ * timings per case, default 15); --only workers
+ * or --only progressive (one part alone); --port N or
  * BENCH_PORT=N (the server's port, default 5178); BENCH_TRACE=file
  * writes the Chromium trace of part 1 (open it in ui.perfetto.dev), and
  * BENCH_TRACE_CATEGORIES=devtools.timeline,v8 adds detail to it.
@@ -83,9 +85,10 @@ const PAGE = 'bench/browser/bench.html';
 const VIEW3D_PAGE = 'bench/browser/view3d.html';
 const ONLY_VIEW3D = option('--only') === 'view3d'; // `npm run bench:browser -- --only view3d`: section 5 alone
 const DEV = process.argv.includes('--dev');
+const ONLY = option('--only'); // 'progressive', 'workers' or 'view3d': one part alone
 const TASK_LIMIT_MS = 16;
 const CHANGES = 12;           // per way of making a change
-const RUNS = 7, WARMUP = 2;   // worker timings
+const RUNS = Number(option('--runs') ?? 15), WARMUP = 3;   // worker timings (--runs N)
 
 const median = (values) => {
   if (values.length === 0) return NaN;
@@ -364,9 +367,14 @@ function reportWorkers(result) {
   console.log(`\n3. Class scene ${result.width}×${result.height}, whole frame: ${result.runs} runs per case after ${result.warmup} warm-up rounds, cases in turn (navigator.hardwareConcurrency ${result.cores})`);
   const rows = result.cases.map((c) => [c.name, ms(median(c.times)), ms(Math.min(...c.times)), ms(Math.max(...c.times)), ms(c.first), c.differing === 0 ? 'identical' : `${c.differing} bytes differ`]);
   table(['case', 'median', 'min', 'max', 'first', 'vs render()'], rows, [30, 8, 8, 8, 8, 16]);
-  const [main, one, two] = result.cases.map((c) => median(c.times));
-  console.log(`   speed-up, 2 workers over 1: ${(one / two).toFixed(2)}×; 2 workers over render(): ${(main / two).toFixed(2)}×` +
-    ` ('first' = the first frame, workers starting)`);
+  const [main, ...rest] = result.cases.map((c) => median(c.times));
+  console.log(`   page cross-origin isolated: ${result.isolated ? 'yes (workers share one frame)' : 'no (rows transferred)'}`);
+  console.log(`   speed-up over render() on the main thread, ratio of medians: ${rest.map((t, k) => `${result.cases[k + 1].name} ${(main / t).toFixed(2)}×`).join('; ')}`);
+  // Each round times every case once, back to back: the median of the rounds' own ratios
+  // holds up better than a ratio of medians when the machine's load swings.
+  const ratios = result.cases.slice(1).map((c) => median(c.times.map((t, i) => result.cases[0].times[i] / t)));
+  console.log(`   median of per-round ratios: ${ratios.map((r, k) => `${result.cases[k + 1].name} ${r.toFixed(2)}×`).join('; ')}`);
+  console.log("   ('first' = the first frame, workers just started)");
 }
 
 /* ---------------- 5. the 3D scene view ---------------- */
@@ -426,18 +434,20 @@ try {
   console.log(`Browser benchmark: Chromium ${browser.version()} headless, ${DEV ? 'Vite dev server (unbundled modules)' : 'production build (vite build + vite preview)'},` +
     ` ${availableParallelism()} cores, load average ${loadavg()[0].toFixed(1)}`);
   if (!ONLY_VIEW3D) {
-    reportProgressive(await progressive(browser, base, errors));
-    const w = await workers(browser, base, errors);
-    reportWorkers(w);
+    if (!ONLY || ONLY === 'progressive') reportProgressive(await progressive(browser, base, errors));
+    const w = !ONLY || ONLY === 'workers' ? await workers(browser, base, errors) : { cases: [] };
+    if (w.width) reportWorkers(w);
     if (w.cases.some((c) => c.differing !== 0)) errors.push('a worker picture differs from render()');
-    const devServer = DEV && SAVE_PORT === PORT ? null : await startServer(null, SAVE_PORT);
-    try {
-      reportSaves(await saves(browser, `http://localhost:${SAVE_PORT}/`, errors));
-    } finally {
-      devServer?.kill(); // the dev server this script started for part 4, by its PID
+    if (!ONLY) {
+      const devServer = DEV && SAVE_PORT === PORT ? null : await startServer(null, SAVE_PORT);
+      try {
+        reportSaves(await saves(browser, `http://localhost:${SAVE_PORT}/`, errors));
+      } finally {
+        devServer?.kill(); // the dev server this script started for part 4, by its PID
+      }
     }
   }
-  reportView3d(await view3d(browser, base, errors));
+  if (!ONLY || ONLY_VIEW3D) reportView3d(await view3d(browser, base, errors));
   console.log(`\nload average at the end: ${loadavg()[0].toFixed(1)}`);
 } catch (error) {
   errors.push(error.stack ?? String(error));

@@ -147,12 +147,15 @@ async function changes(view, probe, { n = 12, from = 'task', gapMs = 180 } = {})
 async function workersPart({ runs = 7, warmup = 2 } = {}) {
   const scene = classScene(), camera = new Camera({ width: WIDTH, height: HEIGHT });
   const reference = render(scene, camera);
-  const one = new ParallelRenderer({ workers: 1 }), two = new ParallelRenderer({ workers: 2 });
+  const one = new ParallelRenderer({ workers: 1 }).warm(), two = new ParallelRenderer({ workers: 2 }).warm();
+  const moved = new ParallelRenderer({ workers: 2, shared: false }).warm();
+  const how = one.shared ? 'one shared frame' : 'rows transferred';
   const cases = [
     { name: 'render(), main thread', run: async () => render(scene, camera) },
-    { name: 'ParallelRenderer, 1 worker', run: () => one.render(scene, camera) },
-    { name: 'ParallelRenderer, 2 workers', run: () => two.render(scene, camera) },
+    { name: `1 worker, ${how}`, run: () => one.render(scene, camera) },
+    { name: `2 workers, ${how}`, run: () => two.render(scene, camera) },
   ];
+  if (two.shared) cases.push({ name: '2 workers, rows transferred', run: () => moved.render(scene, camera) });
   const timed = async (c) => {
     const start = performance.now();
     const buffer = await c.run();
@@ -183,12 +186,11 @@ async function workersPart({ runs = 7, warmup = 2 } = {}) {
       }
     }
     return {
-      width: WIDTH, height: HEIGHT, runs, warmup, cores: navigator.hardwareConcurrency,
+      width: WIDTH, height: HEIGHT, runs, warmup, cores: navigator.hardwareConcurrency, isolated: crossOriginIsolated,
       cases: cases.map((c, k) => ({ name: c.name, first: first[k], times: c.times, differing: c.differing })),
     };
   } finally {
-    one.terminate();
-    two.terminate();
+    for (const parallel of [one, two, moved]) parallel.terminate();
   }
 }
 

@@ -15,7 +15,8 @@
  * works the same whether the sketch has a draw(), animates, or calls noLoop()).
  * A sketch that animates just calls `view.setCamera(…)` from its draw().
  */
-import { ProgressiveRenderer, MODES as RENDER_MODES } from '../progressive.js';
+import { MODES as RENDER_MODES } from '../progressive.js';
+import { WorkerProgressiveRenderer } from '../workers/progressive.js';
 import { modeShader, modeLegend } from '../modes.js';
 import { pixelCoordinate, show, checkOptions } from '../check.js';
 import { registerView } from './page-state.js';
@@ -49,6 +50,7 @@ const BASE_REM = 16;
  * @param {string} [options.mode='shaded'] visual mode: 'shaded', 'discriminant', 'roots', 'h', 'v', 'normals', 'depth'
  * @param {'coarse'|'scanline'|'slow'} [options.renderMode='coarse'] the order pixels are traced in
  * @param {number} [options.budgetMs=8] tracing time per animation frame
+ * @param {'auto'|number|false} [options.workers='auto'] Web Workers for large shaded frames ('auto': one per core; false: none)
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where to put it (element, id or p5.Element); default the sketch's node
  * @param {string} [options.label] a caption above the picture
  * @param {boolean} [options.legend=true] show the mode's legend under the picture (not for 'shaded')
@@ -67,13 +69,14 @@ export class TracerView {
   #shownCurrent = null; #progressText = '';
   #ctx; #overlayCtx; #onResize;
 
-  constructor(p, { scene, camera, scale = 'auto', grid = false, mode = 'shaded', renderMode = 'coarse', budgetMs = 8, parent, label, legend = true } = {}) {
+  constructor(p, { scene, camera, scale = 'auto', grid = false, mode = 'shaded', renderMode = 'coarse', budgetMs = 8, workers = 'auto', parent, label, legend = true } = {}) {
     this.#scale = checkScale(scale);
     this.#grid = Boolean(grid);
     this.budgetMs = checkBudget(budgetMs);
     this.#mode = mode;
     // The renderer checks scene, camera and renderMode; modeShader checks mode.
-    this.#renderer = new ProgressiveRenderer({ scene, camera, mode: renderMode, budgetMs: this.budgetMs, shader: modeShader(mode) });
+    // Large shaded frames go to Web Workers (lib/workers/progressive.js); the rest is traced here.
+    this.#renderer = new WorkerProgressiveRenderer({ scene, camera, mode: renderMode, budgetMs: this.budgetMs, shader: modeShader(mode), workers });
     this.showLegend = legend;
 
     useStyle();
@@ -214,6 +217,7 @@ export class TracerView {
     if (this.#destroyed) return;
     this.#destroyed = true;
     cancelAnimationFrame(this.#raf);
+    this.#renderer.terminate();
     window.removeEventListener('resize', this.#onResize);
     this.#page.unregister();
     this.figure.remove();

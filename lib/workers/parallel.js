@@ -24,7 +24,7 @@ function startWorker() {
 }
 
 /** The options a ParallelRenderer takes. */
-const OPTIONS = ['workers', 'rowsPerBand', 'timeoutMs', 'shared', 'onProblem', 'createWorker'];
+const OPTIONS = ['workers', 'rowsPerBand', 'timeoutMs', 'shared', 'fallback', 'onProblem', 'createWorker'];
 
 /** True where a SharedArrayBuffer can be handed to a worker: a cross-origin isolated page. */
 function canShare() {
@@ -49,11 +49,12 @@ export class ParallelRenderer {
    * @param {'auto'|number} [options.rowsPerBand='auto'] rows per band ('auto': up to 16, at least 8 bands per worker)
    * @param {number} [options.timeoutMs=6000] a worker silent this long during a render is given up on
    * @param {'auto'|boolean} [options.shared='auto'] share one frame with the workers ('auto': where the page is cross-origin isolated)
+   * @param {boolean} [options.fallback=true] when the workers fail, render on the main thread (false: reject)
    * @param {(error: Error) => void} [options.onProblem] told once when the workers fail and the main thread takes over
    * @param {() => Worker} [options.createWorker] starts one worker (tests pass a stand-in)
    */
   constructor(options = {}) {
-    const { workers = globalThis.navigator?.hardwareConcurrency || 2, rowsPerBand = 'auto', timeoutMs = 6000, shared = 'auto', onProblem, createWorker } = checkOptions(options, OPTIONS, 'ParallelRenderer');
+    const { workers = globalThis.navigator?.hardwareConcurrency || 2, rowsPerBand = 'auto', timeoutMs = 6000, shared = 'auto', fallback = true, onProblem, createWorker } = checkOptions(options, OPTIONS, 'ParallelRenderer');
     this.workers = positiveInteger(workers, 'workers');
     this.rowsPerBand = rowsPerBand === 'auto' ? rowsPerBand : positiveInteger(rowsPerBand, 'rowsPerBand');
     this.timeoutMs = positiveInteger(timeoutMs, 'timeoutMs');
@@ -61,6 +62,9 @@ export class ParallelRenderer {
     if (shared === true && typeof SharedArrayBuffer !== 'function') throw new TypeError('shared: this page has no SharedArrayBuffer');
     /** True when the workers write into one SharedArrayBuffer, false when their rows are transferred. */
     this.shared = shared === 'auto' ? canShare() : shared;
+    if (typeof fallback !== 'boolean') throw new TypeError(`fallback must be true or false, got ${show(fallback)}`);
+    /** When the workers fail: true, render on the main thread instead; false, reject (the caller has its own way). */
+    this.fallback = fallback;
     if (onProblem !== undefined && typeof onProblem !== 'function') throw new TypeError(`onProblem must be a function, got ${show(onProblem)}`);
     this.onProblem = onProblem;
     if (createWorker !== undefined && typeof createWorker !== 'function') {
@@ -106,6 +110,7 @@ export class ParallelRenderer {
     const sceneJSON = sceneToJSON(scene), cameraJSON = cameraToJSON(camera); // also checks them
     const { width, height } = camera;
     if (!this.usingWorkers) {
+      if (!this.fallback) throw new Error(this.problem ?? 'no Web Workers here');
       const buffer = render(scene, camera);
       onRows?.(0, height, buffer);
       return buffer;
@@ -222,10 +227,14 @@ export class ParallelRenderer {
    */
   #giveUp(why) {
     const first = this.problem === null;
-    if (first) this.problem = `${why}; rendering on the main thread instead`;
+    if (first) this.problem = this.fallback ? `${why}; rendering on the main thread instead` : why;
     this.#stopWorkers();
     if (first) this.onProblem?.(new Error(this.problem));
     for (const job of [...this.#jobs.values()]) {
+      if (!this.fallback) {
+        this.#finish(job, new Error(this.problem));
+        continue;
+      }
       try {
         for (const bands of job.pending.values()) {
           for (const [y0, y1] of bands) render(job.scene, job.camera, job.buffer, { y0, y1 });

@@ -35,6 +35,12 @@ const canvasVersusRender = (page) => page.evaluate(async () => {
   return { differ, length: shown.length };
 });
 
+/** Serves a worker that takes its jobs and never answers (with the headers a cross-origin isolated page needs of a worker). */
+const silentWorker = (route) => route.fulfill({
+  contentType: 'text/javascript', body: 'self.onmessage = () => {};',
+  headers: { 'Cross-Origin-Embedder-Policy': 'require-corp', 'Cross-Origin-Resource-Policy': 'same-origin' },
+});
+
 async function fallsBackToTheMainThread(page, message) {
   await expect(page.locator('[data-message="example"]')).toHaveText(message, { timeout: 30_000 });
   await expect(page.locator('[data-stats]')).toHaveText(/· main thread$/);
@@ -48,7 +54,7 @@ async function fallsBackToTheMainThread(page, message) {
 test('sketch 07: a worker that never answers is given up on with a message, and the frames go on on the main thread', async ({ page }) => {
   test.slow();
   const errors = watchConsole(page);
-  await page.route('**/render-worker.js*', (route) => route.fulfill({ contentType: 'text/javascript', body: 'self.onmessage = () => {};' }));
+  await page.route('**/render-worker.js*', silentWorker);
   await page.goto(SKETCH_07);
   await expect(page.locator('body')).toHaveAttribute('data-render', 'rendering');
   await fallsBackToTheMainThread(page, /^render worker \d did not answer within 6 s; rendering on the main thread instead$/);
@@ -60,4 +66,33 @@ test('sketch 07: a worker that fails to start: a message, and the frames are tra
   await page.route('**/render-worker.js*', (route) => route.fulfill({ status: 404, contentType: 'text/plain', body: 'gone' }));
   await page.goto(SKETCH_07);
   await fallsBackToTheMainThread(page, /^render worker \d failed \(.+\); rendering on the main thread instead$/);
+});
+
+// A tracer view of a large frame: coarse passes on the page's thread, the rest on workers.
+test('a 640×480 tracer view: coarse previews first, the rest from the workers, render()\'s bytes, and again after a change', async ({ page }) => {
+  const errors = watchConsole(page);
+  await page.goto('/tests/e2e/pages/tracer-workers.html');
+  await waitForDone(page);
+  expect(await page.evaluate(() => crossOriginIsolated)).toBe(true); // the dev server's headers: workers share one frame
+  for (let round = 0; round < 2; round++) {
+    const steps = await page.evaluate(() => window.steps.splice(0));
+    expect(steps.every((s) => s.usingWorkers)).toBe(true);
+    expect(steps[0].pass).toBeGreaterThanOrEqual(8); // the first frame shows coarse blocks
+    expect(steps.at(-1)).toMatchObject({ done: true, progress: 1, pass: 1 });
+    for (let i = 1; i < steps.length; i++) expect(steps[i].pass).toBeLessThanOrEqual(steps[i - 1].pass); // coarse to fine
+    expect(await page.evaluate(() => window.differing())).toBe(0);
+    await expect(page.locator('[data-progress-text]')).toHaveText(/^100% · /);
+    await page.evaluate(() => window.view.setScene(window.classSceneAt(2))); // the page says "rendering" from here on
+    await waitForDone(page);
+  }
+  expect(errors).toEqual([]);
+});
+
+test('a 640×480 tracer view whose workers never answer: the page finishes the picture itself, the same bytes', async ({ page }) => {
+  test.slow();
+  await page.route('**/render-worker.js*', silentWorker);
+  await page.goto('/tests/e2e/pages/tracer-workers.html');
+  await waitForDone(page, 40_000);
+  expect(await page.evaluate(() => window.differing())).toBe(0);
+  expect(await page.evaluate(() => window.view.renderer.problem)).toMatch(/^render worker \d did not answer within 6 s$/);
 });

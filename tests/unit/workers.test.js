@@ -1,6 +1,7 @@
 import { describe, it, expect } from 'vitest';
 import { ParallelRenderer, splitRows, bandHeight } from '../../lib/workers/parallel.js';
 import { workerHandler, GROUPS } from '../../lib/workers/split.js';
+import { fakeWorkers, silentWorker } from './fake-workers.js';
 import { sceneToJSON, cameraToJSON } from '../../lib/serialize.js';
 import { render, Camera, Scene, Sphere, Plane, Box, PointLight, classScene, classSceneAt } from '../../lib/index.js';
 
@@ -55,41 +56,6 @@ function roomScene() {
   scene.add(new Sphere([1.5, -0.5, -12], 1.5, { color: 'pink', transparency: 0.5, specular: 0.5 }));
   scene.add(new PointLight([4, 6, -2], [1, 1, 1], 1.1));
   return scene;
-}
-
-/**
- * A stand-in for a Web Worker: runs the real worker code (workerHandler)
- * later, on structured clones of the messages, as a worker would (a
- * SharedArrayBuffer clones to the same memory, as between threads).
- */
-function fakeWorkers() {
-  const started = [], received = [], answers = [];
-  const create = () => {
-    const handle = workerHandler();
-    const worker = {
-      onmessage: null, onerror: null, terminated: false, jobs: 0,
-      postMessage(data) {
-        worker.jobs++;
-        received.push(data);
-        const job = structuredClone(data);
-        setTimeout(() => handle(job, (message, transfer) => {
-          const copy = structuredClone(message, { transfer });
-          answers.push(copy);
-          setTimeout(() => { if (!worker.terminated) worker.onmessage({ data: copy }); });
-        }));
-      },
-      terminate() { worker.terminated = true; },
-    };
-    started.push(worker);
-    return worker;
-  };
-  return { create, started, received, answers };
-}
-
-/** A worker that takes its jobs and never answers. */
-function silentWorker() {
-  const w = { onmessage: null, onerror: null, terminated: false, jobs: 0, postMessage() { w.jobs++; }, terminate() { w.terminated = true; } };
-  return w;
 }
 
 describe('ParallelRenderer', () => {

@@ -1,0 +1,38 @@
+/** Stand-ins for Web Workers in Node: the real worker code, run on structured clones of the messages. */
+import { workerHandler } from '../../lib/workers/split.js';
+
+/**
+ * A stand-in for a Web Worker: runs the real worker code (workerHandler)
+ * later, on structured clones of the messages, as a worker would (a
+ * SharedArrayBuffer clones to the same memory, as between threads).
+ */
+export function fakeWorkers() {
+  const started = [], received = [], answers = [];
+  const create = () => {
+    const handle = workerHandler();
+    const worker = {
+      onmessage: null, onerror: null, terminated: false, jobs: 0,
+      postMessage(data) {
+        worker.jobs++;
+        received.push(data);
+        const job = structuredClone(data);
+        setTimeout(() => handle(job, (message, transfer) => {
+          const copy = structuredClone(message, { transfer });
+          answers.push(copy);
+          setTimeout(() => { if (!worker.terminated) worker.onmessage({ data: copy }); });
+        }));
+      },
+      terminate() { worker.terminated = true; },
+    };
+    started.push(worker);
+    return worker;
+  };
+  return { create, started, received, answers };
+}
+
+/** A worker that takes its jobs and never answers. */
+export function silentWorker() {
+  const w = { onmessage: null, onerror: null, terminated: false, jobs: 0, postMessage() { w.jobs++; }, terminate() { w.terminated = true; } };
+  return w;
+}
+
