@@ -6,7 +6,8 @@
  *   Every draw() of the view is timed (its step(), and the rest: blit and
  *   progress bar). When the picture is done, window.bench.progressive holds
  *   the figures; then window.bench.changes() times view.setScene()/restart()
- *   to the first coarse preview.
+ *   to the first coarse preview and to the finished picture. With &workers=0
+ *   the view traces on the page's thread alone (large frames go to workers otherwise).
  * ?part=workers: window.bench.workers() times ParallelRenderer with 1 and 2
  *   workers and render() on the main thread, side by side, and compares the
  *   pictures byte for byte.
@@ -19,7 +20,9 @@ import '../../lib/p5/index.js';
 import { ParallelRenderer } from '../../lib/workers/parallel.js';
 
 const WIDTH = 640, HEIGHT = 480, BUDGET_MS = 8;
-const part = new URLSearchParams(location.search).get('part') ?? 'progressive';
+const params = new URLSearchParams(location.search);
+const part = params.get('part') ?? 'progressive';
+const viewWorkers = params.get('workers') === '0' ? false : 'auto'; // ?workers=0: the tracer view on the page's thread alone
 const bench = (window.bench = { part });
 
 const nextTask = () => new Promise((resolve) => setTimeout(resolve, 0));
@@ -53,7 +56,7 @@ function instrument(view) {
     const tracedBefore = renderer.traced;
     draw();
     const end = performance.now();
-    const frame = { start, end, step: probe.stepMs, draw: end - start, traced: renderer.traced - tracedBefore, pass: renderer.pass, done: renderer.done };
+    const frame = { start, end, step: probe.stepMs, draw: end - start, traced: renderer.traced - tracedBefore, shown: renderer.traced, pass: renderer.pass, done: renderer.done };
     probe.frames.push(frame);
     probe.onDraw?.(frame);
   };
@@ -69,7 +72,7 @@ function progressivePart() {
       const start = performance.now();
       view = p.createTracerView({
         scene: classScene(), camera: new Camera({ width: WIDTH, height: HEIGHT }),
-        budgetMs: BUDGET_MS, renderMode: 'coarse', scale: 1, parent: 'sketch',
+        budgetMs: BUDGET_MS, renderMode: 'coarse', scale: 1, parent: 'sketch', workers: viewWorkers,
       });
       setupMs = performance.now() - start;
       probe = instrument(view);
@@ -114,11 +117,11 @@ async function changes(view, probe, { n = 12, from = 'task', gapMs = 180 } = {})
     const result = await new Promise((resolve) => {
       let t0 = 0, changeMs = 0;
       const onDraw = (frame) => {
-        if (frame.traced === 0) return;
+        if (frame.shown === 0) return; // nothing of the new picture yet (with workers, rows may arrive between frames)
         probe.onDraw = null;
         const blit = frame.end - t0;
         const channel = new MessageChannel();
-        channel.port1.onmessage = () => resolve({ kind, from, changeMs, blit, painted: performance.now() - t0, step: frame.step, draw: frame.draw });
+        channel.port1.onmessage = () => resolve({ kind, from, t0, changeMs, blit, painted: performance.now() - t0, step: frame.step, draw: frame.draw });
         channel.port2.postMessage(0);
       };
       const change = () => {
@@ -130,6 +133,11 @@ async function changes(view, probe, { n = 12, from = 'task', gapMs = 180 } = {})
       if (from === 'draw') bench.sketchDraw = () => { bench.sketchDraw = null; change(); };
       else change();
     });
+    // Then the whole picture: the end of the draw() that finished it.
+    const doneAt = view.done ? probe.frames.at(-1).end : await new Promise((resolve) => {
+      probe.onDraw = (frame) => { if (frame.done) { probe.onDraw = null; resolve(frame.end); } };
+    });
+    result.done = doneAt - result.t0;
     results.push(result);
   }
   await waitUntilDone(view);

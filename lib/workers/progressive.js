@@ -20,6 +20,8 @@ import { show, positiveInteger } from '../check.js';
 export const MIN_PIXELS = 100_000;
 /** The main thread traces the coarse passes down to blocks of this size, then leaves the rest to the workers. */
 export const MAIN_PASSES_DOWN_TO = 8;
+/** Milliseconds a step spends on those passes at most: 640×480's 16 and 8 px passes take about 1. */
+export const MAIN_BUDGET_MS = 2;
 
 export class WorkerProgressiveRenderer {
   #inner;
@@ -33,9 +35,13 @@ export class WorkerProgressiveRenderer {
   #useWorkers = false;
   #inFlight = false;
   #waiting = false;
-  #rowsArrived = 0;
-  #changed = false;
+  /** Bands [y0, y1) that arrived since the last step, in #frame, the workers' frame so far; rows shown. */
+  #arrived = [];
+  #frame = null;
+  #rowsShown = 0;
+  /** The workers have finished the frame; step() has shown it whole. */
   #finished = false;
+  #complete = false;
   #startedAt = 0;
   #endedAt = 0;
 
@@ -66,23 +72,35 @@ export class WorkerProgressiveRenderer {
   }
 
   /**
-   * One slice of work. On the workers' path: the coarse passes here, within
-   * `budgetMs`, then nothing but noticing the rows that arrived.
+   * One slice of work. On the workers' path: the coarse passes here (at most
+   * MAIN_BUDGET_MS of them a step, the workers need the cores more) until the
+   * workers' first rows are in, then nothing but showing the rows that
+   * arrived since the last step, and at last the whole frame.
    * @returns {{ changed: boolean, done: boolean }}
    */
   step(budgetMs) {
     if (!this.#useWorkers) return this.#inner.step(budgetMs);
+    const inner = this.#inner;
+    if (this.#complete) return { changed: false, done: true };
     if (this.#finished) {
-      const changed = this.#changed;
-      this.#changed = false;
-      return { changed, done: true };
+      inner.buffer.set(this.#frame); // the workers' frame, whole: render()'s bytes
+      this.#complete = true;
+      this.#endedAt = inner.now();
+      return { changed: true, done: true };
     }
-    let changed = this.#changed;
-    this.#changed = false;
-    if (this.#rowsArrived === 0 && this.#inner.pass >= MAIN_PASSES_DOWN_TO) {
-      this.#inner.step(budgetMs);
+    let changed = false;
+    if (this.#rowsShown === 0 && inner.pass >= MAIN_PASSES_DOWN_TO && !inner.done) {
+      inner.step(Math.min(budgetMs ?? inner.budgetMs, MAIN_BUDGET_MS));
       changed = true;
     }
+    // Rows that arrived go over the coarse blocks; the blocks are never painted over them again.
+    const rowBytes = inner.width * 4;
+    for (const [y0, y1] of this.#arrived) {
+      inner.buffer.set(this.#frame.subarray(y0 * rowBytes, y1 * rowBytes), y0 * rowBytes);
+      this.#rowsShown += y1 - y0;
+      changed = true;
+    }
+    this.#arrived = [];
     return { changed, done: false };
   }
 
@@ -94,20 +112,20 @@ export class WorkerProgressiveRenderer {
 
   /** True when this frame is (or was) rendered by workers. */
   get usingWorkers() { return this.#useWorkers; }
-  get done() { return this.#useWorkers ? this.#finished : this.#inner.done; }
+  get done() { return this.#useWorkers ? this.#complete : this.#inner.done; }
   get traced() {
     if (!this.#useWorkers) return this.#inner.traced;
-    return this.#finished ? this.width * this.height : this.#inner.traced + this.#rowsArrived * this.width;
+    return this.#complete ? this.width * this.height : Math.min(this.width * this.height - 1, this.#inner.traced + this.#rowsShown * this.width);
   }
   get progress() { return this.traced / (this.width * this.height); }
   get raysPerSecond() {
     if (!this.#useWorkers) return this.#inner.raysPerSecond;
-    const ms = (this.#finished ? this.#endedAt : performance.now()) - this.#startedAt;
+    const ms = (this.#complete ? this.#endedAt : this.#inner.now()) - this.#startedAt;
     return ms > 0 ? (this.traced * 1000) / ms : 0;
   }
   get pass() {
     if (!this.#useWorkers) return this.#inner.pass;
-    return this.#finished || this.#rowsArrived > 0 ? 1 : this.#inner.pass;
+    return this.#complete || this.#rowsShown > 0 ? 1 : this.#inner.pass;
   }
   get current() { return this.#inner.current; }
   get buffer() { return this.#inner.buffer; }
@@ -127,10 +145,12 @@ export class WorkerProgressiveRenderer {
   /** A new frame: to the workers if they help, else the inner renderer alone. */
   #begin() {
     this.#generation++;
-    this.#rowsArrived = 0;
-    this.#changed = false;
+    this.#arrived = [];
+    this.#frame = null;
+    this.#rowsShown = 0;
     this.#finished = false;
-    this.#startedAt = performance.now();
+    this.#complete = false;
+    this.#startedAt = this.#inner.now();
     this.#useWorkers = this.#helps();
     if (this.#useWorkers) this.#post();
   }
@@ -151,23 +171,20 @@ export class WorkerProgressiveRenderer {
       return;
     }
     this.#parallel ??= new ParallelRenderer({ workers: this.#workers, fallback: false, createWorker: this.#createWorker }).warm();
-    const generation = this.#generation, inner = this.#inner, rowBytes = inner.width * 4;
+    const generation = this.#generation;
     const current = () => generation === this.#generation;
     this.#inFlight = true;
-    this.#parallel.render(inner.scene, inner.camera, {
+    this.#parallel.render(this.#inner.scene, this.#inner.camera, {
       onRows: (y0, y1, frame) => {
         if (!current()) return;
-        inner.buffer.set(frame.subarray(y0 * rowBytes, y1 * rowBytes), y0 * rowBytes);
-        this.#rowsArrived += y1 - y0;
-        this.#changed = true;
+        this.#frame = frame;
+        this.#arrived.push([y0, y1]);
       },
     }).then((frame) => {
       if (!current()) return;
-      inner.buffer.set(frame); // every row is in already; this makes sure of it
+      this.#frame = frame;
       this.#finished = true;
-      this.#changed = true;
-      this.#endedAt = performance.now();
-    }, (error) => {
+    }, () => {
       // No workers for this frame after all (a failed worker, or a scene that cannot travel as
       // JSON): the inner renderer, paused at its coarse passes, traces the rest here.
       if (this.#parallel?.problem) this.problem = this.#parallel.problem;
