@@ -61,7 +61,7 @@ export function createTracerView(p, options = {}) {
 }
 
 /** The options createTracerView takes. */
-const TRACER_VIEW_OPTIONS = ['scene', 'camera', 'scale', 'grid', 'mode', 'renderMode', 'budgetMs', 'parent', 'label', 'legend'];
+const TRACER_VIEW_OPTIONS = ['scene', 'camera', 'scale', 'grid', 'mode', 'renderMode', 'budgetMs', 'workers', 'parent', 'label', 'legend'];
 
 export class TracerView {
   #renderer; #page; #imageData = null; #raf = 0; #destroyed = false;
