@@ -4,7 +4,8 @@
  */
 import { toColor } from './color.js';
 import { numberInRange, bool, show, checkOptions } from './check.js';
-import { Sphere, EPSILON } from './shapes/sphere.js';
+import { Sphere } from './shapes/sphere.js';
+import { EPSILON } from './constants.js';
 import { Plane } from './shapes/plane.js';
 import { Box } from './shapes/box.js';
 import { PointLight, lightSource } from './lights.js';

@@ -10,7 +10,7 @@
  */
 import { vec3, dot, copy, scaleAndAdd, reflect } from './vec3.js';
 import { Ray } from './ray.js';
-import { EPSILON } from './shapes/sphere.js';
+import { EPSILON } from './constants.js';
 
 const DEG = 180 / Math.PI;
 

@@ -3,7 +3,7 @@
  */
 import { toVec3, vec3, set } from '../vec3.js';
 import { shapeOptions } from '../material.js';
-import { EPSILON } from './sphere.js';
+import { EPSILON } from '../constants.js';
 
 const AXES = ['x', 'y', 'z'];
 

@@ -3,7 +3,7 @@
  */
 import { toVec3, toUnit, vec3, copy } from '../vec3.js';
 import { shapeOptions } from '../material.js';
-import { EPSILON } from './sphere.js';
+import { EPSILON } from '../constants.js';
 
 export class Plane {
   /**

@@ -5,9 +5,10 @@
 import { toVec3, vec3, sub, normalize } from '../vec3.js';
 import { finiteNumber } from '../check.js';
 import { shapeOptions } from '../material.js';
+import { EPSILON } from '../constants.js';
 
-/** Hits closer than this are the surface the ray starts on, not a new hit. */
-export const EPSILON = 1e-6;
+// Re-exported: EPSILON's public path (lib/index.js) has always been this module.
+export { EPSILON };
 
 /**
  * r² − d² (or discriminant / 4A) this small counts as tangent, relative to
