@@ -7,8 +7,7 @@
 import { toVec3, vec3, normalize } from './vec3.js';
 import { finiteNumber, numberInRange, positiveInteger, checkOptions } from './check.js';
 import { Ray } from './ray.js';
-
-const DEG = Math.PI / 180;
+import { RAD_PER_DEG } from './constants.js';
 
 /** The camera size limit: at most 16384 pixels a side (a canvas's limit) and 4096 × 4096 pixels in all (a 64 MB frame). */
 export const MAX_CAMERA_SIDE = 16384;
@@ -47,12 +46,12 @@ export class Camera {
 
   /** right, up and forward unit vectors, and the image plane's half-size at distance 1. */
   #setBasis() {
-    const cy = Math.cos(this.yaw * DEG), sy = Math.sin(this.yaw * DEG);
-    const cp = Math.cos(this.pitch * DEG), sp = Math.sin(this.pitch * DEG);
+    const cy = Math.cos(this.yaw * RAD_PER_DEG), sy = Math.sin(this.yaw * RAD_PER_DEG);
+    const cp = Math.cos(this.pitch * RAD_PER_DEG), sp = Math.sin(this.pitch * RAD_PER_DEG);
     this.right = vec3(cy, 0, sy);
     this.up = vec3(-sy * sp, cp, cy * sp);
     this.forward = vec3(sy * cp, sp, -cy * cp);
-    this.halfHeight = Math.tan((this.fov * DEG) / 2);
+    this.halfHeight = Math.tan((this.fov * RAD_PER_DEG) / 2);
     this.halfWidth = (this.halfHeight * this.width) / this.height;
   }
 
@@ -82,5 +81,5 @@ export class Camera {
 
 /** The horizontal and vertical angles (degrees) of a unit direction. */
 export function angles(d) {
-  return { h: Math.atan2(d.x, -d.z) / DEG, v: Math.asin(Math.max(-1, Math.min(1, d.y))) / DEG };
+  return { h: Math.atan2(d.x, -d.z) / RAD_PER_DEG, v: Math.asin(Math.max(-1, Math.min(1, d.y))) / RAD_PER_DEG };
 }

@@ -4,3 +4,9 @@
 
 /** Hits closer than this are the surface the ray starts on, not a new hit. */
 export const EPSILON = 1e-6;
+
+/** Multiply degrees by this to get radians (π/180). */
+export const RAD_PER_DEG = Math.PI / 180;
+
+/** Multiply radians by this to get degrees (180/π). */
+export const DEG_PER_RAD = 180 / Math.PI;

@@ -13,6 +13,7 @@ import { angles } from './camera.js';
 import { intersectQuadratic, Sphere } from './shapes/sphere.js';
 import { nearestHit } from './trace.js';
 import { renderPixel } from './render.js';
+import { DEG_PER_RAD } from './constants.js';
 
 /** Every mode, in the order a menu shows them, with one line for students. */
 export const MODES = [
@@ -82,13 +83,13 @@ const SHADERS = {
 
   h(scene, camera, x, y, target) {
     primaryRay(camera, x, y);
-    const h = Math.atan2(_ray.direction.x, -_ray.direction.z) * DEG;
+    const h = Math.atan2(_ray.direction.x, -_ray.direction.z) * DEG_PER_RAD;
     put(target, camera, x, y, angleColor(h, angleRange(camera).h, _rgb));
   },
 
   v(scene, camera, x, y, target) {
     primaryRay(camera, x, y);
-    const v = Math.asin(Math.max(-1, Math.min(1, _ray.direction.y))) * DEG;
+    const v = Math.asin(Math.max(-1, Math.min(1, _ray.direction.y))) * DEG_PER_RAD;
     put(target, camera, x, y, angleColor(v, angleRange(camera).v, _rgb));
   },
 
@@ -110,8 +111,6 @@ const SHADERS = {
     put(target, camera, x, y, ramp(DEPTH_RAMP, (_hit.t - near) / (far - near), _rgb));
   },
 };
-
-const DEG = 180 / Math.PI;
 
 /** The camera's ray through pixel (x, y) into the scratch ray (exactly the renderer's). */
 function primaryRay(camera, x, y) {

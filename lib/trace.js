@@ -10,9 +10,7 @@
  */
 import { vec3, dot, copy, scaleAndAdd, reflect } from './vec3.js';
 import { Ray } from './ray.js';
-import { EPSILON } from './constants.js';
-
-const DEG = 180 / Math.PI;
+import { EPSILON, DEG_PER_RAD } from './constants.js';
 
 /**
  * Traces `ray` through `scene`; writes its colour into `out` and returns it.
@@ -201,7 +199,7 @@ function hitRecord(steps, object, f, ray, inside, scene) {
   steps.hit = {
     object, index: scene.objects.indexOf(object), t: f.hit.t,
     point: copy(vec3(), f.point), normal: copy(vec3(), f.normal), inside,
-    incidence: Math.acos(cos) * DEG, lights: [],
+    incidence: Math.acos(cos) * DEG_PER_RAD, lights: [],
     emission: [...object.material.emission],
     ambient: object.material.color.map((c) => c * scene.ambient),
     reflection: null, refraction: null, fresnel: null,
