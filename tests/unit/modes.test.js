@@ -198,10 +198,11 @@ describe("'normals' and 'depth' modes", () => {
 
 describe('modeLegend', () => {
   it('gives a title, a note and stops with a label and a #hex colour for every mode', () => {
-    for (const { name } of MODES) {
+    for (const { name, label } of MODES) {
       const legend = modeLegend(name, scene, camera);
-      expect(legend.title).toBeTruthy();
-      expect(legend.note).toBeTruthy();
+      expect(legend.title).toBe(label);
+      expect(typeof legend.note).toBe('string');
+      expect(legend.note, `${name}'s note is a sentence`).toMatch(/^\S.{20,}\.$/);
       expect(['gradient', 'swatches']).toContain(legend.kind);
       expect(legend.stops.length).toBeGreaterThanOrEqual(2);
       for (const stop of legend.stops) {

@@ -113,8 +113,23 @@ describe('tangent, miss, behind, inside', () => {
   });
 
   it('t is the smallest root greater than EPSILON', () => {
-    expect(EPSILON).toBeGreaterThan(0);
-    expect(EPSILON).toBeLessThan(1e-3);
+    // A sphere of radius 5 whose near surface is at z = 0; the ray goes −z from just in front of it.
+    const s = new Sphere([0, 0, -5], 5);
+    // t0 = EPSILON / 3 is the surface the ray starts on: t skips it for the far side, t1 ≈ 10.
+    const onSurface = new Ray([0, 0, EPSILON / 3], [0, 0, -1]);
+    for (const r of both(onSurface, s)) {
+      expect(r.t0).toBeCloseTo(EPSILON / 3, 9);
+      expect(r.t).toBe(r.t1);
+      expect(r.t).toBeCloseTo(10, 5);
+    }
+    expect(s.hit(onSurface)).toBeCloseTo(10, 5);
+    // t0 = 3·EPSILON is already a new hit: t is t0.
+    const justAhead = new Ray([0, 0, 3 * EPSILON], [0, 0, -1]);
+    for (const r of both(justAhead, s)) {
+      expect(r.t).toBe(r.t0);
+      expect(r.t).toBeCloseTo(3 * EPSILON, 9);
+    }
+    expect(s.hit(justAhead)).toBeCloseTo(3 * EPSILON, 9);
   });
 
   it('writes into the given target and returns it', () => {
