@@ -8,8 +8,11 @@
  *   (b) full shading: mirrors, glass with Fresnel, specular, maxDepth 5.
  * Then the same at 160×120, a teaching resolution; the 640×480 frame of (a)
  * traced by a ProgressiveRenderer in 8 ms steps until done, beside render();
- * and the heap before and after ten frames (per-pixel work should allocate
- * nothing).
+ * the heap before and after ten frames (per-pixel work should allocate
+ * nothing); and bench/reference.c, the work of (a) in C, compiled with
+ * `cc -O3 -march=native` when a compiler is present (else it says skipped),
+ * timed alternately with render() and compared byte for byte: it prints both
+ * and the ratio (today's figures: docs/performance.md).
  *
  * Performance (Node 20, 2 cores, medians; five runs over one afternoon with
  * load averages of 2–4 from the machine's neighbours). The machine itself
