@@ -11,6 +11,7 @@ expectQuietConsole(test);
 const PANEL = ['[data-inspector] [data-answer]', '[data-inspector] .rt-color'];
 /** Each sketch and what explains its selected pixel: the diagram, else the inspector's answer line and colour. */
 const SKETCHES = [
+  ['00-light-or-eye', PANEL],
   ['01-rays-through-pixels', ['#diagram canvas']],
   ['02-the-quadratic', ['#left canvas']],
   ['03-the-geometric-approach', ['#diagram canvas']],
