@@ -7,6 +7,7 @@
  */
 import { Sphere } from './shapes/sphere.js';
 import { Box } from './shapes/box.js';
+import { clamp } from './numbers.js';
 
 /** Pixels of margin around every rectangle (rounding, the tangent band). */
 const MARGIN = 1;
@@ -81,10 +82,6 @@ function toPixelY(sy, camera) {
 
 function setAll(out, camera) {
   out.x0 = 0; out.y0 = 0; out.x1 = camera.width - 1; out.y1 = camera.height - 1;
-}
-
-function clamp(v, lo, hi) {
-  return Math.min(hi, Math.max(lo, v));
 }
 
 /** Tile size (pixels) of the candidate grid. */
