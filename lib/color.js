@@ -3,6 +3,7 @@
  * CSS-style string: '#ff5160', '#f56', 'rgb(255, 81, 96)' or a colour name.
  */
 import { show } from './check.js';
+import { clamp } from './numbers.js';
 
 /**
  * The largest colour channel (a light's, say): products of a few such numbers
@@ -56,14 +57,14 @@ function parseString(text, field) {
   throw new TypeError(`${field} must be a colour like '#ff5160', 'rgb(255, 81, 96)' or 'pink', got ${show(text)}`);
 }
 
-/** '#rrggbb' for 0–255 channel values. */
+/** '#rrggbb' for 0–255 channel values (clamped, so the answer is always six digits). */
 export function toHex([r, g, b]) {
-  return '#' + [r, g, b].map((c) => Math.round(c).toString(16).padStart(2, '0')).join('');
+  return '#' + [r, g, b].map((c) => Math.round(clamp(c, 0, 255)).toString(16).padStart(2, '0')).join('');
 }
 
 /** '#rrggbb' for 0–1 channel values (clamped). */
 export function colorToHex(rgb) {
-  return toHex(rgb.map((c) => Math.min(1, Math.max(0, c)) * 255));
+  return toHex(rgb.map((c) => c * 255));
 }
 
 /**

@@ -14,6 +14,7 @@ import { intersectQuadratic, Sphere } from './shapes/sphere.js';
 import { nearestHit } from './trace.js';
 import { renderPixel } from './render.js';
 import { DEG_PER_RAD } from './constants.js';
+import { toHex, colorToHex } from './color.js';
 
 /** Every mode, in the order a menu shows them, with one line for students. */
 export const MODES = [
@@ -268,9 +269,9 @@ const LEGENDS = {
   shaded(scene) {
     const stops = scene.objects.map((o, i) => {
       const m = o.material, emits = m.isEmissive;
-      return { value: i, label: (o.name || `object ${i}`) + (emits ? ' (light)' : ''), color: rgbHex((emits ? m.emission : m.color).map((c) => Math.min(1, c) * 255)) };
+      return { value: i, label: (o.name || `object ${i}`) + (emits ? ' (light)' : ''), color: colorToHex(emits ? m.emission : m.color) };
     });
-    stops.push({ value: null, label: 'background', color: rgbHex(scene.background.map((c) => Math.min(1, c) * 255)) });
+    stops.push({ value: null, label: 'background', color: colorToHex(scene.background) });
     return { kind: 'swatches', stops };
   },
 
@@ -278,7 +279,7 @@ const LEGENDS = {
     const stops = [];
     for (const value of [-1e6, -1e4, -100, -1, 0, 1, 100, 1e4, 1e6]) {
       const label = value === 0 ? '0 tangent' : (value < 0 ? '−' : '+') + powerOfTen(Math.abs(value));
-      stops.push({ value, label, color: rgbHex(discriminantColor(value, value === 0 ? 1 : 2)) });
+      stops.push({ value, label, color: toHex(discriminantColor(value, value === 0 ? 1 : 2)) });
     }
     return {
       kind: 'gradient', stops,
@@ -289,7 +290,7 @@ const LEGENDS = {
   roots() {
     return {
       kind: 'swatches',
-      stops: ['0 roots: no hit', '1 root: tangent', '2 roots: in and out'].map((label, value) => ({ value, label, color: rgbHex(ROOT_RGB[value]) })),
+      stops: ['0 roots: no hit', '1 root: tangent', '2 roots: in and out'].map((label, value) => ({ value, label, color: toHex(ROOT_RGB[value]) })),
     };
   },
 
@@ -304,8 +305,8 @@ const LEGENDS = {
   normals() {
     /** @type {Array<[string, number, number, number]>} */
     const n = [['+x right', 1, 0, 0], ['−x left', -1, 0, 0], ['+y up', 0, 1, 0], ['−y down', 0, -1, 0], ['+z toward the eye', 0, 0, 1], ['−z away', 0, 0, -1]];
-    const stops = n.map(([label, x, y, z]) => ({ value: [x, y, z], label, color: rgbHex([(x + 1) * 127.5, (y + 1) * 127.5, (z + 1) * 127.5]) }));
-    stops.push({ value: null, label: 'no hit', color: rgbHex(NO_HIT_RGB) });
+    const stops = n.map(([label, x, y, z]) => ({ value: [x, y, z], label, color: toHex([(x + 1) * 127.5, (y + 1) * 127.5, (z + 1) * 127.5]) }));
+    stops.push({ value: null, label: 'no hit', color: toHex(NO_HIT_RGB) });
     return { kind: 'swatches', stops, note: 'The normal N where the ray hits, as a colour: (N + 1) / 2 → (red, green, blue).' };
   },
 
@@ -313,7 +314,7 @@ const LEGENDS = {
     const { near, far } = depthRange(scene, camera);
     const stops = [0, 0.25, 0.5, 0.75, 1].map((s) => {
       const value = near + s * (far - near);
-      return { value, label: `t = ${round(value)}${s === 1 ? '+' : ''}`, color: rgbHex(ramp(DEPTH_RAMP, s)) };
+      return { value, label: `t = ${round(value)}${s === 1 ? '+' : ''}`, color: toHex(ramp(DEPTH_RAMP, s)) };
     });
     return { kind: 'gradient', stops, note: `t, the distance along the ray to the first hit: bright at t = ${round(near)}, dark at t = ${round(far)} and beyond. Black: no hit.` };
   },
@@ -323,7 +324,7 @@ function angleLegend(range, minus, plus, note) {
   const stops = [-1, -0.5, 0, 0.5, 1].map((s) => ({
     value: s * range,
     label: `${s * range > 0 ? '+' : s * range < 0 ? '−' : ''}${Math.abs(s * range)}°${s === -1 ? ' ' + minus : s === 1 ? ' ' + plus : ''}`,
-    color: rgbHex(angleColor(s * range, range)),
+    color: toHex(angleColor(s * range, range)),
   }));
   return { kind: 'gradient', stops, note };
 }
@@ -354,10 +355,6 @@ function put(target, camera, x, y, rgb) {
   target[i + 1] = rgb[1];
   target[i + 2] = rgb[2];
   target[i + 3] = 255;
-}
-
-function rgbHex(rgb) {
-  return '#' + rgb.map((c) => Math.round(Math.min(255, Math.max(0, c))).toString(16).padStart(2, '0')).join('');
 }
 
 const SUPERSCRIPT = { 0: '⁰', 1: '¹', 2: '²', 3: '³', 4: '⁴', 5: '⁵', 6: '⁶', 7: '⁷', 8: '⁸', 9: '⁹' };

@@ -53,6 +53,7 @@ describe('hex', () => {
   it('toHex of 0–255 channels, colorToHex of 0–1 channels (clamped)', () => {
     expect(toHex([255, 81, 96])).toBe('#ff5160');
     expect(toHex([0, 0, 0])).toBe('#000000');
+    expect(toHex([300, -5, 127.6])).toBe('#ff0080'); // out of range: clamped, still six digits
     expect(colorToHex([1, 0, 0])).toBe('#ff0000');
     expect(colorToHex([2, -1, 0.5])).toBe('#ff0080');
     expect(colorToHex(toColor('#ff5160'))).toBe('#ff5160');
