@@ -23,7 +23,12 @@ import { show } from './check.js';
 
 /** The picture the checks look at is at most this many pixels wide (smaller: faster). */
 const SAMPLE_MAX_WIDTH = 320;
-/** Shapes bigger than this (a ground sphere, say) are not part of a car body. */
+/**
+ * Shapes bigger than this (a ground sphere, say) are not part of a car body.
+ * Not modes.js's isHuge (a sphere of radius ≥ 100 stands for a ground): this
+ * one also measures boxes, and asks a smaller question — could this be a part
+ * of a car a few units wide? Anything 50 across is scenery.
+ */
 const HUGE = 50;
 
 /* ======================= Task 1: the traffic signal ======================= */

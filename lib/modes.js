@@ -244,7 +244,9 @@ export function depthRange(scene, camera) {
 
 /**
  * True for a sphere so big it stands for a ground or a wall (radius ≥ 100):
- * depth scales and diagrams leave its full size out.
+ * depth scales and diagrams leave its full size out. (homework.js's HUGE asks
+ * "could this be part of a car?" and rays3d.js's HUGE_RADIUS "draw it as a
+ * patch of ground?": other questions, other thresholds.)
  */
 export function isHuge(object) {
   return object instanceof Sphere && object.radius >= 100;

@@ -16,7 +16,11 @@ import { nearestHit } from './trace.js';
 import { Ray } from './ray.js';
 import { show } from './check.js';
 
-/** Spheres bigger than this are drawn as a patch of ground, not a ball. */
+/**
+ * Spheres bigger than this are drawn as a patch of ground, not a ball. Higher
+ * than modes.js's isHuge (radius ≥ 100): in the 3D view a sphere up to this
+ * size is still seen whole, as a ball, and frames the view.
+ */
 export const HUGE_RADIUS = 1000;
 
 /**
