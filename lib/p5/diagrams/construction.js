@@ -32,12 +32,28 @@ export function drawGeometricConstruction(p, o) {
     placeholder(p, content, 'Click a pixel to see L, tca, d and thc for its ray.');
     return closePanel(p);
   }
-  const g = result ?? intersectGeometric(ray, sphere);
+  const f = construction(result ?? intersectGeometric(ray, sphere), sphere, ray);
+  const area = drawFormulas(p, content, f);
+  const m = constructionMapping(f.tca, f.d, f.r, area);
+  clip(p, area);
+  const marks = drawFigure(p, m, area, sphere, f);
+  placeLabels(p, m, area, f, marks);
+  unclip(p);
+  closePanel(p);
+}
+
+/** The numbers of the construction: the route's result, d, whether the ray hits, starts inside, and its roots to mark. */
+function construction(g, sphere, ray) {
   const r = sphere.radius, tca = g.tca, d = Math.sqrt(Math.max(0, g.d2));
   const hit = g.roots > 0, inside = g.d2 + tca * tca < r * r; // |L| < r: the ray starts inside
   const L = g.L ?? { x: sphere.center.x - ray.origin.x, y: sphere.center.y - ray.origin.y, z: sphere.center.z - ray.origin.z };
+  const t0 = hit ? g.t0 : null, t1 = hit ? g.t1 : null;
+  const roots = !hit ? [] : g.roots === 1 ? [[t0, 't0 = t1']] : [[t0, 't0'], [t1, 't1']];
+  return { g, r, tca, d, hit, inside, L, t0, t1, roots };
+}
 
-  // the formulas with this ray's numbers
+/** The formulas with this ray's numbers, one a line at the top of `content`; returns the area left under them. */
+function drawFormulas(p, content, { g, r, tca, d, hit, inside, L }) {
   const lines = [
     [`L = C − Ro = (${fmt(L.x)}, ${fmt(L.y)}, ${fmt(L.z)})`, INK],
     [`tca = L·Rd = ${fmt(tca)}${tca < 0 ? (inside ? '  (< 0, but Ro is inside: fine)' : '  (< 0: C is behind Ro)') : ''}`, INK],
@@ -48,12 +64,15 @@ export function drawGeometricConstruction(p, o) {
   const lineHeight = 18;
   lines.forEach(([text, color], i) => label(p, text, content.x + 8, content.y + 8 + i * lineHeight, { color, align: 'left', halo: false, size: 13 }));
   const top = content.y + lines.length * lineHeight + 4;
-  const area = { x: content.x, y: top, w: content.w, h: content.y + content.h - top };
+  return { x: content.x, y: top, w: content.w, h: content.y + content.h - top };
+}
 
-  // 2D frame: Ro at (0, 0), the ray along +u, C above it at (tca, d).
-  const t0 = hit ? g.t0 : null, t1 = hit ? g.t1 : null;
-  const m = constructionMapping(tca, d, r, area);
-  clip(p, area);
+/**
+ * The figure, in a 2D frame with Ro at (0, 0), the ray along +u and C above it
+ * at (tca, d): the sphere, the ray and Rd, L, d, r, thc and tca, the roots.
+ * Returns the screen points the labels go around.
+ */
+function drawFigure(p, m, area, sphere, { g, r, tca, d, hit, t0, roots }) {
   const Ro = { u: 0, v: 0 }, C = { u: tca, v: d }, P = { u: tca, v: 0 };
   const x0 = m.sx(0), y0 = m.sy(0);
 
@@ -94,7 +113,6 @@ export function drawGeometricConstruction(p, o) {
   dimension(p, x0, px, y0 + 58, null, CONSTRUCT);
   if (m.breakX !== null) breakMark(p, m.breakX, y0 + 58);
 
-  const roots = !hit ? [] : g.roots === 1 ? [[t0, 't0 = t1']] : [[t0, 't0'], [t1, 't1']];
   for (const [t] of roots) {
     const chosen = g.t !== null && t === g.t;
     dot(p, m.sx(t), y0, chosen ? 6 : 5, t <= 0 ? MUTED : RAY);
@@ -102,9 +120,15 @@ export function drawGeometricConstruction(p, o) {
   }
   dot(p, x0, y0, 6, INK);
   dot(p, cx, cy, 6, INK);
+  return { x0, y0, cx, cy, px, rEnd };
+}
 
-  // The labels, most important first: each takes the first of its places
-  // that is free; L and Rd are left out when no place is (the formulas above say them).
+/**
+ * The figure's labels, most important first: each takes the first of its
+ * places that is free; L and Rd are left out when no place is (the formulas
+ * above say them).
+ */
+function placeLabels(p, m, area, { g, r, tca, d, hit, t0, roots }, { x0, y0, cx, cy, px, rEnd }) {
   const labels = labelPlacer(p, area);
   for (const [x, y] of [[x0, y0], [cx, cy]]) labels.keepClear(x - 5, y - 5, 10, 10);
   for (const [t] of roots) labels.keepClear(m.sx(t) - 8, y0 - 8, 16, 16);
@@ -144,8 +168,6 @@ export function drawGeometricConstruction(p, o) {
   };
   labels.put('L', [along(0.3, 14), along(0.5, 14), along(0.7, 14), along(0.3, -14), along(0.5, -14), along(0.15, 14)], { color: CONSTRUCT, bold: true, size: 16 }, { optional: true });
   labels.put('Rd', [[x0 + 34, y0 - 14], [x0 + 34, y0 + 16], [x0 + 20, y0 - 14], [x0 + 20, y0 + 16]], { color: RAY, bold: true }, { optional: true });
-  unclip(p);
-  closePanel(p);
 }
 
 /**
