@@ -24,6 +24,19 @@ export function drawParabola(p, o) {
     placeholder(p, content, 'Click a pixel to see the quadratic of its ray.');
     return closePanel(p);
   }
+  const curve = quadratic(q, A, B, C);
+  const area = drawFormulas(p, content, curve);
+  const m = plotMapping(curve, area);
+  clip(p, area);
+  drawAxes(p, m, area, curve);
+  drawCurve(p, m, area, curve);
+  drawVertexAndRoots(p, m, curve);
+  unclip(p);
+  closePanel(p);
+}
+
+/** The quadratic's numbers: discriminant, roots (given, else solved), vertex (tv, fv) and f itself. */
+function quadratic(q, A, B, C) {
   const discriminant = B * B - 4 * A * C;
   const roots = q.roots ?? (discriminant > 0 ? 2 : discriminant === 0 ? 1 : 0);
   let t0 = q.t0 ?? null, t1 = q.t1 ?? null;
@@ -33,16 +46,22 @@ export function drawParabola(p, o) {
   }
   const tv = -B / (2 * A), fv = C - (B * B) / (4 * A);
   const f = (t) => (A * t + B) * t + C;
+  return { A, B, C, discriminant, roots, t0, t1, tv, fv, f };
+}
 
+/** f(t) and B² − 4AC with what it means, at the top of `content`; returns the plot's area under them. */
+function drawFormulas(p, content, { A, B, C, discriminant, roots }) {
   const meaning = roots === 2 ? ['> 0: two roots, the ray goes in and out', RAY] : roots === 1 ? ['= 0: one root, the ray just touches', LIT] : ['< 0: no real root, no hit', SHADOW];
   const lines = [
     [`f(t) = ${fmt(A, 2)}t² ${sign(B)} ${fmt(Math.abs(B), 2)}t ${sign(C)} ${fmt(Math.abs(C), 2)}`, INK],
     [`B² − 4AC = ${fmt(discriminant)} ${meaning[0]}`, meaning[1]],
   ];
   lines.forEach(([text, color], i) => label(p, text, content.x + 8, content.y + 10 + i * 19, { color, align: 'left', halo: false }));
-  const area = { x: content.x + 8, y: content.y + 2 * 19 + 14, w: content.w - 16, h: content.h - 2 * 19 - 14 - 24 };
+  return { x: content.x + 8, y: content.y + 2 * 19 + 14, w: content.w - 16, h: content.h - 2 * 19 - 14 - 24 };
+}
 
-  // t range: the roots with room either side, else around the vertex
+/** The t range (the roots with room either side, else around the vertex) and f's, mapped onto `area`. */
+function plotMapping({ A, roots, t0, t1, tv, fv, f }, area) {
   let lo, hi;
   if (roots === 2) {
     const pad = Math.max((t1 - t0) * 0.6, 1e-3 * Math.max(1, Math.abs(tv)));
@@ -59,8 +78,11 @@ export function drawParabola(p, o) {
   const sx = (t) => area.x + ((t - lo) / (hi - lo)) * area.w;
   const plotH = area.h - 34; // room under the curve for the vertex's label
   const sy = (v) => area.y + plotH - ((v - fmin) / (fmax - fmin)) * plotH;
+  return { lo, hi, fmin, sx, sy };
+}
 
-  clip(p, area);
+/** The shaded stretch inside the sphere (f < 0), the t axis with its ticks, and the eye at t = 0. */
+function drawAxes(p, { lo, hi, fmin, sx, sy }, area, { roots, t0, t1 }) {
   // f < 0 between the roots: the part of the ray inside the sphere
   if (roots === 2) {
     p.push(); p.noStroke(); p.fill(194, 24, 91, 28);
@@ -68,7 +90,6 @@ export function drawParabola(p, o) {
     p.pop();
     label(p, 'f(t) < 0: inside', (sx(t0) + sx(t1)) / 2, sy(0) + 16, { color: RAY, size: 12 });
   }
-  // axes
   p.push();
   p.stroke(INK); p.strokeWeight(2);
   p.line(area.x, sy(0), area.x + area.w, sy(0));
@@ -80,8 +101,10 @@ export function drawParabola(p, o) {
     label(p, fmt(t, Math.abs(hi - lo) < 5 ? 1 : 0), sx(t), sy(0) - 10, { color: MUTED, size: 11 });
   }
   label(p, 't →', area.x + area.w - 6, sy(0) - 12, { color: INK, align: 'right', bold: true });
+}
 
-  // the curve
+/** The parabola itself, 160 segments, held just outside the plot. */
+function drawCurve(p, { lo, hi, sx, sy }, area, { f }) {
   p.push();
   p.noFill(); p.stroke(CONSTRUCT); p.strokeWeight(3);
   p.beginShape();
@@ -91,8 +114,10 @@ export function drawParabola(p, o) {
   }
   p.endShape();
   p.pop();
+}
 
-  // vertex and roots
+/** The vertex and the roots, marked and labelled; a root at t ≤ 0 is behind the eye. */
+function drawVertexAndRoots(p, { sx, sy }, { roots, t0, t1, tv, fv }) {
   dot(p, sx(tv), sy(fv), 5, CONSTRUCT);
   label(p, `vertex: t = −B/2A = ${fmt(tv)}, f = ${fmt(fv)}`, sx(tv), sy(fv) + 18, { color: CONSTRUCT, size: 12, bold: true });
   if (roots > 0) {
@@ -102,6 +127,4 @@ export function drawParabola(p, o) {
       label(p, `${name} = ${fmt(t)}${t <= 0 ? ' (behind)' : ''}`, sx(t), sy(0) - 18, { color: t > 0 ? RAY : MUTED, bold: true });
     }
   }
-  unclip(p);
-  closePanel(p);
 }
