@@ -15,7 +15,7 @@
 import { PhotonTracer } from '../photons.js';
 import { checkOptions, positiveInteger, show } from '../check.js';
 import { registerView } from './page-state.js';
-import { useStyle, element } from './dom.js';
+import { useStyle, element, resolveParent, sketchNode } from './dom.js';
 import { RAY_COLORS } from './scene-view.js';
 
 const OPTIONS = ['scene', 'camera', 'seed', 'eyeRadius', 'photons', 'samplePaths', 'scale', 'parent', 'label', 'budgetMs', 'link', 'sceneView'];
@@ -121,7 +121,7 @@ export class PhotonView {
     const more = element('button', { type: 'button', class: 'rt-button', 'data-photons-more': '' }, `Send ${this.photonsPerRun.toLocaleString('en-US')} more`);
     more.addEventListener('click', () => this.more());
     this.figure = element('figure', { class: 'rt-view rt-photon-view' }, label ? element('figcaption', { class: 'rt-label' }, label) : null, c, this.countText, more);
-    resolveParent(parent, p).append(this.figure);
+    resolveParent(parent, sketchNode(p)).append(this.figure);
     c.addEventListener('pointerdown', (e) => {
       if (!this.link) return;
       const box = c.getBoundingClientRect();
@@ -137,16 +137,4 @@ export function percent(share) {
   if (share === 0) return '0 %';
   const digits = Math.max(1, Math.min(4, 1 - Math.floor(Math.log10(share * 100))));
   return `${(share * 100).toFixed(digits)} %`;
-}
-
-function resolveParent(parent, p) {
-  if (parent == null) return p?._userNode instanceof HTMLElement ? p._userNode : (document.querySelector('main') ?? document.body);
-  if (typeof parent === 'string') {
-    const found = document.getElementById(parent) ?? document.querySelector(parent);
-    if (!found) throw new TypeError(`parent: no element with id or selector ${show(parent)}`);
-    return found;
-  }
-  if (parent.elt instanceof HTMLElement) return parent.elt;
-  if (parent instanceof HTMLElement) return parent;
-  throw new TypeError(`parent must be an element, its id or a p5.Element, got ${show(parent)}`);
 }
