@@ -66,7 +66,7 @@ test('on a 1920 px screen the text, the pictures and the diagrams are bigger tha
       diagram: diagram ? (await page.locator(diagram).boundingBox()).width : 0,
     };
   };
-  for (const [file, diagram] of [['03-the-geometric-approach', '#diagram canvas'], ['06-lights-shadows-reflections'], ['05-value-boxes']]) {
+  for (const [file, diagram] of [['03-the-geometric-approach', '#diagram > canvas'], ['06-lights-shadows-reflections'], ['05-value-boxes']]) {
     await page.setViewportSize({ width: 1280, height: 900 });
     const usual = await measure(file, diagram);
     expect(usual.rem).toBe(16);
