@@ -193,6 +193,11 @@ describe("'normals' and 'depth' modes", () => {
   it('treats a radius of 100 and more as a ground or a wall', () => {
     expect(isHuge(scene.objects[0])).toBe(true);
     expect(isHuge(scene.objects[1])).toBe(false);
+    // the threshold itself: 100 is huge, just under it is not; only spheres are
+    expect(isHuge(new Sphere([0, 0, 0], 100))).toBe(true);
+    expect(isHuge(new Sphere([0, 0, 0], 99.9))).toBe(false);
+    expect(isHuge(new Box([-500, -1, -500], [500, 0, 500]))).toBe(false);
+    expect(isHuge(new Plane([0, 0, 0], [0, 1, 0]))).toBe(false);
   });
 });
 
