@@ -1,10 +1,12 @@
 import { defineConfig } from 'vite';
 import { readdirSync } from 'node:fs';
 import { resolve } from 'node:path';
+import { includeText, oneFileInDev, apiReference, apiLine } from './scripts/site-plugins.js';
 import { p5OfflineI18n } from './scripts/p5-offline-i18n.js';
 import { reloadItsPagesOnly, syntaxErrorsWhereTheyAre } from './scripts/vite-live-coding.js';
 
-// Every page is an entry of the static build: the gallery and each sketch.
+// Every page is an entry of the static build: the gallery, the web editor's
+// steps and each sketch (the API reference is made by a plugin).
 const sketchPages = readdirSync('sketches')
   .filter((file) => file.endsWith('.html'))
   .map((file) => resolve('sketches', file));
@@ -18,12 +20,14 @@ export default defineConfig({
   base: './',
   // p5's translations from node_modules, not a CDN (scripts/p5-offline-i18n.js): in the build and the dev server's bundle of p5.
   // A saved sketch reloads only the pages running it; a syntax error is shown at its line (scripts/vite-live-coding.js).
-  plugins: [p5OfflineI18n(), reloadItsPagesOnly(), syntaxErrorsWhereTheyAre()],
+  // The web editor's page, its one-file build, the API reference and each lesson's
+  // "API:" line: scripts/site-plugins.js.
+  plugins: [p5OfflineI18n(), reloadItsPagesOnly(), syntaxErrorsWhereTheyAre(), includeText(), oneFileInDev(), apiReference(), apiLine()],
   optimizeDeps: { rolldownOptions: { plugins: [p5OfflineI18n()] } },
   build: {
     target: 'es2022',
     chunkSizeWarningLimit: 1500, // p5 itself is 1.3 MB: one library, loaded once per page
-    rollupOptions: { input: [resolve('index.html'), ...sketchPages] },
+    rollupOptions: { input: [resolve('index.html'), resolve('web-editor.html'), ...sketchPages] },
   },
   worker: { format: 'es' },
   preview: { headers: isolation },

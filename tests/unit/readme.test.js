@@ -43,3 +43,11 @@ describe('sketches/sketch.css', () => {
     expect(closedAt).toBe(css.length - 1);
   });
 });
+
+describe('README: the p5 web editor', () => {
+  it('shows the starter sketch the browser tests run, as it is, and the <script> line', () => {
+    const readme = readFileSync('README.md', 'utf8');
+    expect(readme).toContain('```js\n' + readFileSync('examples/web-editor/sketch.js', 'utf8') + '```');
+    expect(readme).toContain('<script src="raytracing-sketchbook.js"></script>');
+  });
+});

@@ -1,0 +1,21 @@
+/**
+ * npm run build: the static site in dist/ (the gallery, the web editor's
+ * steps, every sketch, the API reference in dist/api/), the one-file builds
+ * beside it (dist/raytracing-sketchbook.js, a classic script defining RT, and
+ * dist/raytracing-sketchbook.mjs) and the package's types (types/).
+ */
+import { spawnSync } from 'node:child_process';
+
+const steps = [
+  ['the site', ['node_modules/vite/bin/vite.js', 'build']],
+  ['the one-file builds', ['node_modules/vite/bin/vite.js', 'build', '-c', 'vite.onefile.config.js']],
+  ['the types', ['scripts/types.js']],
+];
+for (const [what, args] of steps) {
+  console.log(`\n— ${what}`);
+  const { status } = spawnSync(process.execPath, args, { stdio: 'inherit' });
+  if (status !== 0) {
+    console.error(`npm run build: ${what} failed`);
+    process.exit(status ?? 1);
+  }
+}

@@ -1,0 +1,85 @@
+/**
+ * Vite plugins of the site (vite.config.js), the same in `npm start` and in
+ * `npm run build`:
+ * - includeText: a page shows a file of the repository as text
+ *   (`<!-- text of examples/web-editor/sketch.js -->`), escaped, so what the
+ *   page tells a teacher to paste is the file the browser tests run;
+ * - oneFileInDev: the dev server answers /raytracing-sketchbook.js and .mjs
+ *   with the one-file builds (npm run build writes them into dist/);
+ * - apiReference: /api/ is the API reference, generated from the JSDoc;
+ * - apiLine: under each lesson page, "API:" and the names its sketch uses,
+ *   linked into the reference.
+ */
+import { readFileSync } from 'node:fs';
+import { resolve } from 'node:path';
+import { build } from 'vite';
+import { apiReferenceHTML, namesUsedBy, apiLineHTML } from './api-reference.js';
+
+const escapeHTML = (text) => text.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
+
+export function includeText() {
+  return {
+    name: 'include-text',
+    transformIndexHtml(html) {
+      return html.replace(/<!-- text of ([\w./-]+) -->/g, (_, file) => escapeHTML(readFileSync(resolve(file), 'utf8')));
+    },
+  };
+}
+
+/** The one-file builds, made in memory once and again after a change to lib/. */
+export function oneFileInDev() {
+  let made = null;
+  const make = () => (made ??= build({ configFile: resolve('vite.onefile.config.js'), logLevel: 'warn', build: { write: false } })
+    .then((outputs) => new Map(outputs.flatMap((o) => o.output).map((chunk) => [chunk.fileName, chunk.code ?? chunk.source]))));
+  return {
+    name: 'one-file-in-dev',
+    apply: 'serve',
+    configureServer(server) {
+      server.watcher.on('change', (file) => { if (file.includes('/lib/')) made = null; });
+      server.middlewares.use(async (req, res, next) => {
+        const name = req.url.split('?')[0].replace(/^\//, '');
+        if (name !== 'raytracing-sketchbook.js' && name !== 'raytracing-sketchbook.mjs') return next();
+        try {
+          const files = await make();
+          res.setHeader('Content-Type', 'text/javascript; charset=utf-8');
+          res.end(files.get(name));
+        } catch (error) {
+          made = null;
+          next(error);
+        }
+      });
+    },
+  };
+}
+
+/** The API reference at /api/ (a page of its own in dist/api/index.html). */
+export function apiReference() {
+  return {
+    name: 'api-reference',
+    configureServer(server) {
+      server.middlewares.use((req, res, next) => {
+        const path = req.url.split('?')[0];
+        if (path !== '/api/' && path !== '/api/index.html' && path !== '/api') return next();
+        if (path === '/api') { res.statusCode = 301; res.setHeader('Location', '/api/'); return res.end(); }
+        res.setHeader('Content-Type', 'text/html; charset=utf-8');
+        res.end(apiReferenceHTML());
+      });
+    },
+    generateBundle() {
+      this.emitFile({ type: 'asset', fileName: 'api/index.html', source: apiReferenceHTML() });
+    },
+  };
+}
+
+/** The "API:" line of a lesson page, put before its sketch's <script>. */
+export function apiLine() {
+  return {
+    name: 'api-line',
+    transformIndexHtml(html, { filename }) {
+      const script = /<script type="module" src="\.\/(\d\d-[\w-]+\.js)"><\/script>/.exec(html);
+      if (!script || !/[\\/]sketches[\\/]\d\d-[\w-]+\.html$/.test(filename)) return html;
+      const line = apiLineHTML(namesUsedBy(readFileSync(resolve('sketches', script[1]), 'utf8')));
+      return html.replace(script[0], `${line}\n  ${script[0]}`);
+    },
+  };
+}

@@ -1,0 +1,105 @@
+// The one-file build, run the way the p5 web editor runs a sketch: a plain
+// index.html with p5's own <script>, raytracing-sketchbook.js after it and a
+// global-mode sketch.js (the files of examples/web-editor/), served by a plain
+// static server and opened from file://. The picture traces, a click
+// inspects, the console stays quiet, and both ways give the same picture.
+// Then the gallery's page that teaches it shows those same files.
+import { test, expect } from '@playwright/test';
+import { execFileSync } from 'node:child_process';
+import { copyFileSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { createServer } from 'node:http';
+import { tmpdir } from 'node:os';
+import { extname, join } from 'node:path';
+import { pathToFileURL } from 'node:url';
+import vm from 'node:vm';
+import { clickPixel, expectCanvasScreenshot, waitForDone, watchConsole } from './helpers.js';
+
+// One build and one server for the file's tests, in order, in one worker.
+test.describe.configure({ mode: 'default' });
+
+let folder, server, origin;
+
+test.beforeAll(async () => {
+  folder = mkdtempSync(join(tmpdir(), 'rt-web-editor-'));
+  execFileSync(process.execPath, ['node_modules/vite/bin/vite.js', 'build', '-c', 'vite.onefile.config.js', '--outDir', folder, '--logLevel', 'error'], { stdio: 'pipe' });
+  copyFileSync('node_modules/p5/lib/p5.min.js', join(folder, 'p5.min.js'));
+  for (const file of ['index.html', 'sketch.js']) copyFileSync(join('examples/web-editor', file), join(folder, file));
+  writeFileSync(join(folder, 'no-p5.html'), '<!doctype html><meta charset="utf-8"><link rel="icon" href="data:,"><script src="raytracing-sketchbook.js"></script>');
+
+  // A plain static server: the folder's files and nothing else.
+  const types = { '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8' };
+  server = createServer((req, res) => {
+    const name = new URL(req.url, 'http://x').pathname.slice(1) || 'index.html';
+    try {
+      const body = readFileSync(join(folder, name.replace(/[^\w.-]/g, '')));
+      res.writeHead(200, { 'Content-Type': types[extname(name)] ?? 'application/octet-stream' }).end(body);
+    } catch {
+      res.writeHead(404).end();
+    }
+  });
+  await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve)); // any free port: nobody else's
+  origin = `http://127.0.0.1:${server.address().port}`;
+});
+
+test.afterAll(async () => {
+  await new Promise((resolve) => server?.close(resolve));
+  if (folder) rmSync(folder, { recursive: true, force: true });
+});
+
+test('the build is one classic script: no import, no export, no import.meta; it defines RT', () => {
+  const code = readFileSync(join(folder, 'raytracing-sketchbook.js'), 'utf8');
+  expect(() => new vm.Script(code)).not.toThrow(); // a classic script: import, export and import.meta are syntax errors in one
+  expect(code).toMatch(/^var RT = /m);
+  const esm = readFileSync(join(folder, 'raytracing-sketchbook.mjs'), 'utf8');
+  expect(esm).toMatch(/^import \w+ from "p5";/m);
+  expect(esm).not.toMatch(/import\.meta/);
+});
+
+for (const how of ['http', 'file']) {
+  test(`over ${how}: the starter traces, a click inspects, the console stays quiet`, async ({ page }) => {
+    const errors = watchConsole(page);
+    const requests = [];
+    page.on('request', (request) => requests.push(request.url()));
+    await page.goto(how === 'http' ? `${origin}/index.html` : pathToFileURL(join(folder, 'index.html')).href);
+    await waitForDone(page);
+
+    expect(await page.evaluate(() => [typeof RT.Scene, typeof RT.classScene, typeof createTracerView, typeof createInspector]))
+      .toEqual(['function', 'function', 'function', 'function']);
+    const canvas = page.locator('[data-tracer]');
+    await expect(canvas).toHaveAttribute('data-width', '64');
+    await expect(canvas).toHaveAttribute('data-height', '48');
+    await expectCanvasScreenshot(canvas, 'web-editor-starter.png'); // the same picture both ways
+
+    await clickPixel(canvas, 30, 22);
+    const inspector = page.locator('[data-inspector]');
+    await expect(inspector).toContainText(/Pixel: 30,22; H: -?\d+\.\d; V: -?\d+\.\d/);
+    await expect(inspector).toContainText('discriminant');
+    await page.keyboard.press('ArrowRight');
+    await expect(inspector).toContainText('Pixel: 31,22;');
+
+    const base = how === 'http' ? origin : pathToFileURL(folder).href;
+    expect(requests.filter((url) => !url.startsWith(base) && !url.startsWith('data:') && !url.startsWith('blob:'))).toEqual([]);
+    expect(errors).toEqual([]);
+  });
+}
+
+test('loaded without p5 before it, the one file says what to change', async ({ page }) => {
+  const errors = [];
+  page.on('pageerror', (error) => errors.push(error.message));
+  await page.goto(`${origin}/no-p5.html`);
+  expect(errors).toEqual([expect.stringMatching(/^raytracing-sketchbook\.js needs p5\.js 2\.x loaded before it: put p5's own <script> first \(this page has no p5\)/)]);
+});
+
+test('the gallery\'s web-editor page shows the steps with the very files tested above', async ({ page }) => {
+  const errors = watchConsole(page);
+  await page.goto('/');
+  await page.getByRole('link', { name: 'Use it in the p5 web editor' }).first().click();
+  await expect(page).toHaveURL(/web-editor\.html$/);
+  await expect(page.locator('#starter')).toHaveText(readFileSync('examples/web-editor/sketch.js', 'utf8'));
+  await expect(page.locator('#page')).toHaveText(readFileSync('examples/web-editor/index.html', 'utf8'));
+  await expect(page.locator('#script-line')).toHaveText('<script src="raytracing-sketchbook.js"></script>');
+  const download = await page.request.get(await page.locator('#download').getAttribute('href', { timeout: 1000 }).then((href) => new URL(href, page.url()).href));
+  expect(download.ok()).toBe(true);
+  expect(await download.text()).toMatch(/^var RT = /m);
+  expect(errors).toEqual([]);
+});
