@@ -2,7 +2,8 @@
 // index.html with p5's own <script>, raytracing-sketchbook.js after it and a
 // global-mode sketch.js (the files of examples/web-editor/), served by a plain
 // static server and opened from file://. The picture traces, a click
-// inspects, the console stays quiet, and both ways give the same picture.
+// inspects, the render worker runs from inside the one file, the console
+// stays quiet, and both ways give the same picture.
 // Then the gallery's page that teaches it shows those same files.
 import { test, expect } from '@playwright/test';
 import { execFileSync } from 'node:child_process';
@@ -73,9 +74,21 @@ for (const how of ['http', 'file']) {
     await clickPixel(canvas, 30, 22);
     const inspector = page.locator('[data-inspector]');
     await expect(inspector).toContainText(/Pixel: 30,22; H: -?\d+\.\d; V: -?\d+\.\d/);
-    await expect(inspector).toContainText('discriminant');
+    await expect(inspector).toContainText('B² − 4AC');
+    await expect(inspector).toContainText('two hits');
     await page.keyboard.press('ArrowRight');
     await expect(inspector).toContainText('Pixel: 31,22;');
+
+    // The render worker is inside the one file too: two workers make render()'s bytes, with no fallback.
+    const workers = await page.evaluate(async () => {
+      const scene = RT.classScene(), camera = new RT.Camera({ width: 40, height: 30 });
+      const renderer = new RT.ParallelRenderer({ workers: 2 });
+      const frame = await renderer.render(scene, camera);
+      const one = RT.render(scene, camera);
+      renderer.terminate();
+      return { problem: renderer.problem && String(renderer.problem.message ?? renderer.problem), same: frame.every((v, i) => v === one[i]) };
+    });
+    expect(workers).toEqual({ problem: null, same: true });
 
     const base = how === 'http' ? origin : pathToFileURL(folder).href;
     expect(requests.filter((url) => !url.startsWith(base) && !url.startsWith('data:') && !url.startsWith('blob:'))).toEqual([]);
