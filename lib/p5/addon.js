@@ -26,7 +26,10 @@ import { drawParabola } from './diagrams/parabola.js';
 import { drawLegend } from './diagrams/legend.js';
 import { show } from '../check.js';
 
-/** `name: (p, options) => part`: what each p5 method makes. */
+/**
+ * `name: (p, options) => part`: what each p5 method makes.
+ * @type {Record<string, (p: import('p5').default, options: object) => any>}
+ */
 export const FACTORIES = {
   createTracerView,
   createSceneView,
@@ -46,7 +49,7 @@ export const FACTORIES = {
   drawTopView,
   drawGeometricConstruction,
   drawParabola,
-  drawLegend: (p, { legend, ...box }) => drawLegend(p, legend, box),
+  drawLegend: (p, { legend, x, y, w, h }) => drawLegend(p, legend, { x, y, w, h }),
 };
 
 /** Every part with a `destroy()` made by each p5 instance, so `p.remove()` ends them too. */
@@ -54,7 +57,7 @@ const partsOf = new WeakMap();
 
 /**
  * The addon (`p5.registerAddon(sketchbookAddon)`; lib/p5/index.js does it).
- * @param {typeof import('p5').default} p5Class
+ * @param {typeof import('p5').default & { disableSketchChecker?: boolean }} p5Class
  * @param {object} fn p5's prototype
  * @param {object} lifecycles p5's lifecycle hooks
  */

@@ -73,12 +73,12 @@ export function blit(canvas, buffer, width, height) {
 /**
  * An animation shown in a tracer view: `p.createAnimation({ view, sceneAt, camera })`;
  * the other options as for the Animation class below.
- * @param {p5} p the sketch
+ * @param {import('p5').default} p the sketch
  * @param {object} options
  * @param {import('./tracer-view.js').TracerView} options.view where the frames are shown
  * @returns {Animation}
  */
-export function createAnimation(p, options = {}) {
+export function createAnimation(p, options) { // no options: checkOptions gives {}
   const { view, ...rest } = checkOptions(options, ['view', 'sceneAt', 'camera', 'workers', 'stats', 'onPlay', 'onPause', 'onError'], 'createAnimation');
   return new Animation(view, rest);
 }
@@ -102,9 +102,16 @@ export class Animation {
    * @param {(error: Error) => void} [options.onError] the workers failed: the frames go on, traced on the
    *   page's own thread (the same bytes), and this says why; a frame that cannot be traced at all pauses the animation
    */
-  constructor(view, { sceneAt, camera, workers = 4, stats, onPlay, onPause, onError } = {}) {
-    Object.assign(this, { view, sceneAt, camera, workers, onPlay, onPause, onError });
-    this.stats = stats?.elt ?? stats ?? null;
+  constructor(view, { sceneAt, camera, workers = 4, stats, onPlay, onPause, onError } = /** @type {any} */ ({})) {
+    this.view = view;
+    this.sceneAt = sceneAt;
+    this.camera = camera;
+    this.workers = workers;
+    this.onPlay = onPlay;
+    this.onPause = onPause;
+    this.onError = onError;
+    /** @type {HTMLElement|null} where the stats line goes (a p5.Element's element, or the element) */
+    this.stats = /** @type {any} */ (stats)?.elt ?? stats ?? null;
     this.thread = null;   // 'main', 'workers', or null when the view is the sketch's
     this.playing = false;
     this.time = 0;        // the animation clock, seconds

@@ -24,7 +24,7 @@ export function readBoxes(boxes) {
 }
 
 /**
- * @param {p5} p the sketch
+ * @param {import('p5').default} p the sketch
  * @param {object} options
  * @param {string|HTMLElement} [options.parent] where the form goes (an id or an element); default the sketch's node
  * @param {Record<string, { label: string, value?: number|string, rule?: object }>} options.boxes by name, in order

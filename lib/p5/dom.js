@@ -11,7 +11,7 @@ const STYLE_URL = new URL('./style.css', import.meta.url).href;
  */
 export function useStyle() {
   if (typeof document === 'undefined') return;
-  const linked = [...document.querySelectorAll('link[rel="stylesheet"]')].some((l) => l.href === STYLE_URL || l.dataset.sketchbook !== undefined);
+  const linked = [.../** @type {NodeListOf<HTMLLinkElement>} */ (document.querySelectorAll('link[rel="stylesheet"]'))].some((l) => l.href === STYLE_URL || l.dataset.sketchbook !== undefined);
   if (linked) return;
   const link = document.createElement('link');
   link.rel = 'stylesheet';

@@ -28,6 +28,7 @@ let panel = null;
 /**
  * Listens for uncaught errors and unhandled rejections on `win` (once per
  * window, however often the module is loaded).
+ * @param {Window & { __sketchbookErrorPanel?: boolean }} [win]
  */
 export function installErrorPanel(win = globalThis.window) {
   const flags = /** @type {any} */ (win);
@@ -41,7 +42,7 @@ export function installErrorPanel(win = globalThis.window) {
 
 /**
  * Shows `error` (an Error or any thrown value) in the page's error panel.
- * @param {unknown} error
+ * @param {any} error
  * @param {{ url?: string, line?: number, column?: number }} [fallback] where the browser says it happened
  * @returns {HTMLElement|null} the panel (null outside a page)
  */

@@ -30,7 +30,7 @@ export function exampleInLink(search, examples) {
 }
 
 /**
- * @param {p5} p the sketch
+ * @param {import('p5').default} p the sketch
  * @param {object} options
  * @param {HTMLElement|{elt: HTMLElement}|string} [options.parent] where the buttons go; default the sketch's node
  * @param {Record<string, { note: string, label?: string, thread?: 'main'|'workers' }>} options.examples by name, in order:

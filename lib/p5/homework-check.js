@@ -9,7 +9,7 @@ import { element, resolveParent, sketchNode } from './dom.js';
 import { checkOptions } from '../check.js';
 
 /**
- * @param {p5} p the sketch
+ * @param {import('p5').default} p the sketch
  * @param {object} options
  * @param {import('./tracer-view.js').TracerView} options.view whose scene and camera are checked
  * @param {(scene: object, camera: object) => { passed: boolean, checks: object[] }} options.check e.g. checkTrafficSignal

@@ -31,14 +31,14 @@ export const SPHERE_ROWS = 12;
 /**
  * Creates an inspector panel that follows `view`'s selected pixel:
  * `p.createInspector({ view })` in a sketch.
- * @param {p5} p the sketch (unused: the panel goes beside the view)
+ * @param {import('p5').default} p the sketch (unused: the panel goes beside the view)
  * @param {object} options
  * @param {import('./tracer-view.js').TracerView} options.view
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] default: beside the view (its parent)
  * @param {string} [options.title] a heading above the panel's answer line (say whose angles it shows)
  * @returns {Inspector}
  */
-export function createInspector(p, options = {}) {
+export function createInspector(p, options) { // no options: checkOptions gives {}
   const { view, parent, title } = checkOptions(options, ['view', 'parent', 'title'], 'createInspector');
   return new Inspector({ view, parent, title });
 }

@@ -62,7 +62,7 @@ export function createPixelMarks(p, options) {
  * A tick box under a view's picture that marks every pixel of the finished
  * picture passing `test`, and a line saying how many. The marks are found once
  * per picture: again after the scene or the camera changes.
- * @param {p5} p the sketch: its canvas becomes the marks' overlay (see createPixelMarks)
+ * @param {import('p5').default} p the sketch: its canvas becomes the marks' overlay (see createPixelMarks)
  * @param {object} options
  * @param {import('./tracer-view.js').TracerView} options.view
  * @param {string} options.name names the parts: the box has `data-show-<name>`, the line

@@ -289,7 +289,7 @@ export const FORM_ROWS = 40;
  * buttons. Each change is checked box by box and then by sceneFromJSON; a bad
  * value gets a message beside its box and changes nothing, a good one calls
  * `onChange(scene, json)`.
- * @param {p5} p the sketch (unused: the form goes into `parent`)
+ * @param {import('p5').default} p the sketch (unused: the form goes into `parent`)
  * @param {object} options
  * @param {object} options.json scene JSON (sceneToJSON)
  * @param {HTMLElement} options.parent

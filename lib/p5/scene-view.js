@@ -48,7 +48,7 @@ const SPEEDS = [1, 2, 4, 8, 15, 30, 60, 120];
 
 /**
  * Creates a 3D view of a tracer view's scene (call it from setup()).
- * @param {p5} p the sketch
+ * @param {import('p5').default} p the sketch
  * @param {object} options
  * @param {import('./tracer-view.js').TracerView} options.view the tracer view it shows and selects in
  * @param {number} [options.width=480] canvas width, px
@@ -63,7 +63,7 @@ const SPEEDS = [1, 2, 4, 8, 15, 30, 60, 120];
  * @param {number} [options.raysPerSecond=4] how fast Shoot sends rays (one of 1, 2, 4, 8, 15, 30, 60, 120)
  * @returns {SceneView}
  */
-export function createSceneView(p, options = {}) {
+export function createSceneView(p, options) {
   return new SceneView(p, options);
 }
 
@@ -644,7 +644,7 @@ export class SceneView {
           this.#picture = q.createGraphics(16, 16);
           this.#picture.pixelDensity(1);
           this.#pictureCtx = this.#picture.drawingContext;
-          this.#canvasReady(q.canvas, stage);
+          this.#canvasReady(/** @type {any} */ (q).canvas, stage); // p5's types leave out the instance's canvas
           resolve(this);
         };
         q.draw = () => { const t = performance.now(); this.#draw(); this.#lastDrawMs = performance.now() - t; };

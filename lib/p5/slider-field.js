@@ -25,9 +25,9 @@ export function fieldMessage(label, error) {
 }
 
 /**
- * @param {p5} p the sketch (its DOM functions make the parts)
+ * @param {import('p5').default} p the sketch (its DOM functions make the parts)
  * @param {object} field
- * @param {p5.Element|HTMLElement|string} field.parent the grid the label, slider, text box and message go into
+ * @param {import('p5').default.Element|HTMLElement|string} field.parent the grid the label, slider, text box and message go into
  * @param {string} field.name the text box's id is `field-<name>`, the message's `data-message-for` is `<name>`
  * @param {string} field.label what the field is called
  * @param {number} field.min the slider's range…

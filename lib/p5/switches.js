@@ -15,9 +15,9 @@ import { element, withText } from './dom.js';
 import { checkOptions } from '../check.js';
 
 /**
- * @param {p5} p the sketch (its DOM functions make the parts)
+ * @param {import('p5').default} p the sketch (its DOM functions make the parts)
  * @param {object} options
- * @param {p5.Element|HTMLElement|string} options.parent where the panel goes
+ * @param {import('p5').default.Element|HTMLElement|string} options.parent where the panel goes
  * @param {string} options.legend the panel's title
  */
 export function createSwitches(p, options) {
@@ -47,7 +47,7 @@ export function createSwitches(p, options) {
 
     /** A drop-down inside its label; `options` are `[words, value]`, the first one chosen; value() is a string. */
     choice(label, options, why) {
-      const select = p.createSelect();
+      const select = /** @type {any} */ (p.createSelect()); // p5's types give a plain p5.Element, without option()
       for (const [words, value] of options) select.option(words, String(value));
       const labelled = withText(p.createElement('label'), `${label} `);
       labelled.child(select);

@@ -41,7 +41,7 @@ const BASE_REM = 16;
 
 /**
  * Creates a tracer view inside a p5 sketch (call it from setup()).
- * @param {p5} p the sketch (instance mode), used for its parent node and its lifetime
+ * @param {import('p5').default} p the sketch (instance mode), used for its parent node and its lifetime
  * @param {object} options
  * @param {import('../scene.js').Scene} options.scene
  * @param {import('../camera.js').Camera} options.camera its width × height is the traced resolution
@@ -56,7 +56,7 @@ const BASE_REM = 16;
  * @param {boolean} [options.legend=true] show the mode's legend under the picture (not for 'shaded')
  * @returns {TracerView}
  */
-export function createTracerView(p, options = {}) {
+export function createTracerView(p, options) { // no options: checkOptions gives {}
   return new TracerView(p, checkOptions(options, TRACER_VIEW_OPTIONS, 'createTracerView'));
 }
 
@@ -69,7 +69,11 @@ export class TracerView {
   #shownCurrent = null; #progressText = '';
   #ctx; #overlayCtx; #onResize;
 
-  constructor(p, { scene, camera, scale = 'auto', grid = false, mode = 'shaded', renderMode = 'coarse', budgetMs = 8, workers = 'auto', parent, label, legend = true } = {}) {
+  /**
+   * @param {import('p5').default} p
+   * @param {Parameters<typeof createTracerView>[1]} options as for createTracerView
+   */
+  constructor(p, { scene, camera, scale = 'auto', grid = false, mode = 'shaded', renderMode = 'coarse', budgetMs = 8, workers = 'auto', parent, label, legend = true } = /** @type {any} */ ({})) {
     this.#scale = checkScale(scale);
     this.#grid = Boolean(grid);
     this.budgetMs = checkBudget(budgetMs);

@@ -14,10 +14,14 @@ import { focusTest } from './focus.js';
  * negative, t0 behind the eye) are drawn as such.
  * @param {object} p a p5 instance
  * @param {object} o
- * @param {import('../shapes/sphere.js').Sphere} [o.sphere]
- * @param {import('../ray.js').Ray} [o.ray]
+ * @param {import('../../shapes/sphere.js').Sphere} [o.sphere]
+ * @param {import('../../ray.js').Ray} [o.ray]
  * @param {object} [o.result] intersectGeometric(ray, sphere)'s result (computed when missing)
  * @param {object} [o.record] instead of sphere/ray: an inspectPixel record (its focus sphere is used)
+ * @param {number} o.x the box it is drawn in: left
+ * @param {number} o.y top
+ * @param {number} o.w width
+ * @param {number} o.h height
  */
 export function drawGeometricConstruction(p, o) {
   let { sphere, ray, result } = o;

@@ -113,7 +113,7 @@ export function sidesToward(dx, dy) {
  * drawn one under the other (each row's style over the label's).
  */
 function measure(p, text, style) {
-  const rows = (Array.isArray(text) ? text : [[text, {}]]).map(([t, s]) => ({ text: t, style: { ...style, ...s } }));
+  const rows = (Array.isArray(text) ? text : [[text, {}]]).map(([t, s]) => ({ text: t, style: { ...style, ...s }, w: 0, h: 0 }));
   const ctx = p.drawingContext;
   ctx.save();
   for (const row of rows) {

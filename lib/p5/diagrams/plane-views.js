@@ -16,8 +16,8 @@ import {
  * the camera (−z, "forward", to the right; y up).
  * @param {object} p a p5 instance
  * @param {object} o
- * @param {import('../scene.js').Scene} o.scene
- * @param {import('../camera.js').Camera} o.camera
+ * @param {import('../../scene.js').Scene} o.scene
+ * @param {import('../../camera.js').Camera} o.camera
  * @param {object|null} [o.record] inspectPixel's result, or null before a click
  * @param {number} o.x
  * @param {number} o.y
