@@ -10,6 +10,9 @@ import { colorName } from './color.js';
  * Is this pixel pink? If not: its colour, and what its ray hit.
  * @param {{ x: number, y: number, color: number[], hit: ?{ object: { name?: string } } }} record from inspectPixel
  * @returns {{ pink: boolean, colorName: string, message: string }}
+ * @example
+ * const camera = new Camera({ width: 64, height: 48 });
+ * pinkPixelVerdict(inspectPixel(classScene(), camera, 10, 12)).message; // 'That pixel is white: the white sphere.'
  */
 export function pinkPixelVerdict({ x, y, color, hit }) {
   const name = colorName(color);
@@ -27,6 +30,8 @@ const whatIs = (name) => (name === 'ground' ? 'the ground' : name.startsWith('li
  * The slide's answer format with the values the student gave (the pixel and
  * the camera's H and V): `Pixel: 10,12; H: 30; V: -82`.
  * @param {{ x: number, y: number, h: number, v: number }} answer
+ * @example
+ * answerText({ x: 10, y: 12, h: 30, v: -82 }); // 'Pixel: 10,12; H: 30; V: -82'
  */
 export function answerText({ x, y, h, v }) {
   return `Pixel: ${x},${y}; H: ${plain(h)}; V: ${plain(v)}`;
@@ -43,6 +48,9 @@ const ANSWER_LINE = new RegExp(String.raw`^\s*pixel\s*:?\s*(${NUMBER})\s*,\s*(${
  * a typographic minus too) into the text of its four boxes, `{ x, y, h, v }`;
  * null when the text is not an answer line. The boxes check the values.
  * @param {string} text
+ * @example
+ * readAnswerLine('pixel 10, 12; h 30; v -82'); // { x: '10', y: '12', h: '30', v: '-82' }
+ * readAnswerLine('pink!');                     // null
  */
 export function readAnswerLine(text) {
   const m = ANSWER_LINE.exec(String(text ?? ''));

@@ -25,6 +25,9 @@ export class Camera {
    * @param {number[]|{x,y,z}} [options.position=[0,0,0]] the eye
    * @param {number} [options.yaw=0] turn right, degrees
    * @param {number} [options.pitch=0] look up, degrees, −90 to 90
+   * @example
+   * const camera = new Camera({ width: 64, height: 48, fov: 30, position: [0, 2, 0], pitch: -5 });
+   * const { ray, h, v } = camera.primaryRay(10, 12); // the ray through pixel (10, 12) and its angles
    */
   constructor(options) { // no options: checkOptions gives {}, and the first required field says it is missing
     const { width, height, fov = 30, position = [0, 0, 0], yaw = 0, pitch = 0 } = checkOptions(options, OPTIONS, 'camera');

@@ -24,6 +24,10 @@ const NAMES = {
 /**
  * `[r, g, b]` (0–1 floats) from an array or a CSS-style string, else a
  * TypeError/RangeError naming `field`. A single number n means grey `[n, n, n]`.
+ * @example
+ * toColor('pink');       // [1, 0.753, 0.796]
+ * toColor('#ff5160');    // [1, 0.318, 0.376]
+ * toColor([1, 0.5, 0]);  // [1, 0.5, 0]
  */
 export function toColor(value, field = 'color') {
   if (typeof value === 'number') value = [value, value, value];
@@ -57,7 +61,11 @@ function parseString(text, field) {
   throw new TypeError(`${field} must be a colour like '#ff5160', 'rgb(255, 81, 96)' or 'pink', got ${show(text)}`);
 }
 
-/** '#rrggbb' for 0–255 channel values (clamped, so the answer is always six digits). */
+/**
+ * '#rrggbb' for 0–255 channel values (clamped, so the answer is always six digits).
+ * @example
+ * toHex([255, 81, 96]); // '#ff5160'
+ */
 export function toHex([r, g, b]) {
   return '#' + [r, g, b].map((c) => Math.round(clamp(c, 0, 255)).toString(16).padStart(2, '0')).join('');
 }
@@ -75,6 +83,9 @@ export function colorToHex(rgb) {
  * [1, 0.32, 0.36], stays pink as its shading darkens, until it is dim red.
  * @param {Iterable<number>} rgb `[r, g, b]`, each 0–255
  * @returns {string}
+ * @example
+ * colorName([255, 81, 96]); // 'pink'
+ * colorName([20, 200, 40]); // 'green'
  */
 export function colorName([r, g, b]) {
   const { h, s, l } = rgbToHsl(r / 255, g / 255, b / 255);

@@ -15,6 +15,10 @@ const _bytes = new Uint8ClampedArray(4);
  * `{ x, y, h, v, ray, tests, hit, color }` — `tests` one entry per sphere
  * `{ sphere, index, quadratic, geometric }`; `hit` the nearest hit record or
  * null; `color` `[r, g, b]` bytes, identical to `render`'s pixel.
+ * @example
+ * const record = inspectPixel(classScene(), new Camera({ width: 64, height: 48 }), 32, 24);
+ * record.tests[0].quadratic.discriminant; // the first sphere's discriminant for this pixel's ray
+ * record.color;                           // [r, g, b], the very bytes render() gives this pixel
  */
 export function inspectPixel(scene, camera, x, y) {
   checkSceneAndCamera(scene, camera);

@@ -48,6 +48,9 @@ export const SIGNAL_CHECKS = {
 /**
  * Task 1: three lights (emissive spheres) stacked vertically, red over
  * yellow over green, at about the same x and z, all in the camera's view.
+ * @example
+ * const { passed, checks } = checkTrafficSignal(classScene(), new Camera({ width: 64, height: 48 }));
+ * // passed: false; checks: [{ label: 'Three lights', passed: false, detail: '…' }, …]
  */
 export function checkTrafficSignal(scene, camera) {
   checkArguments(scene, camera);
@@ -148,6 +151,11 @@ export const CAR_CHECKS = {
  * x, same z), both in the camera's view. Bonus: placed symmetrically about
  * the middle of the car's body (every shape that is not a light, a plane or
  * huge).
+ * @example
+ * const scene = new Scene()
+ *   .add(new Sphere([-1, 1, -10], 0.3, { color: [0, 0, 0], emission: [1, 0, 0] }))
+ *   .add(new Sphere([1, 1, -10], 0.3, { color: [0, 0, 0], emission: [1, 0, 0] }));
+ * checkRearLights(scene, new Camera({ width: 64, height: 48 })).checks.map((c) => c.passed);
  */
 export function checkRearLights(scene, camera) {
   checkArguments(scene, camera);
@@ -387,6 +395,9 @@ const fmt = (n) => String(Math.round(n * 100) / 100);
  * solution, '0' (or no parameter) the student's scene. Any other value gives
  * the student's scene and a message saying what the parameter takes.
  * @returns {{ solution: boolean, message: string|null }}
+ * @example
+ * solutionParameter('?solution=1'); // { solution: true, message: null }
+ * solutionParameter('');            // { solution: false, message: null }
  */
 export function solutionParameter(search) {
   const value = new URLSearchParams(search).get('solution');

@@ -16,6 +16,10 @@ export class PointLight {
    * @param {number[]|{x,y,z}} position where the light is
    * @param {number[]|string|{ color?: number[]|string, intensity?: number, name?: string }} [color=[1,1,1]] its colour, or the options
    * @param {number} [intensity=1] a multiplier, ≥ 0
+   * @example
+   * const sun = new PointLight([40, 200, 60]);                       // white, intensity 1
+   * const lamp = new PointLight([-10, 20, 0], [1, 0.8, 0.6], 0.7);   // a warm, dimmer light
+   * const scene = new Scene().add(new Sphere([0, 0, -20], 4)).add(sun).add(lamp);
    */
   constructor(position, color = [1, 1, 1], intensity = 1) {
     let name = '';

@@ -19,6 +19,10 @@ export class Material {
    * @param {number} [options.ior=1.1] index of refraction inside (the class library's 1.1)
    * @param {number} [options.specular=0] strength of the highlight, 0–1
    * @param {number} [options.shininess=50] highlight sharpness (Phong exponent), ≥ 1
+   * @example
+   * const mirror = new Material({ color: [0.9, 0.9, 0.9], reflection: 0.8 });
+   * const glass = new Material({ color: 'white', transparency: 0.9, ior: 1.5 });
+   * const ball = new Sphere([0, 0, -20], 4, glass); // or the same options as a plain object
    */
   constructor(options = {}) {
     if (options === null || typeof options !== 'object') {

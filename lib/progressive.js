@@ -64,6 +64,11 @@ export class ProgressiveRenderer {
    * @param {Function} [options.shader=renderPixel] `(scene, camera, x, y, targetRGBA)`, writes pixel (x, y) at `(y·width + x)·4`
    * @param {number} [options.slowRaysPerStep=1] pixels per step() in 'slow' mode
    * @param {() => number} [options.now=performance.now] the clock, in milliseconds
+   * @example
+   * const tracer = new ProgressiveRenderer({ scene: classScene(), camera: new Camera({ width: 64, height: 48 }) });
+   * tracer.step();             // about 8 ms of tracing: coarse blocks first
+   * while (!tracer.done) tracer.step();
+   * tracer.buffer;             // RGBA, the same bytes as render()
    */
   constructor(options) { // no options: checkOptions gives {}, and the first required field says it is missing
     const { scene, camera, mode = 'coarse', budgetMs = 8, shader = renderPixel, slowRaysPerStep = 1, now = () => performance.now() } = checkOptions(options, OPTIONS, 'ProgressiveRenderer');

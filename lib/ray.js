@@ -7,6 +7,9 @@ export class Ray {
   /**
    * @param {number[]|{x,y,z}} origin Ro
    * @param {number[]|{x,y,z}} direction Rd, normalised here; must not be zero-length
+   * @example
+   * const ray = new Ray([0, 0, 0], [0, 3, -4]);
+   * ray.direction; // { x: 0, y: 0.6, z: -0.8 }: normalised
    */
   constructor(origin = [0, 0, 0], direction = [0, 0, -1]) {
     this.origin = toVec3(origin, 'origin');

@@ -22,6 +22,9 @@ const _color = [0.5, 0.5, 0.5]; // doubles from the start (one array shape)
  * @param {Uint8ClampedArray} [target] RGBA, at least width·height·4 bytes (a new one when left out)
  * @param {{y0: number, y1: number}} [rows] render only rows y0 ≤ y < y1 (a worker's band), 0 ≤ y0 ≤ y1 ≤ height
  * @returns {Uint8ClampedArray} RGBA, row by row from the top
+ * @example
+ * const rgba = render(classScene(), new Camera({ width: 64, height: 48 }));
+ * rgba.length; // 64 · 48 · 4 bytes: r, g, b, a of each pixel, row by row from the top left
  */
 export function render(scene, camera, target, rows) {
   checkSceneAndCamera(scene, camera);

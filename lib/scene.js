@@ -24,6 +24,11 @@ export class Scene {
    *   surface shadows itself at random ("shadow acne"), which is what the two guard against
    * @param {number} [options.maxDepth=5] how many mirror/glass bounces a ray may take, 0–16
    * @param {boolean} [options.specular=true] draw highlights of materials with `specular` > 0
+   * @example
+   * const scene = new Scene({ background: [0.85, 0.92, 1], ambient: 0.1 })
+   *   .add(new Sphere([0, 0, -20], 4, { color: 'pink' }))
+   *   .add(new PointLight([-10, 20, 0]));
+   * scene.objects.length; // 1 shape; scene.lights.length: 1 light
    */
   constructor(options = {}) {
     checkOptions(options, OPTIONS, 'scene');

@@ -11,6 +11,9 @@ import { finiteNumber } from './check.js';
  * the activity) and two emissive spheres as lights, on a white background.
  * Options: `full` adds the original's mirror and glass (reflection,
  * transparency) for the full-shading benchmark.
+ * @example
+ * const scene = classScene();                   // the spheres of the class's example
+ * const shiny = classScene({ full: true });     // with its mirrors and glass
  */
 export function classScene({ full = false } = {}) {
   const scene = new Scene({ background: [2, 2, 2] });
@@ -28,6 +31,8 @@ export function classScene({ full = false } = {}) {
  * The class scene `t` seconds into the original animated example: the yellow,
  * blue and white spheres circle the pink one (about its vertical axis), once
  * every `secondsPerTurn` seconds; the rest stays put.
+ * @example
+ * const frame = render(classSceneAt(1.5), new Camera({ width: 64, height: 48 })); // 1.5 s into the animation
  */
 export function classSceneAt(t, secondsPerTurn = 12) {
   finiteNumber(t, 't');

@@ -32,7 +32,11 @@ const TYPES = {
   pointLight: { fields: ['position', 'color', 'intensity'], build: (o) => new PointLight(o.position, o.color, o.intensity) },
 };
 
-/** The scene as plain JSON-ready data (numbers, booleans, strings, arrays). */
+/**
+ * The scene as plain JSON-ready data (numbers, booleans, strings, arrays).
+ * @example
+ * const text = JSON.stringify(sceneToJSON(classScene())); // save it, share it, send it to a worker
+ */
 export function sceneToJSON(scene) {
   if (!(scene instanceof Scene)) throw new TypeError(`scene must be a Scene, got ${show(scene)}`);
   return {
@@ -51,6 +55,9 @@ export function sceneToJSON(scene) {
  * A Scene from JSON data or text, checked field by field: a bad value throws
  * a TypeError or RangeError whose message starts with its path, e.g.
  * "objects[2].radius must be greater than 0, got -1".
+ * @example
+ * const copy = sceneFromJSON(JSON.stringify(sceneToJSON(classScene())));
+ * copy.objects.length; // as many shapes as the original
  */
 export function sceneFromJSON(json) {
   const data = parse(json, 'scene');
@@ -84,6 +91,8 @@ export function cameraFromJSON(json) {
  * @param {Scene} scene
  * @param {object} [options]
  * @param {string} [options.importFrom='../lib/index.js'] where the code imports the library from
+ * @example
+ * const code = sceneToCode(classScene()); // "import { Scene, Sphere } from '../lib/index.js'; const scene = new Scene(…"
  */
 export function sceneToCode(scene, { importFrom = '../lib/index.js' } = {}) {
   const data = sceneToJSON(scene);

@@ -49,6 +49,18 @@ export const FACTORIES = {
   drawTopView,
   drawGeometricConstruction,
   drawParabola,
+  /**
+   * A visual mode's legend drawn into the sketch's canvas: its title, colour bar and note.
+   * @param {import('p5').default} p the sketch
+   * @param {object} options
+   * @param {object} options.legend what to draw, `{ title, stops, note }` (lib/modes.js's modeLegend makes one per visual mode)
+   * @param {number} options.x the box it is drawn in: left
+   * @param {number} options.y top
+   * @param {number} options.w width
+   * @param {number} options.h height
+   * @example
+   * p.drawLegend({ legend, x: 0, y: 0, w: 300, h: 90 }); // under the diagram it explains
+   */
   drawLegend: (p, { legend, x, y, w, h }) => drawLegend(p, legend, { x, y, w, h }),
 };
 
@@ -60,6 +72,10 @@ const partsOf = new WeakMap();
  * @param {typeof import('p5').default & { disableSketchChecker?: boolean }} p5Class
  * @param {object} fn p5's prototype
  * @param {object} lifecycles p5's lifecycle hooks
+ * @example
+ * import p5 from 'p5';
+ * import { sketchbookAddon } from 'raytracing-sketchbook/p5'; // importing it already does this:
+ * p5.registerAddon(sketchbookAddon);
  */
 export function sketchbookAddon(p5Class, fn, lifecycles) {
   // p5's sketch checker fetches the page's last script and parses it before

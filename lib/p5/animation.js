@@ -77,12 +77,23 @@ export function blit(canvas, buffer, width, height) {
  * @param {object} options
  * @param {import('./tracer-view.js').TracerView} options.view where the frames are shown
  * @returns {Animation}
+ * @example
+ * const view = p.createTracerView({ scene: classSceneAt(0), camera: new Camera({ width: 160, height: 120 }) });
+ * const animation = p.createAnimation({ view, sceneAt: classSceneAt, camera: view.camera, workers: 2 });
+ * animation.start('workers'); // or 'main': the frames traced on the page's own thread
  */
 export function createAnimation(p, options) { // no options: checkOptions gives {}
   const { view, ...rest } = checkOptions(options, ['view', 'sceneAt', 'camera', 'workers', 'stats', 'onPlay', 'onPause', 'onError'], 'createAnimation');
   return new Animation(view, rest);
 }
 
+/**
+ * An animation in a tracer view, what `p.createAnimation({ view, sceneAt, camera })` returns: the class's animated examples, with an FPS line.
+ * @example
+ * const animation = p.createAnimation({ view, sceneAt: (t) => classSceneAt(t), camera: view.camera });
+ * animation.start('main');
+ * animation.play(false); // pause: click a pixel of the frame on screen
+ */
 export class Animation {
   #page;
   #parallel = null;

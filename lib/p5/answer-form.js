@@ -32,6 +32,11 @@ export function readBoxes(boxes) {
  * @param {string} [options.title='Your answer'] the heading
  * @param {(text: string) => ?Record<string, string>} [options.parse] reads a pasted answer line into box texts by name, or null
  * @param {string|Node} [options.note] under the answer
+ * @example
+ * const form = p.createAnswerForm({
+ *   boxes: { x: { label: 'Pixel x' }, y: { label: 'Pixel y' } },
+ *   onCheck: () => console.log(form.read()), // { x, y } as numbers; undefined while a box is wrong (it says why)
+ * });
  */
 export function createAnswerForm(p, options) {
   const { parent, boxes: specs, onCheck, title = 'Your answer', parse, note } = checkOptions(options, ['parent', 'boxes', 'onCheck', 'title', 'parse', 'note'], 'createAnswerForm');

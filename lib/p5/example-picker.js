@@ -21,6 +21,8 @@ import { checkOptions } from '../check.js';
  * @param {string} search the link's query, e.g. `location.search`
  * @param {Record<string, object>} examples by name, in order
  * @returns {{ name: string, problem: string }}
+ * @example
+ * exampleInLink('?example=animated', { still: {}, animated: {} }); // { name: 'animated', problem: '' }
  */
 export function exampleInLink(search, examples) {
   const names = Object.keys(examples);
@@ -37,6 +39,11 @@ export function exampleInLink(search, examples) {
  *   the note under the picture, the button's text (default the name), and for an animated one the thread its frames are traced on
  * @param {(name: string, example: object) => void} options.onChoose shows the chosen example
  * @returns {{ attach: Function, choose: Function, say: Function }}
+ * @example
+ * p.createExamplePicker({
+ *   examples: { still: { note: 'One frame, traced once.' }, animated: { note: 'A frame per draw().', thread: 'main' } },
+ *   onChoose: (name) => view.setScene(name === 'still' ? classScene() : classSceneAt(0)),
+ * });
  */
 export function createExamplePicker(p, options) {
   const { parent, examples, onChoose } = checkOptions(options, ['parent', 'examples', 'onChoose'], 'createExamplePicker');

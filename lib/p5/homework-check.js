@@ -16,6 +16,9 @@ import { checkOptions } from '../check.js';
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where the button and the result go; default the sketch's node
  * @param {string|null} [options.problem] a warning shown above the result (e.g. a bad ?solution= value), as plain text
  * @returns {{ button: HTMLButtonElement, results: HTMLElement, run: () => void }}
+ * @example
+ * const view = p.createTracerView({ scene: makeScene(), camera: makeCamera() });
+ * p.createHomeworkCheck({ view, check: checkTrafficSignal }); // a "Check my scene" button and its verdict
  */
 export function createHomeworkCheck(p, options) {
   const { view, check, parent, problem = null } = checkOptions(options, ['view', 'check', 'parent', 'problem'], 'createHomeworkCheck');

@@ -37,12 +37,22 @@ export const SPHERE_ROWS = 12;
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] default: beside the view (its parent)
  * @param {string} [options.title] a heading above the panel's answer line (say whose angles it shows)
  * @returns {Inspector}
+ * @example
+ * const view = p.createTracerView({ scene: classScene(), camera: new Camera({ width: 64, height: 48 }) });
+ * p.createInspector({ view }); // click a pixel: Pixel: X,Y; H: …; V: …, the discriminant, the roots, the hit
  */
 export function createInspector(p, options) { // no options: checkOptions gives {}
   const { view, parent, title } = checkOptions(options, ['view', 'parent', 'title'], 'createInspector');
   return new Inspector({ view, parent, title });
 }
 
+/**
+ * The inspector panel, what `p.createInspector({ view })` returns: the whole story of the selected pixel.
+ * @example
+ * const inspector = p.createInspector({ view });
+ * view.select(10, 12);   // the panel follows: inspector.record is that pixel's inspectPixel record
+ * inspector.csv();       // the same record as CSV, for a worksheet
+ */
 export class Inspector {
   /** The last `inspectPixel` record shown, or null. */
   record = null;
@@ -163,13 +173,22 @@ export function formatVector(v) {
   return v ? `(${formatNumber(v.x)}, ${formatNumber(v.y)}, ${formatNumber(v.z)})` : '—';
 }
 
-/** An angle with one decimal, as in the answer line ("−0.0" shown as "0.0"). */
+/**
+ * An angle with one decimal, as in the answer line ("−0.0" shown as "0.0").
+ * @example
+ * formatAngle(-0.04); // '0.0'
+ * formatAngle(30);    // '30.0'
+ */
 export function formatAngle(degrees) {
   const text = degrees.toFixed(1);
   return text === '-0.0' ? '0.0' : text;
 }
 
-/** The lesson's answer format for a pixel's own ray, one decimal: `Pixel: 10,12; H: -1.9; V: 3.2`. */
+/**
+ * The lesson's answer format for a pixel's own ray, one decimal: `Pixel: 10,12; H: -1.9; V: 3.2`.
+ * @example
+ * answerLine({ x: 10, y: 12, h: -1.94, v: 3.21 }); // 'Pixel: 10,12; H: -1.9; V: 3.2'
+ */
 export function answerLine({ x, y, h, v }) {
   return `Pixel: ${x},${y}; H: ${formatAngle(h)}; V: ${formatAngle(v)}`;
 }

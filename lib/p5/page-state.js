@@ -30,7 +30,11 @@ export function pageViews() {
   return [...views.keys()];
 }
 
-/** "rendering", "done", or null when no view is registered. */
+/**
+ * "rendering", "done", or null when no view is registered.
+ * @example
+ * pageRenderState(); // 'rendering' while a view traces, 'done' when all have finished (body[data-render] says the same)
+ */
 export function pageRenderState() {
   if (views.size === 0) return null;
   for (const rendering of views.values()) if (rendering) return 'rendering';

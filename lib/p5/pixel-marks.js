@@ -71,6 +71,12 @@ export function createPixelMarks(p, options) {
  * @param {(rgb: number[]) => boolean} options.test which pixels to mark (`[r, g, b]`, 0–255)
  * @param {(count: number, total: number) => string} options.describe the line, from the count and the number of pixels
  * @returns {{ draw: () => void }} call draw() from the sketch's draw()
+ * @example
+ * p.createPixelHighlight({
+ *   view, name: 'pink', label: 'Show the pink pixels',
+ *   test: ([r, g, b]) => colorName([r, g, b]) === 'pink',
+ *   describe: (count, total) => `${count} of ${total} pixels are pink`,
+ * });
  */
 export function createPixelHighlight(p, options) {
   const { view, name, label, test, describe } = checkOptions(options, ['view', 'name', 'label', 'test', 'describe'], 'createPixelHighlight');

@@ -294,6 +294,11 @@ export const FORM_ROWS = 40;
  * @param {object} options.json scene JSON (sceneToJSON)
  * @param {HTMLElement} options.parent
  * @param {(scene: Scene, json: object) => void} options.onChange
+ * @example
+ * p.createSceneForm({
+ *   json: sceneToJSON(classScene()), parent: document.getElementById('values'),
+ *   onChange: (scene) => view.setScene(scene), // only a scene whose every box is right
+ * });
  */
 export function createSceneForm(p, options) {
   const { json, parent, onChange } = checkOptions(options, ['json', 'parent', 'onChange'], 'createSceneForm');

@@ -62,11 +62,21 @@ const SPEEDS = [1, 2, 4, 8, 15, 30, 60, 120];
  * @param {import('../shapes/sphere.js').Sphere} [options.construction] a sphere: draw the geometric route (L, tca, d, thc, with their values) of the selected ray for it
  * @param {number} [options.raysPerSecond=4] how fast Shoot sends rays (one of 1, 2, 4, 8, 15, 30, 60, 120)
  * @returns {SceneView}
+ * @example
+ * const view = p.createTracerView({ scene: classScene(), camera: new Camera({ width: 32, height: 24 }) });
+ * p.createSceneView({ view, width: 480, height: 360 }); // drag to orbit; the selected pixel's ray in 3D
  */
 export function createSceneView(p, options) {
   return new SceneView(p, options);
 }
 
+/**
+ * The 3D view of a tracer view's scene, what `p.createSceneView({ view })` returns: eye, image plane, rays and spheres.
+ * @example
+ * const view3d = p.createSceneView({ view });
+ * view3d.setOrbit({ yaw: 30, pitch: 20 }); // look from the side and above
+ * view3d.reset();                          // back to where it started
+ */
 export class SceneView {
   #g = null; #view; #raf = 0; #destroyed = false; #unlisten;
   #orbit; #home; #bounds; #planeDistance; #planeOption; #frustum;

@@ -35,6 +35,11 @@ export function fieldMessage(label, error) {
  * @param {number} field.step
  * @param {number} field.value …and its value at first
  * @param {(value: number) => void} field.use puts a number to use, or throws an Error saying why it cannot
+ * @example
+ * p.createSliderField({
+ *   parent: 'controls', name: 'radius', label: 'r', min: 1, max: 8, step: 0.5, value: 4,
+ *   use: (r) => view.setScene(makeScene(r)), // a bad value throws: the message shows, the picture stays
+ * });
  */
 export function createSliderField(p, options) {
   const { parent, name, label, min, max, step, value, use } = checkOptions(options, ['parent', 'name', 'label', 'min', 'max', 'step', 'value', 'use'], 'createSliderField');

@@ -19,6 +19,10 @@ import { checkOptions } from '../check.js';
  * @param {object} options
  * @param {import('p5').default.Element|HTMLElement|string} options.parent where the panel goes
  * @param {string} options.legend the panel's title
+ * @example
+ * const panel = p.createSwitches({ parent: 'controls', legend: 'Lighting' });
+ * const shadows = panel.toggle('Shadows', 'one shadow ray per light');
+ * panel.onChange(() => view.setScene(makeScene({ shadows: shadows.checked() })));
  */
 export function createSwitches(p, options) {
   const { parent, legend } = checkOptions(options, ['parent', 'legend'], 'createSwitches');

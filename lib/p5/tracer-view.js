@@ -55,6 +55,16 @@ const BASE_REM = 16;
  * @param {string} [options.label] a caption above the picture
  * @param {boolean} [options.legend=true] show the mode's legend under the picture (not for 'shaded')
  * @returns {TracerView}
+ * @example
+ * new p5((p) => {
+ *   p.setup = () => {
+ *     p.noCanvas(); // the tracer view brings its own canvas
+ *     const scene = new Scene().add(new Sphere([0, 0, -20], 4, { color: 'pink' })).add(new PointLight([-10, 20, 0]));
+ *     const view = p.createTracerView({ scene, camera: new Camera({ width: 64, height: 48 }), grid: true });
+ *     p.createInspector({ view });
+ *   };
+ * });
+ * // global mode (one-file build): function setup() { noCanvas(); createTracerView({ scene, camera }); }
  */
 export function createTracerView(p, options) { // no options: checkOptions gives {}
   return new TracerView(p, checkOptions(options, TRACER_VIEW_OPTIONS, 'createTracerView'));
@@ -63,6 +73,14 @@ export function createTracerView(p, options) { // no options: checkOptions gives
 /** The options createTracerView takes. */
 const TRACER_VIEW_OPTIONS = ['scene', 'camera', 'scale', 'grid', 'mode', 'renderMode', 'budgetMs', 'workers', 'parent', 'label', 'legend'];
 
+/**
+ * The traced picture on the page, what `p.createTracerView({ … })` returns: progressive, clickable, restartable.
+ * @example
+ * const view = p.createTracerView({ scene: classScene(), camera: new Camera({ width: 64, height: 48 }) });
+ * view.setMode('discriminant');          // the discriminant map; 'shaded' for the picture again
+ * view.setScene(classSceneAt(2));        // re-traces without a reload
+ * view.onSelect((record) => console.log(record?.color)); // a click: that pixel's inspectPixel record
+ */
 export class TracerView {
   #renderer; #page; #imageData = null; #raf = 0; #destroyed = false;
   #scale; #grid; #mode; #selected = null; #listeners = [];

@@ -12,6 +12,8 @@ export class Box {
    * @param {number[]|{x,y,z}} min the corner with the smallest x, y, z
    * @param {number[]|{x,y,z}} max the opposite corner; larger on every axis
    * @param {import('../material.js').Material|object} [material] a Material or its options, which may also give the shape a `name`
+   * @example
+   * const housing = new Box([-0.8, 3.4, -16.8], [0.8, 7.4, -16.2], { color: [0.15, 0.15, 0.16] }); // two opposite corners
    */
   constructor(min, max, material) {
     this.min = toVec3(min, 'min');

@@ -10,6 +10,9 @@ export class Plane {
    * @param {number[]|{x,y,z}} point any point on the plane
    * @param {number[]|{x,y,z}} normal the side it faces; normalised here, not zero-length
    * @param {import('../material.js').Material|object} [material] a Material or its options, which may also give the shape a `name`
+   * @example
+   * const ground = new Plane([0, -4, 0], [0, 1, 0], { color: [0.5, 0.5, 0.5] }); // a point on it, the way it faces
+   * const scene = new Scene().add(ground);
    */
   constructor(point = [0, 0, 0], normal = [0, 1, 0], material) {
     this.point = toVec3(point, 'point');

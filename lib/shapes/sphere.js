@@ -22,6 +22,9 @@ export class Sphere {
    * @param {number[]|{x,y,z}} center Sc
    * @param {number} radius Sr, > 0
    * @param {import('../material.js').Material|object} [material] a Material or its options, which may also give the shape a `name`
+   * @example
+   * const ball = new Sphere([0, 0, -20], 4, { color: [1, 0.32, 0.36] });             // center, radius, material
+   * const lamp = new Sphere([0, 20, -30], 3, { color: [0, 0, 0], emission: 1.2 }); // a light you can see
    */
   constructor(center, radius, material) {
     this.center = toVec3(center, 'center');
@@ -58,6 +61,10 @@ export class Sphere {
 /**
  * The quadratic route: At² + Bt + C = 0 (slide "An implicit form describing a
  * sphere"). Writes `{ A, B, C, discriminant, roots, t0, t1, t }` into `target`.
+ * @example
+ * const ray = new Ray([0, 0, 0], [0, 0, -1]);
+ * const { A, B, C, discriminant, t0, t1, t } = intersectQuadratic(ray, new Sphere([0, 0, -20], 4));
+ * // A = 1, B = -40, C = 384, discriminant = 64 > 0: two hits, t0 = 16, t1 = 24; t = 16, the nearest
  */
 export function intersectQuadratic(ray, sphere, target = {}) {
   const o = ray.origin, d = ray.direction, c = sphere.center, r = sphere.radius;
@@ -91,6 +98,10 @@ export function intersectQuadratic(ray, sphere, target = {}) {
  * `{ L, tca, d2, thc, roots, t0, t1, t }` into `target` (`L` is a number triple
  * `{x, y, z}`, reused). A ray starting inside the sphere is never rejected:
  * there tca < 0 is fine, the far root is still ahead.
+ * @example
+ * const ray = new Ray([0, 0, 0], [0, 0, -1]);
+ * const { L, tca, d2, thc, t } = intersectGeometric(ray, new Sphere([0, 0, -20], 4));
+ * // L = (0, 0, -20), tca = 20, d² = 0, thc = 4: t = tca − thc = 16, as the quadratic says
  */
 export function intersectGeometric(ray, sphere, target = {}) {
   const o = ray.origin, d = ray.direction, c = sphere.center, r = sphere.radius;

@@ -52,6 +52,11 @@ export class ParallelRenderer {
    * @param {boolean} [options.fallback=true] when the workers fail, render on the main thread (false: reject)
    * @param {(error: Error) => void} [options.onProblem] told once when the workers fail and the main thread takes over
    * @param {() => Worker} [options.createWorker] starts one worker (tests pass a stand-in)
+   * @example
+   * const workers = new ParallelRenderer({ workers: 4 });
+   * workers.render(classScene(), new Camera({ width: 64, height: 48 }))
+   *   .then((rgba) => rgba.length) // the same bytes as render(); in Node (no Workers) traced on this thread
+   *   .finally(() => workers.terminate());
    */
   constructor(options = {}) {
     const { workers = globalThis.navigator?.hardwareConcurrency || 2, rowsPerBand = 'auto', timeoutMs = 6000, shared = 'auto', fallback = true, onProblem, createWorker } = checkOptions(options, OPTIONS, 'ParallelRenderer');

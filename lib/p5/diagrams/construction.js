@@ -22,6 +22,8 @@ import { focusTest } from './focus.js';
  * @param {number} o.y top
  * @param {number} o.w width
  * @param {number} o.h height
+ * @example
+ * p.drawGeometricConstruction({ record: view.selected, x: 0, y: 0, w: 480, h: 320 }); // L, tca, d, thc, r of the clicked ray
  */
 export function drawGeometricConstruction(p, o) {
   let { sphere, ray, result } = o;

@@ -1,6 +1,10 @@
 /** Numbers as the diagrams print them. */
 
-/** A number for a label: one decimal (or `digits`), '−' for minus, big ones as a×10ⁿ. */
+/**
+ * A number for a label: one decimal (or `digits`), '−' for minus, big ones as a×10ⁿ.
+ * @example
+ * fmt(-3.25);   // '−3.3' (rounded, with a real minus sign)
+ */
 export function fmt(n, digits = 1) {
   if (n === null || n === undefined || !Number.isFinite(n)) return '—';
   const minus = n < 0 ? '−' : '';

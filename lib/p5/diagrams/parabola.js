@@ -12,6 +12,8 @@ import { focusTest } from './focus.js';
  * @param {object} p a p5 instance
  * @param {object} o `{ A, B, C, t0, t1, x, y, w, h }` (t0, t1 may be null);
  *   or `{ quadratic, … }` with intersectQuadratic's result, or `{ record, … }`
+ * @example
+ * p.drawParabola({ A: 1, B: -40, C: 384, t0: 16, t1: 24, x: 0, y: 0, w: 400, h: 240 }); // two roots: two hits
  */
 export function drawParabola(p, o) {
   let q = o;

@@ -24,6 +24,11 @@ import {
  * @param {number} o.w
  * @param {number} o.h
  * @param {{umin:number, umax:number, vmin:number, vmax:number}} [o.bounds] world units along the view's axes (u = −z, v = y); default: fitted
+ * @example
+ * p.draw = () => {
+ *   p.background(255);
+ *   p.drawSideView({ scene: view.scene, camera: view.camera, record: view.selected, x: 0, y: 0, w: 320, h: 240 });
+ * };
  */
 export function drawSideView(p, o) {
   drawPlaneView(p, o, SIDE);
@@ -32,6 +37,8 @@ export function drawSideView(p, o) {
 /**
  * The top view: the scene seen from above, in the x–z plane (x to the right,
  * −z, "forward", up the page). Same options as drawSideView, with u = x, v = −z.
+ * @example
+ * p.drawTopView({ scene: view.scene, camera: view.camera, record: view.selected, x: 320, y: 0, w: 320, h: 240 });
  */
 export function drawTopView(p, o) {
   drawPlaneView(p, o, TOP);
