@@ -222,7 +222,7 @@ function readBraces(text) {
 
 /** A JSDoc type as a student reads it: `import('../scene.js').Scene` is `Scene`. */
 function cleanType(type) {
-  return type.replace(/import\(['"][^'"]+['"]\)\./g, '').replace(/\s+/g, ' ').trim();
+  return type.replace(/import\(['"]p5['"]\)\.default/g, 'p5').replace(/import\(['"][^'"]+['"]\)\./g, '').replace(/\s+/g, ' ').trim();
 }
 
 const oneLine = (text) => text.replace(/\s+/g, ' ').trim();
@@ -244,7 +244,7 @@ export function signature(item) {
   if (item.kind === 'class') return `new ${item.name}(${names.join(', ')})`;
   if (item.kind === 'p5 method') {
     const options = item.doc.params.filter((p) => /^\w+\.\w+$/.test(p.name) && !p.name.startsWith('p.')).map((p) => p.name.split('.')[1] + (p.optional ? '?' : ''));
-    return `${item.name}({ ${options.join(', ')} })`;
+    return options.length ? `p.${item.name}({ ${options.join(', ')} })` : `p.${item.name}(options)`;
   }
   if (item.kind === 'function') return `${item.name}(${names.join(', ')})`;
   if (item.kind === 'constant' && item.value) return `${item.name} = ${item.value}`;
@@ -279,9 +279,11 @@ function typeHTML(type, known) {
 }
 
 function paramsTable(item, known) {
-  const params = item.kind === 'p5 method' ? item.doc.params.filter((p) => p.name !== 'p') : item.doc.params;
+  // A p5 method: its options only (the sketch is `this`, the options object is the one argument).
+  const params = item.kind === 'p5 method' ? item.doc.params.slice(1).filter((p, i) => i > 0 || p.name.includes('.') || p.text) : item.doc.params;
   if (params.length === 0) return '';
-  const rows = params.map((p) => `<tr><td><code>${esc(p.name)}</code>${p.optional ? '' : ' <span class="required">required</span>'}</td>` +
+  const shown = (name) => (item.kind === 'p5 method' ? name.replace(/^\w+\./, '') : name); // the options object is the call's one argument
+  const rows = params.map((p) => `<tr><td><code>${esc(shown(p.name))}</code>${p.optional ? '' : ' <span class="required">required</span>'}</td>` +
     `<td><code>${typeHTML(p.type || 'any', known)}</code></td><td>${p.defaultValue === null ? '' : `<code>${esc(p.defaultValue)}</code>`}</td>` +
     `<td>${inlineCode(esc(p.text))}</td></tr>`).join('\n');
   return `<table class="params"><thead><tr><th>${item.kind === 'p5 method' ? 'option' : 'parameter'}</th><th>type</th><th>default</th><th></th></tr></thead>\n<tbody>${rows}</tbody></table>`;
