@@ -399,7 +399,7 @@ const PLAIN_NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
 
 /**
  * One CSV cell. Text a spreadsheet would run as a formula (it starts with
- * = + - @, a tab or a CR, as a name like =HYPERLINK(…) can) gets a leading '
+ * `=`, `+`, `-`, `@`, a tab or a CR, as a name like =HYPERLINK(…) can) gets a leading '
  * so it shows as text; plain numbers stay numbers. A cell with a quote, a
  * comma, a CR or a LF is quoted.
  */
