@@ -21,7 +21,7 @@ import { RAY_COLORS } from './scene-view.js';
 const OPTIONS = ['scene', 'camera', 'seed', 'eyeRadius', 'photons', 'samplePaths', 'scale', 'parent', 'label', 'budgetMs', 'link', 'sceneView'];
 
 /**
- * @param {p5} p the sketch
+ * @param {import('p5').default} p the sketch
  * @param {object} options
  * @param {import('../scene.js').Scene} options.scene
  * @param {import('../camera.js').Camera} options.camera
@@ -37,7 +37,7 @@ const OPTIONS = ['scene', 'camera', 'seed', 'eyeRadius', 'photons', 'samplePaths
  * @param {import('./scene-view.js').SceneView} [options.sceneView] a 3D view to show sample photon paths in
  * @returns {PhotonView}
  */
-export function createPhotonView(p, options = {}) {
+export function createPhotonView(p, options) {
   return new PhotonView(p, options);
 }
 

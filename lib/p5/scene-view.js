@@ -805,6 +805,7 @@ function wireSphere(g, sphere) {
 /** A box: two triangles a face, each face shaded by its normal. */
 function boxMesh(g, min, max, rgb) {
   const P = (x, y, z) => vec3(x ? max.x : min.x, y ? max.y : min.y, z ? max.z : min.z);
+  /** @type {Array<[import('../vec3.js').Vec3, import('../vec3.js').Vec3[]]>} a face: its normal and its four corners */
   const faces = [
     [vec3(1, 0, 0), [P(1, 0, 0), P(1, 1, 0), P(1, 1, 1), P(1, 0, 1)]], [vec3(-1, 0, 0), [P(0, 0, 0), P(0, 0, 1), P(0, 1, 1), P(0, 1, 0)]],
     [vec3(0, 1, 0), [P(0, 1, 0), P(0, 1, 1), P(1, 1, 1), P(1, 1, 0)]], [vec3(0, -1, 0), [P(0, 0, 0), P(1, 0, 0), P(1, 0, 1), P(0, 0, 1)]],
