@@ -75,11 +75,14 @@ export function apiReference() {
 export function apiLine() {
   return {
     name: 'api-line',
-    transformIndexHtml(html, { filename }) {
-      const script = /<script type="module" src="\.\/(\d\d-[\w-]+\.js)"><\/script>/.exec(html);
-      if (!script || !/[\\/]sketches[\\/]\d\d-[\w-]+\.html$/.test(filename)) return html;
-      const line = apiLineHTML(namesUsedBy(readFileSync(resolve('sketches', script[1]), 'utf8')));
-      return html.replace(script[0], `${line}\n  ${script[0]}`);
-    },
+    // before Vite's build rewrites the page's <script> (the line goes before it)
+    transformIndexHtml: { order: 'pre', handler: apiLineInto },
   };
+}
+
+function apiLineInto(html, { filename }) {
+  const script = /<script type="module" src="\.\/(\d\d-[\w-]+\.js)"><\/script>/.exec(html);
+  if (!script || !/[\\/]sketches[\\/]\d\d-[\w-]+\.html$/.test(filename)) return html;
+  const line = apiLineHTML(namesUsedBy(readFileSync(resolve('sketches', script[1]), 'utf8')));
+  return html.replace(script[0], `${line}\n  ${script[0]}`);
 }

@@ -4,7 +4,8 @@
 // static server and opened from file://. The picture traces, a click
 // inspects, the render worker runs from inside the one file, the console
 // stays quiet, and both ways give the same picture.
-// Then the gallery's page that teaches it shows those same files.
+// Then the gallery's page that teaches it shows those same files, and the
+// gallery and the lesson pages link into the API reference.
 import { test, expect } from '@playwright/test';
 import { execFileSync } from 'node:child_process';
 import { copyFileSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
@@ -114,5 +115,23 @@ test('the gallery\'s web-editor page shows the steps with the very files tested 
   const download = await page.request.get(await page.locator('#download').getAttribute('href', { timeout: 1000 }).then((href) => new URL(href, page.url()).href));
   expect(download.ok()).toBe(true);
   expect(await download.text()).toMatch(/^var RT = /m);
+  expect(errors).toEqual([]);
+});
+
+test('the gallery links the API reference, and a lesson page links the names its sketch uses', async ({ page }) => {
+  const errors = watchConsole(page);
+  await page.goto('/');
+  await page.getByRole('link', { name: 'API reference' }).first().click();
+  await expect(page).toHaveURL(/\/api\/$/);
+  await expect(page.locator('h1')).toHaveText('API reference');
+  for (const name of ['Scene', 'Sphere', 'Camera', 'render', 'createTracerView', 'createInspector']) {
+    await expect(page.locator(`section.item[id="${name}"]`)).toHaveCount(1);
+  }
+  await page.goto('/sketches/10-playground.html');
+  const line = page.locator('.api-line');
+  await expect(line).toContainText('API: Scene, Sphere, PointLight, Camera, createTracerView, createInspector');
+  await line.getByRole('link', { name: 'createTracerView' }).click();
+  await expect(page).toHaveURL(/\/api\/#createTracerView$/);
+  await expect(page.locator('#createTracerView')).toContainText('budgetMs');
   expect(errors).toEqual([]);
 });
