@@ -39,4 +39,19 @@ export default [
     files: ['sketches/*-homework-*.js'],
     rules: { 'no-unused-vars': ['error', { args: 'none', varsIgnorePattern: '^(Sphere|PointLight)$' }] },
   },
+  {
+    // A global-mode sketch, as the p5 web editor runs it: p5 calls setup() and draw(), p5's
+    // functions and the kit's are globals, and RT is the one-file build's library.
+    files: ['examples/web-editor/*.js'],
+    languageOptions: {
+      sourceType: 'script',
+      globals: { RT: 'readonly', noCanvas: 'readonly', createTracerView: 'readonly', createInspector: 'readonly' },
+    },
+    rules: { 'no-unused-vars': ['error', { args: 'none', varsIgnorePattern: '^(setup|draw)$' }] },
+  },
+  {
+    // The browser test of the one-file build runs code in the page, where RT is a global.
+    files: ['tests/e2e/web-editor.spec.js'],
+    languageOptions: { globals: { RT: 'readonly' } },
+  },
 ];
