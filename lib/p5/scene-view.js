@@ -753,7 +753,9 @@ function coloredVertex(mesh, p, col) {
  * per vertex, a second for the class scene's 20,000 vertices.
  */
 function toGeometry(g, { positions, colors }) {
-  return new p5.Geometry(1, 1, function () {
+  // p5's types know neither this constructor's renderer argument nor vertexColors, which p5 2.3 has.
+  const Geometry = /** @type {any} */ (p5.Geometry);
+  return new Geometry(1, 1, /** @this {any} the geometry being built */ function () {
     const n = positions.length / 3;
     for (let i = 0; i < n; i++) {
       this.vertices.push(g.createVector(positions[3 * i], positions[3 * i + 1], positions[3 * i + 2]));
