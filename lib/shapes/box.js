@@ -23,7 +23,9 @@ export class Box {
         throw new RangeError(`max.${a} must be greater than min.${a}, got ${this.max[a]} ≤ ${this.min[a]}`);
       }
     }
-    ({ name: this.name, material: this.material } = shapeOptions(material));
+    const shape = shapeOptions(material);
+    this.name = shape.name;
+    this.material = shape.material;
   }
 
   /** Smallest t > tMin where the ray meets the box, or Infinity. */

@@ -18,7 +18,9 @@ export class Plane {
     this.point = toVec3(point, 'point');
     const n = toVec3(normal, 'normal');
     this.normal = toUnit(n, n, 'normal');
-    ({ name: this.name, material: this.material } = shapeOptions(material));
+    const shape = shapeOptions(material);
+    this.name = shape.name;
+    this.material = shape.material;
   }
 
   /** t where the ray meets the plane (t > tMin), or Infinity; a ray along the plane misses. */

@@ -31,7 +31,9 @@ export class Sphere {
     finiteNumber(radius, 'radius');
     if (radius <= 0) throw new RangeError(`radius must be greater than 0, got ${radius}`);
     this.radius = radius;
-    ({ name: this.name, material: this.material } = shapeOptions(material));
+    const shape = shapeOptions(material);
+    this.name = shape.name;
+    this.material = shape.material;
   }
 
   /**

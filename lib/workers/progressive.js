@@ -46,12 +46,20 @@ export class WorkerProgressiveRenderer {
   #endedAt = 0;
 
   /**
-   * @param {object} options a ProgressiveRenderer's, and:
+   * @param {object} options a ProgressiveRenderer's:
+   * @param {import('../scene.js').Scene} options.scene
+   * @param {import('../camera.js').Camera} options.camera
+   * @param {'coarse'|'scanline'|'slow'} [options.mode='coarse']
+   * @param {number} [options.budgetMs=8] tracing time per step(), milliseconds
+   * @param {Function} [options.shader=renderPixel] writes one pixel (see ProgressiveRenderer)
+   * @param {number} [options.slowRaysPerStep=1] pixels per step() in 'slow' mode
+   * @param {() => number} [options.now=performance.now] the clock, in milliseconds
+   *   and its own:
    * @param {'auto'|number|false} [options.workers='auto'] how many workers large frames use ('auto': one per core; false: none)
    * @param {number} [options.minPixels=MIN_PIXELS] frames from this many pixels up go to the workers
    * @param {() => Worker} [options.createWorker] starts one worker (tests pass a stand-in)
    */
-  constructor({ workers = 'auto', minPixels = MIN_PIXELS, createWorker, ...options } = {}) {
+  constructor({ workers = 'auto', minPixels = MIN_PIXELS, createWorker, ...options } = /** @type {any} */ ({})) {
     if (workers !== 'auto' && workers !== false && !(Number.isInteger(workers) && workers > 0)) {
       throw new RangeError(`workers must be 'auto', false or a positive whole number, got ${show(workers)}`);
     }
@@ -170,7 +178,7 @@ export class WorkerProgressiveRenderer {
       this.#waiting = true;
       return;
     }
-    this.#parallel ??= new ParallelRenderer({ workers: this.#workers, fallback: false, createWorker: this.#createWorker }).warm();
+    this.#parallel ??= new ParallelRenderer({ workers: /** @type {number} */ (this.#workers), fallback: false, createWorker: this.#createWorker }).warm();
     const generation = this.#generation;
     const current = () => generation === this.#generation;
     this.#inFlight = true;
