@@ -63,6 +63,8 @@ function parseString(text, field) {
 
 /**
  * '#rrggbb' for 0–255 channel values (clamped, so the answer is always six digits).
+ * @param {Iterable<number>} rgb `[r, g, b]`, each 0–255
+ * @returns {string}
  * @example
  * toHex([255, 81, 96]); // '#ff5160'
  */
