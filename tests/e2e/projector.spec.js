@@ -63,7 +63,7 @@ test('on a 1920 px screen the text, the pictures and the diagrams are bigger tha
       rem: await page.evaluate(() => parseFloat(getComputedStyle(document.documentElement).fontSize)),
       label: await page.locator('h1').evaluate((h) => parseFloat(getComputedStyle(h).fontSize)),
       picture: (await view.boundingBox()).width,
-      diagram: diagram ? (await page.locator(diagram).boundingBox()).width : 0,
+      diagram: diagram ? (await page.locator(diagram).first().boundingBox()).width : 0,
     };
   };
   for (const [file, diagram] of [['03-the-geometric-approach', '#diagram > canvas'], ['06-lights-shadows-reflections'], ['05-value-boxes']]) {
