@@ -17,6 +17,7 @@
  * the picture only now and then, so the trace keeps its pace.
  */
 import p5 from 'p5';
+import { clamp } from '../numbers.js';
 import { Sphere, intersectGeometric } from '../shapes/sphere.js';
 import { Plane } from '../shapes/plane.js';
 import { Box } from '../shapes/box.js';
@@ -26,7 +27,7 @@ import { show, checkOptions } from '../check.js';
 import {
   imagePlane, pixelCenter, pickImagePlane, geometricConstruction, raySegments, sceneBounds, orbitCamera, screenRay, projectToScreen, HUGE_RADIUS,
 } from '../rays3d.js';
-import { useStyle, element } from './dom.js';
+import { useStyle, element, resolveParent } from './dom.js';
 import { INK, MUTED, RAY, NORMAL, LIT, SHADOW, CONSTRUCT, FONT } from './diagrams/style.js';
 
 /** Vertical field of view of the 3D view's own camera, radians. */
@@ -640,7 +641,7 @@ export class SceneView {
       this.bar.append(shoot, speedLabel, reset);
     }
     this.figure.append(this.bar);
-    const host = resolveParent(parent);
+    const host = resolveParent(parent, null);
     if (host) host.append(this.figure); else this.#view.figure.after(this.figure);
     this.#ready = new Promise((resolve) => {
       new p5((q) => {
@@ -869,20 +870,4 @@ function checkOrbit(orbit) {
 /** When a segment starts to grow, in legs of the flight: a ray of depth d after d legs, the normal and shadow rays at its end. */
 function startOf(s) {
   return s.kind === 'normal' || s.kind === 'shadow' ? s.depth + 1 : s.depth;
-}
-
-function clamp(v, lo, hi) {
-  return v < lo ? lo : v > hi ? hi : v;
-}
-
-function resolveParent(parent) {
-  if (parent == null) return null;
-  if (typeof parent === 'string') {
-    const found = document.getElementById(parent) ?? document.querySelector(parent);
-    if (!found) throw new TypeError(`parent: no element with id or selector ${show(parent)}`);
-    return found;
-  }
-  if (parent.elt instanceof HTMLElement) return parent.elt;
-  if (parent instanceof HTMLElement) return parent;
-  throw new TypeError(`parent must be an element, its id or a p5.Element, got ${show(parent)}`);
 }

@@ -15,6 +15,7 @@
  * works the same whether the sketch has a draw(), animates, or calls noLoop()).
  * A sketch that animates just calls `view.setCamera(…)` from its draw().
  */
+import { clamp } from '../numbers.js';
 import { MODES as RENDER_MODES } from '../progressive.js';
 import { WorkerProgressiveRenderer } from '../workers/progressive.js';
 import { modeShader, modeLegend } from '../modes.js';
@@ -481,10 +482,6 @@ function drawCrosshair(g, x, y, k, W, H) {
 /** The root element's font size in px (1rem). */
 function rootFontSize() {
   return parseFloat(getComputedStyle(document.documentElement).fontSize) || BASE_REM;
-}
-
-function clamp(v, lo, hi) {
-  return v < lo ? lo : v > hi ? hi : v;
 }
 
 function formatRate(n) {
