@@ -43,8 +43,7 @@ export function expectQuietConsole(test) {
  * canvas is visible, still and the one that receives the click.
  */
 export async function clickPixel(canvas, x, y) {
-  // A web font arriving late reflows the page: the canvas would move under the pointer.
-  await canvas.page().evaluate(() => document.fonts.ready);
+  await settled(canvas); // a late font or stylesheet would move the canvas under the pointer
   const box = await canvas.boundingBox();
   const width = Number(await canvas.getAttribute('data-width'));
   const height = Number(await canvas.getAttribute('data-height'));
@@ -64,9 +63,8 @@ export async function clickPixel(canvas, x, y) {
  */
 export async function expectCanvasScreenshot(canvas, name) {
   const page = canvas.page();
-  await page.evaluate(() => document.fonts.ready); // late fonts would move the canvas after we measure
   await canvas.scrollIntoViewIfNeeded();
-  const { clip, cssWidth, cssHeight } = await canvas.evaluate(paintedClip);
+  const { clip, cssWidth, cssHeight } = await settled(canvas); // measured where it stays
   const referencePath = test.info().snapshotPath(name, { kind: 'screenshot' });
   const isNew = !existsSync(referencePath);
   await expect(page).toHaveScreenshot(name, { clip });
@@ -89,6 +87,32 @@ export function firstPictureHelp(url, name) {
 }
 
 /** In the page: the screen pixels the canvas is painted on (its edges rounded, as Chromium paints it). */
+/**
+ * Waits until the page has its fonts and stylesheets (the tracer view links
+ * its own at run time) and the canvas stands still for two frames, and returns
+ * where it is painted: a late reflow would otherwise move or resize the canvas
+ * between measuring it and clicking or capturing it.
+ */
+async function settled(canvas) {
+  await canvas.page().evaluate(async () => {
+    await document.fonts.ready;
+    const pending = [...document.querySelectorAll('link[rel="stylesheet"]')].filter((link) => !link.sheet);
+    await Promise.all(pending.map((link) => new Promise((done) => {
+      link.addEventListener('load', done, { once: true });
+      link.addEventListener('error', done, { once: true });
+    })));
+  });
+  let last = null;
+  for (let tries = 0; tries < 20; tries++) {
+    const now = await canvas.evaluate((c) => new Promise((done) => {
+      requestAnimationFrame(() => requestAnimationFrame(() => done(c.getBoundingClientRect().toJSON())));
+    }));
+    if (last && ['x', 'y', 'width', 'height'].every((k) => now[k] === last[k])) break;
+    last = now;
+  }
+  return canvas.evaluate(paintedClip);
+}
+
 function paintedClip(canvas) {
   const r = canvas.getBoundingClientRect();
   const x = Math.round(r.left), y = Math.round(r.top);
