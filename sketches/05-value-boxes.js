@@ -9,11 +9,8 @@
  * The scene travels in the page's link (#scene=…, compressed) and as code.
  */
 import p5 from 'p5';
-import { Camera, classScene } from '../lib/index.js';
-import { sceneToJSON, sceneToCode } from '../lib/serialize.js';
-import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
-import { readSceneLink, sceneLinkURL, linkNotice } from '../lib/p5/scene-link.js';
-import { element } from '../lib/p5/dom.js';
+import { Camera, classScene, sceneToJSON, sceneToCode } from '../lib/index.js';
+import { readSceneLink, sceneLinkURL, linkNotice, element } from '../lib/p5/index.js'; // and the p5 addon: p.createTracerView, …
 
 // The picture: its size in pixels and how wide the eye sees.
 const WIDTH = 160;

@@ -24,3 +24,6 @@ export { Animation } from './animation.js';
 export { exampleInLink } from './example-picker.js';
 export { fmt } from './diagrams/format.js';
 export { pageRenderState } from './page-state.js';
+// A scene in the page's link (#scene=…), and page parts built from text, never parsed as HTML:
+export { readSceneLink, sceneLinkURL, linkNotice } from './scene-link.js';
+export { element } from './dom.js';
