@@ -94,6 +94,18 @@ export function firstPictureHelp(url, name) {
  * between measuring it and clicking or capturing it.
  */
 async function settled(canvas) {
+  // A live sketch's save can reload the page once more while we wait: wait for that page instead.
+  for (let attempt = 0; ; attempt++) {
+    try {
+      return await settledOnce(canvas);
+    } catch (error) {
+      if (attempt >= 3 || !/Execution context was destroyed|navigat/i.test(error.message)) throw error;
+      await canvas.page().waitForLoadState('load');
+    }
+  }
+}
+
+async function settledOnce(canvas) {
   await canvas.page().evaluate(async () => {
     await document.fonts.ready;
     const pending = [...document.querySelectorAll('link[rel="stylesheet"]')].filter((link) => !link.sheet);
