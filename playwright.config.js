@@ -4,6 +4,7 @@ import { findBrowser } from './scripts/find-browser.js';
 // PW_PORT lets several test runs share a machine without sharing a server.
 const PORT = Number(process.env.PW_PORT ?? 5199);
 const executablePath = findBrowser() ?? undefined;
+const LIVE_SPECS = ['**/mistakes.spec.js', '**/saves.spec.js'];
 
 // Screenshots are of traced canvases only, at a pinned viewport, headless.
 export default defineConfig({
@@ -25,6 +26,12 @@ export default defineConfig({
     headless: true,
     launchOptions: { executablePath },
   },
+  // Live-coding tests write sketch files the dev server watches; the reloads
+  // those saves cause must not reach other tests' pages: they run last, alone.
+  projects: [
+    { name: 'pages', testIgnore: LIVE_SPECS },
+    { name: 'live', testMatch: LIVE_SPECS, dependencies: ['pages'], workers: 1, fullyParallel: false },
+  ],
   webServer: {
     command: `node_modules/.bin/vite --port ${PORT} --strictPort`,
     url: `http://localhost:${PORT}/`,
