@@ -33,30 +33,23 @@ export function createHomeworkCheck(p, options) {
 }
 
 /**
- * Shows a check's result in `element` (a DOM element): a headline ("Passed!"
+ * Shows a check's result in `target` (a DOM element): a headline ("Passed!"
  * or "Not yet: n checks to fix") and one line per check, ✓, ✗ or – (waiting),
  * with its message. The element gets `data-check="passed"|"not-yet"`; each
  * line `data-check-item="passed"|"failed"|"skipped"`.
  */
-export function showCheck(element, { passed, checks }) {
-  const doc = element.ownerDocument;
-  const make = (tag, attributes, text) => {
-    const el = doc.createElement(tag);
-    for (const [k, v] of Object.entries(attributes)) el.setAttribute(k, v);
-    if (text !== undefined) el.textContent = text;
-    return el;
-  };
+export function showCheck(target, { passed, checks }) {
   const toFix = checks.filter((c) => !c.passed && !c.skipped && !c.bonus).length;
   const headline = passed ? 'Passed! Your scene does what the task asks.'
     : `Not yet: ${toFix} ${toFix === 1 ? 'check' : 'checks'} to fix.`;
-  const list = make('ul', { class: 'hw-checks' });
+  const list = element('ul', { class: 'hw-checks' });
   for (const c of checks) {
     const state = c.passed ? 'passed' : c.skipped ? 'skipped' : 'failed';
-    const item = make('li', { 'data-check-item': state, class: `hw-${state}${c.bonus ? ' hw-bonus' : ''}` });
-    item.append(make('span', { class: 'hw-mark', 'aria-hidden': 'true' }, c.passed ? '✓' : c.skipped ? '–' : '✗'),
-      make('b', {}, c.label), make('span', { class: 'hw-detail' }, c.detail));
+    const item = element('li', { 'data-check-item': state, class: `hw-${state}${c.bonus ? ' hw-bonus' : ''}` });
+    item.append(element('span', { class: 'hw-mark', 'aria-hidden': 'true' }, c.passed ? '✓' : c.skipped ? '–' : '✗'),
+      element('b', {}, c.label), element('span', { class: 'hw-detail' }, c.detail));
     list.append(item);
   }
-  element.dataset.check = passed ? 'passed' : 'not-yet';
-  element.replaceChildren(make('p', { class: 'hw-headline' }, headline), list);
+  target.dataset.check = passed ? 'passed' : 'not-yet';
+  target.replaceChildren(element('p', { class: 'hw-headline' }, headline), list);
 }
