@@ -4,7 +4,7 @@
  * `fov` is the vertical field of view. Pixel (0, 0) is the top-left one, and
  * each ray passes through its pixel's centre.
  */
-import { toVec3, vec3, normalize } from './vec3.js';
+import { toVec3, Vec3, normalize } from './vec3.js';
 import { finiteNumber, numberInRange, positiveInteger, checkOptions } from './check.js';
 import { Ray } from './ray.js';
 import { RAD_PER_DEG } from './constants.js';
@@ -51,15 +51,15 @@ export class Camera {
   #setBasis() {
     const cy = Math.cos(this.yaw * RAD_PER_DEG), sy = Math.sin(this.yaw * RAD_PER_DEG);
     const cp = Math.cos(this.pitch * RAD_PER_DEG), sp = Math.sin(this.pitch * RAD_PER_DEG);
-    this.right = vec3(cy, 0, sy);
-    this.up = vec3(-sy * sp, cp, cy * sp);
-    this.forward = vec3(sy * cp, sp, -cy * cp);
+    this.right = new Vec3(cy, 0, sy);
+    this.up = new Vec3(-sy * sp, cp, cy * sp);
+    this.forward = new Vec3(sy * cp, sp, -cy * cp);
     this.halfHeight = Math.tan((this.fov * RAD_PER_DEG) / 2);
     this.halfWidth = (this.halfHeight * this.width) / this.height;
   }
 
   /** Writes the unit direction of the ray through pixel (x, y) into `out`. */
-  directionAt(x, y, out = vec3()) {
+  directionAt(x, y, out = new Vec3()) {
     const sx = (2 * (x + 0.5) / this.width - 1) * this.halfWidth;
     const sy = (1 - 2 * (y + 0.5) / this.height) * this.halfHeight;
     const r = this.right, u = this.up, f = this.forward;

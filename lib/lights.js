@@ -2,7 +2,7 @@
  * Lights. A point light is a position and a colour; an emissive object (a
  * sphere whose material has an emission) is a light too, at its centre.
  */
-import { toVec3, vec3 } from './vec3.js';
+import { toVec3, Vec3 } from './vec3.js';
 import { toColor, MAX_COLOR } from './color.js';
 import { finiteNumber, checkOptions, show } from './check.js';
 
@@ -58,7 +58,7 @@ export function lightSource(item) {
 
 function middle(item) {
   if (item.min && item.max) {
-    return vec3((item.min.x + item.max.x) / 2, (item.min.y + item.max.y) / 2, (item.min.z + item.max.z) / 2);
+    return new Vec3((item.min.x + item.max.x) / 2, (item.min.y + item.max.y) / 2, (item.min.z + item.max.z) / 2);
   }
-  return item.point ?? vec3();
+  return item.point ?? new Vec3();
 }

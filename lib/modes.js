@@ -8,7 +8,7 @@
  * at (y·width + x)·4. Shaders allocate nothing: scratch objects live here.
  */
 import { Ray } from './ray.js';
-import { copy, scaleAndAdd, vec3 } from './vec3.js';
+import { copy, scaleAndAdd, Vec3 } from './vec3.js';
 import { angles } from './camera.js';
 import { intersectQuadratic, Sphere } from './shapes/sphere.js';
 import { nearestHit } from './trace.js';
@@ -50,8 +50,8 @@ const DECADES = 6;
 const _ray = new Ray();
 const _quadratic = { A: 0, B: 0, C: 0, discriminant: 0, roots: 0, t0: 0, t1: 0, t: 0 };
 const _hit = { object: null, t: Infinity };
-const _point = vec3();
-const _normal = vec3();
+const _point = new Vec3();
+const _normal = new Vec3();
 const _rgb = [0, 0, 0];
 /** What `sphereFocus` found: the sphere that matters, its discriminant and root count. */
 const _focus = { index: -1, discriminant: 0, roots: 0 };
@@ -191,7 +191,7 @@ export function angleRange(camera) {
   if (c.camera === camera && c.width === camera.width && c.height === camera.height &&
       c.fov === camera.fov && c.yaw === camera.yaw && c.pitch === camera.pitch) return c;
   let h = 0, v = 0;
-  const d = vec3(), W = camera.width - 1, H = camera.height - 1;
+  const d = new Vec3(), W = camera.width - 1, H = camera.height - 1;
   // The extremes lie on the image's border: corners and edge midpoints.
   for (const [px, py] of [[0, 0], [W, 0], [0, H], [W, H], [W / 2, 0], [W / 2, H], [0, H / 2], [W, H / 2]]) {
     const a = angles(camera.directionAt(px, py, d));

@@ -8,7 +8,7 @@
  * Deterministic: the same seed gives the same photons, however the work is
  * split into steps.
  */
-import { vec3, dot, normalize, set } from './vec3.js';
+import { Vec3, dot, normalize, set } from './vec3.js';
 import { Ray } from './ray.js';
 import { Sphere } from './shapes/sphere.js';
 import { nearestHit } from './trace.js';
@@ -125,7 +125,7 @@ export class PhotonTracer {
       }
       if (!found) { points?.push(at(ray, 30)); break; } // off into the sky: lost
       const object = this.#hit.object, P = at(ray, this.#hit.t, _P);
-      points?.push(vec3(P.x, P.y, P.z));
+      points?.push(new Vec3(P.x, P.y, P.z));
       if (object.material.isEmissive) break; // back into a light
       const c = object.material.color;
       power[0] *= c[0]; power[1] *= c[1]; power[2] *= c[2];
@@ -163,20 +163,20 @@ export class PhotonTracer {
     const c = sphere.center, r = sphere.radius + this.scene.bias;
     ray.origin.x = c.x + n.x * r; ray.origin.y = c.y + n.y * r; ray.origin.z = c.z + n.z * r;
     cosineDirection(ray.direction, n, this.random);
-    return vec3(ray.origin.x, ray.origin.y, ray.origin.z);
+    return new Vec3(ray.origin.x, ray.origin.y, ray.origin.z);
   }
 
   /** A photon leaves a point light in any direction. */
   #leavePoint(p, ray) {
     ray.origin.x = p.x; ray.origin.y = p.y; ray.origin.z = p.z;
     uniformDirection(ray.direction, this.random);
-    return vec3(p.x, p.y, p.z);
+    return new Vec3(p.x, p.y, p.z);
   }
 }
 
-const _P = vec3(), _N = vec3(), _t = vec3(), _b = vec3(), _tt = vec3();
+const _P = new Vec3(), _N = new Vec3(), _t = new Vec3(), _b = new Vec3(), _tt = new Vec3();
 
-function at(ray, t, out = vec3()) {
+function at(ray, t, out = new Vec3()) {
   const o = ray.origin, d = ray.direction;
   out.x = o.x + d.x * t; out.y = o.y + d.y * t; out.z = o.z + d.z * t;
   return out;

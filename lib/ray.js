@@ -1,7 +1,7 @@
 /**
  * A ray R(t) = Ro + Rd·t, t > 0, with Rd normalised (the lesson's slide 2).
  */
-import { toVec3, toUnit, scaleAndAdd, vec3 } from './vec3.js';
+import { toVec3, toUnit, scaleAndAdd, Vec3 } from './vec3.js';
 
 export class Ray {
   /**
@@ -18,7 +18,7 @@ export class Ray {
   }
 
   /** The point R(t), written into `out`. */
-  at(t, out = vec3()) {
+  at(t, out = new Vec3()) {
     return scaleAndAdd(out, this.origin, this.direction, t);
   }
 }

@@ -10,7 +10,7 @@
  * centre also passes through the same pixel of a plane at any other distance,
  * so the view may show it further out, where it is big enough to see.
  */
-import { vec3, dot, cross, normalize, scaleAndAdd, sub, reflect, length } from './vec3.js';
+import { Vec3, dot, cross, normalize, scaleAndAdd, sub, reflect, length } from './vec3.js';
 import { Sphere } from './shapes/sphere.js';
 import { nearestHit } from './trace.js';
 import { Ray } from './ray.js';
@@ -28,7 +28,7 @@ export const HUGE_RADIUS = 1000;
  * coordinates (u, v): u from 0 (left edge) to width, v from 0 (top edge) to
  * height; the centre of pixel (x, y) is (x + 0.5, y + 0.5).
  */
-export function imagePoint(camera, u, v, distance = 1, out = vec3()) {
+export function imagePoint(camera, u, v, distance = 1, out = new Vec3()) {
   const sx = (2 * u / camera.width - 1) * camera.halfWidth;
   const sy = (1 - 2 * v / camera.height) * camera.halfHeight;
   const e = camera.position, r = camera.right, up = camera.up, f = camera.forward;
@@ -39,7 +39,7 @@ export function imagePoint(camera, u, v, distance = 1, out = vec3()) {
 }
 
 /** The centre of pixel (x, y) on the image plane at `distance`: the primary ray passes through it. */
-export function pixelCenter(camera, x, y, distance = 1, out = vec3()) {
+export function pixelCenter(camera, x, y, distance = 1, out = new Vec3()) {
   return imagePoint(camera, x + 0.5, y + 0.5, distance, out);
 }
 
@@ -89,10 +89,10 @@ export function pickImagePlane(camera, distance, origin, direction) {
   const denom = dot(direction, f);
   if (Math.abs(denom) < 1e-12) return null; // along the plane
   const center = imagePoint(camera, camera.width / 2, camera.height / 2, distance);
-  const t = dot(sub(vec3(), center, origin), f) / denom;
+  const t = dot(sub(new Vec3(), center, origin), f) / denom;
   if (!(t > 0)) return null;
-  const point = scaleAndAdd(vec3(), origin, direction, t);
-  const offset = sub(vec3(), point, center);
+  const point = scaleAndAdd(new Vec3(), origin, direction, t);
+  const offset = sub(new Vec3(), point, center);
   const sx = dot(offset, camera.right) / distance, sy = dot(offset, camera.up) / distance;
   const u = ((sx / camera.halfWidth + 1) / 2) * camera.width;
   const v = ((1 - sy / camera.halfHeight) / 2) * camera.height;
@@ -121,11 +121,11 @@ export function raySegments(scene, record, { missLength = 40, normalLength = 2 }
 
 function addRay(out, scene, kind, depth, origin, direction, hit, opts) {
   if (!hit) {
-    out.push({ kind, depth, hit: false, from: origin, to: scaleAndAdd(vec3(), origin, direction, opts.missLength) });
+    out.push({ kind, depth, hit: false, from: origin, to: scaleAndAdd(new Vec3(), origin, direction, opts.missLength) });
     return;
   }
   out.push({ kind, depth, hit: true, from: origin, to: hit.point, object: hit.object, t: hit.t });
-  out.push({ kind: 'normal', depth, from: hit.point, to: scaleAndAdd(vec3(), hit.point, hit.normal, opts.normalLength) });
+  out.push({ kind: 'normal', depth, from: hit.point, to: scaleAndAdd(new Vec3(), hit.point, hit.normal, opts.normalLength) });
   for (const l of hit.lights) {
     out.push({
       kind: 'shadow', depth, from: hit.point, to: l.position, light: l.light,
@@ -134,7 +134,7 @@ function addRay(out, scene, kind, depth, origin, direction, hit, opts) {
     });
   }
   if (hit.reflection) {
-    const d = reflect(vec3(), direction, hit.normal);
+    const d = reflect(new Vec3(), direction, hit.normal);
     addRay(out, scene, 'reflection', depth + 1, hit.point, d, hit.reflection.hit, opts);
   }
   if (hit.refraction) {
@@ -153,7 +153,7 @@ function blocker(scene, hit, l) {
   const lightObject = scene.lights.find((s) => s.source === l.light)?.object;
   const objects = scene.objects.filter((o) => o !== lightObject);
   if (!nearestHit(objects, _shadow, _hit, scene.epsilon) || _hit.t >= l.distance - scene.bias) return null;
-  return scaleAndAdd(vec3(), _shadow.origin, _shadow.direction, _hit.t);
+  return scaleAndAdd(new Vec3(), _shadow.origin, _shadow.direction, _hit.t);
 }
 
 /** Snell's law, as trace.js bends a ray into or out of glass. */
@@ -161,7 +161,7 @@ function refracted(d, n, inside, ior) {
   const cosi = -dot(d, n), eta = inside ? ior : 1 / ior;
   const k = Math.max(0, 1 - eta * eta * (1 - cosi * cosi));
   const s = eta * cosi - Math.sqrt(k);
-  return normalize(vec3(), vec3(eta * d.x + s * n.x, eta * d.y + s * n.y, eta * d.z + s * n.z));
+  return normalize(new Vec3(), new Vec3(eta * d.x + s * n.x, eta * d.y + s * n.y, eta * d.z + s * n.z));
 }
 
 /**
@@ -172,10 +172,10 @@ function refracted(d, n, inside, ior) {
  */
 export function geometricConstruction(ray, sphere, geometric) {
   const o = ray.origin, c = sphere.center;
-  const closest = scaleAndAdd(vec3(), o, ray.direction, geometric.tca);
+  const closest = scaleAndAdd(new Vec3(), o, ray.direction, geometric.tca);
   const parts = {
     L: [o, c], tca: [o, closest], d: [closest, c],
-    thc: geometric.thc === null ? null : [closest, scaleAndAdd(vec3(), o, ray.direction, geometric.tca - geometric.thc)],
+    thc: geometric.thc === null ? null : [closest, scaleAndAdd(new Vec3(), o, ray.direction, geometric.tca - geometric.thc)],
   };
   return parts;
 }
@@ -191,17 +191,17 @@ export function sceneBounds(scene, camera, planeDistance) {
   for (const o of scene.objects) {
     if (o instanceof Sphere) {
       if (o.radius > HUGE_RADIUS) continue;
-      for (const s of [-1, 1]) pts.push(vec3(o.center.x + s * o.radius, o.center.y + s * o.radius, o.center.z + s * o.radius));
+      for (const s of [-1, 1]) pts.push(new Vec3(o.center.x + s * o.radius, o.center.y + s * o.radius, o.center.z + s * o.radius));
     } else if (o.min) pts.push(o.min, o.max);
   }
   for (const l of scene.lights) pts.push(l.position);
-  const min = vec3(Infinity, Infinity, Infinity), max = vec3(-Infinity, -Infinity, -Infinity);
+  const min = new Vec3(Infinity, Infinity, Infinity), max = new Vec3(-Infinity, -Infinity, -Infinity);
   for (const p of pts) {
     min.x = Math.min(min.x, p.x); min.y = Math.min(min.y, p.y); min.z = Math.min(min.z, p.z);
     max.x = Math.max(max.x, p.x); max.y = Math.max(max.y, p.y); max.z = Math.max(max.z, p.z);
   }
-  const center = vec3((min.x + max.x) / 2, (min.y + max.y) / 2, (min.z + max.z) / 2);
-  return { center, radius: length(sub(vec3(), max, center)), min, max };
+  const center = new Vec3((min.x + max.x) / 2, (min.y + max.y) / 2, (min.z + max.z) / 2);
+  return { center, radius: length(sub(new Vec3(), max, center)), min, max };
 }
 
 /**
@@ -211,10 +211,10 @@ export function sceneBounds(scene, camera, planeDistance) {
  */
 export function orbitCamera({ target, yaw, pitch, distance }) {
   const a = (yaw * Math.PI) / 180, b = (pitch * Math.PI) / 180;
-  const forward = vec3(Math.sin(a) * Math.cos(b), -Math.sin(b), -Math.cos(a) * Math.cos(b));
-  const eye = scaleAndAdd(vec3(), target, forward, -distance);
-  const right = normalize(vec3(), cross(vec3(), forward, vec3(0, 1, 0)));
-  const up = cross(vec3(), right, forward);
+  const forward = new Vec3(Math.sin(a) * Math.cos(b), -Math.sin(b), -Math.cos(a) * Math.cos(b));
+  const eye = scaleAndAdd(new Vec3(), target, forward, -distance);
+  const right = normalize(new Vec3(), cross(new Vec3(), forward, new Vec3(0, 1, 0)));
+  const up = cross(new Vec3(), right, forward);
   return { eye, target, forward, right, up };
 }
 
@@ -226,7 +226,7 @@ export function orbitCamera({ target, yaw, pitch, distance }) {
 export function screenRay(orbit, px, py, w, h, fovy) {
   const t = Math.tan(fovy / 2);
   const sx = (2 * px / w - 1) * t * (w / h), sy = (1 - 2 * py / h) * t;
-  const d = vec3(
+  const d = new Vec3(
     orbit.forward.x + sx * orbit.right.x + sy * orbit.up.x,
     orbit.forward.y + sx * orbit.right.y + sy * orbit.up.y,
     orbit.forward.z + sx * orbit.right.z + sy * orbit.up.z,
@@ -236,7 +236,7 @@ export function screenRay(orbit, px, py, w, h, fovy) {
 
 /** Where a scene point lands on the orbit camera's canvas (px), or null behind it. */
 export function projectToScreen(orbit, point, w, h, fovy) {
-  const rel = sub(vec3(), point, orbit.eye);
+  const rel = sub(new Vec3(), point, orbit.eye);
   const z = dot(rel, orbit.forward);
   if (z <= 1e-6) return null;
   const t = Math.tan(fovy / 2);

@@ -8,7 +8,7 @@
  * `trace` fills `out` ([r, g, b], 0–1 and above) and allocates nothing; given a
  * `steps` object it also records every intermediate value for the inspector.
  */
-import { vec3, dot, copy, scaleAndAdd, reflect } from './vec3.js';
+import { Vec3, dot, copy, scaleAndAdd, reflect } from './vec3.js';
 import { Ray } from './ray.js';
 import { EPSILON, DEG_PER_RAD } from './constants.js';
 
@@ -184,8 +184,8 @@ const frames = [];
 function newFrame(depth) {
   while (frames.length <= depth) {
     frames.push({
-      hit: { object: null, t: Infinity }, point: vec3(), normal: vec3(), toLight: vec3(),
-      mirror: vec3(), shadowRay: new Ray(), reflected: new Ray(), refracted: new Ray(),
+      hit: { object: null, t: Infinity }, point: new Vec3(), normal: new Vec3(), toLight: new Vec3(),
+      mirror: new Vec3(), shadowRay: new Ray(), reflected: new Ray(), refracted: new Ray(),
       mirrorColor: [0.5, 0.5, 0.5], throughColor: [0.5, 0.5, 0.5],
     });
   }
@@ -198,7 +198,7 @@ function hitRecord(steps, object, f, ray, inside, scene) {
   const cos = Math.min(1, Math.abs(dot(ray.direction, f.normal)));
   steps.hit = {
     object, index: scene.objects.indexOf(object), t: f.hit.t,
-    point: copy(vec3(), f.point), normal: copy(vec3(), f.normal), inside,
+    point: copy(new Vec3(), f.point), normal: copy(new Vec3(), f.normal), inside,
     incidence: Math.acos(cos) * DEG_PER_RAD, lights: [],
     emission: [...object.material.emission],
     ambient: object.material.color.map((c) => c * scene.ambient),
@@ -210,7 +210,7 @@ function hitRecord(steps, object, f, ray, inside, scene) {
 function recordLight(record, light, cos, transmission, diffuse, highlight, c, distance) {
   const e = light.emission;
   record.lights.push({
-    light: light.source, position: copy(vec3(), light.position), distance,
+    light: light.source, position: copy(new Vec3(), light.position), distance,
     cos, facing: cos > 0, inShadow: cos > 0 && transmission < 1, transmission,
     contribution: [0, 1, 2].map((i) => e[i] * (c[i] * diffuse + highlight)),
     specular: highlight,

@@ -19,8 +19,8 @@ export class Vec3 {
   }
 }
 
-/** A new vector. */
-export function vec3(x = 0, y = 0, z = 0) {
+/** A new vector (gl-matrix's name; modules write `new Vec3(x, y, z)`). */
+export function create(x = 0, y = 0, z = 0) {
   return new Vec3(x, y, z);
 }
 
@@ -126,5 +126,5 @@ export function toVec3(value, field) {
   } else {
     throw new TypeError(`${field} must be [x, y, z] or {x, y, z}, got ${show(value)}`);
   }
-  return vec3(finiteNumber(x, `${field}.x`), finiteNumber(y, `${field}.y`), finiteNumber(z, `${field}.z`));
+  return new Vec3(finiteNumber(x, `${field}.x`), finiteNumber(y, `${field}.y`), finiteNumber(z, `${field}.z`));
 }

@@ -22,7 +22,7 @@ import { Sphere, intersectGeometric } from '../shapes/sphere.js';
 import { Plane } from '../shapes/plane.js';
 import { Box } from '../shapes/box.js';
 import { inspectPixel } from '../explain.js';
-import { vec3, sub, dot, normalize, cross } from '../vec3.js';
+import { Vec3, sub, dot, normalize, cross } from '../vec3.js';
 import { show, checkOptions } from '../check.js';
 import {
   imagePlane, pixelCenter, pickImagePlane, geometricConstruction, raySegments, sceneBounds, orbitCamera, screenRay, projectToScreen, HUGE_RADIUS,
@@ -259,7 +259,7 @@ export class SceneView {
     this.#bounds = sceneBounds(scene, camera, this.#planeDistance);
     // look at a point between the middle of the scene and the eye: the eye, the image plane and the rays are the lesson
     const c = this.#bounds.center, e = camera.position;
-    this.#target = vec3(c.x + (e.x - c.x) * 0.45, c.y + (e.y - c.y) * 0.45, c.z + (e.z - c.z) * 0.45);
+    this.#target = new Vec3(c.x + (e.x - c.x) * 0.45, c.y + (e.y - c.y) * 0.45, c.z + (e.z - c.z) * 0.45);
     this.#home = { ...HOME, distance: this.#bounds.radius * 0.95 };
     if (!this.#orbit) return;
     this.#pictureKey = '';
@@ -343,7 +343,7 @@ export class SceneView {
     const g = intersectGeometric(record.ray, sphere);
     const parts = geometricConstruction(record.ray, sphere, g);
     // labels part-way along, so that L and tca (both from the eye) do not sit on each other
-    const along = ([a, b], k) => vec3(a.x + (b.x - a.x) * k, a.y + (b.y - a.y) * k, a.z + (b.z - a.z) * k);
+    const along = ([a, b], k) => new Vec3(a.x + (b.x - a.x) * k, a.y + (b.y - a.y) * k, a.z + (b.z - a.z) * k);
     const add = (seg, color, text, k, dy) => {
       if (!seg) return;
       this.#construction.push({ from: seg[0], to: seg[1], color, weight: 3 });
@@ -441,7 +441,7 @@ export class SceneView {
       for (const s of f.segments) {
         const k = clamp(phase - startOf(s), 0, 1);
         if (k <= 0) continue;
-        const to = vec3(s.from.x + (s.to.x - s.from.x) * k, s.from.y + (s.to.y - s.from.y) * k, s.from.z + (s.to.z - s.from.z) * k);
+        const to = new Vec3(s.from.x + (s.to.x - s.from.x) * k, s.from.y + (s.to.y - s.from.y) * k, s.from.z + (s.to.z - s.from.z) * k);
         this.#drawSegment(g, { ...s, to, blockedAt: k === 1 ? s.blockedAt : null, hit: s.hit && k === 1 });
       }
       return true;
@@ -469,7 +469,7 @@ export class SceneView {
       const rgb = m.isEmissive ? GLOW : m.color.map((c) => Math.min(1, c));
       if (object === this.#constructionSphere) continue; // drawn as a wire ball: the construction is inside it
       if (object instanceof Sphere) {
-        if (object.radius > HUGE_RADIUS) this.#groundPatch(mesh, object.center, sub(vec3(), this.#bounds.center, object.center), object.radius, rgb);
+        if (object.radius > HUGE_RADIUS) this.#groundPatch(mesh, object.center, sub(new Vec3(), this.#bounds.center, object.center), object.radius, rgb);
         else sphereMesh(mesh, object.center, object.radius, rgb, !m.isEmissive);
       } else if (object instanceof Plane) {
         this.#groundPatch(mesh, object.point, object.normal, 0, rgb);
@@ -499,16 +499,16 @@ export class SceneView {
 
   /** A huge sphere or a plane: a square patch of it under the scene, big enough to stand on. */
   #groundPatch(g, origin, towardScene, radius, rgb) {
-    const n = normalize(vec3(), towardScene);
+    const n = normalize(new Vec3(), towardScene);
     const c = this.#bounds.center;
     // the patch's middle: on the surface, under the middle of the scene
-    const base = radius > 0 ? vec3(origin.x + n.x * radius, origin.y + n.y * radius, origin.z + n.z * radius) : origin;
-    const k = dot(sub(vec3(), c, base), n);
-    const mid = vec3(c.x - n.x * k, c.y - n.y * k, c.z - n.z * k);
-    const u = normalize(vec3(), cross(vec3(), n, Math.abs(n.x) < 0.9 ? vec3(1, 0, 0) : vec3(0, 0, 1)));
-    const v = cross(vec3(), n, u);
+    const base = radius > 0 ? new Vec3(origin.x + n.x * radius, origin.y + n.y * radius, origin.z + n.z * radius) : origin;
+    const k = dot(sub(new Vec3(), c, base), n);
+    const mid = new Vec3(c.x - n.x * k, c.y - n.y * k, c.z - n.z * k);
+    const u = normalize(new Vec3(), cross(new Vec3(), n, Math.abs(n.x) < 0.9 ? new Vec3(1, 0, 0) : new Vec3(0, 0, 1)));
+    const v = cross(new Vec3(), n, u);
     const h = this.#bounds.radius * 1.1;
-    const corner = (a, b) => vec3(mid.x + (u.x * a + v.x * b) * h, mid.y + (u.y * a + v.y * b) * h, mid.z + (u.z * a + v.z * b) * h);
+    const corner = (a, b) => new Vec3(mid.x + (u.x * a + v.x * b) * h, mid.y + (u.y * a + v.y * b) * h, mid.z + (u.z * a + v.z * b) * h);
     const [p, q, s, t] = [corner(-1, -1), corner(1, -1), corner(1, 1), corner(-1, 1)];
     const col = shade(rgb, n);
     for (const x of [p, q, s, p, s, t]) coloredVertex(g, x, col);
@@ -531,7 +531,7 @@ export class SceneView {
   }
 
   #drawFrustum(g, camera) {
-    const far = Math.max(this.#planeDistance * 2, dot(sub(vec3(), this.#bounds.center, camera.position), camera.forward) + this.#bounds.radius * 0.5);
+    const far = Math.max(this.#planeDistance * 2, dot(sub(new Vec3(), this.#bounds.center, camera.position), camera.forward) + this.#bounds.radius * 0.5);
     const corners = imagePlane(camera, far).corners;
     for (const c of corners) line3(g, camera.position, c, MUTED, 1);
     outline(g, corners, MUTED, 1);
@@ -734,7 +734,7 @@ export class SceneView {
 /** Emissive shapes and point lights: a warm glow. */
 const GLOW = [1, 0.84, 0.3];
 /** The fixed light the shapes are shaded by (from above, right, front) and how much light reaches everything. */
-const SUN = normalize(vec3(), vec3(0.35, 0.85, 0.4));
+const SUN = normalize(new Vec3(), new Vec3(0.35, 0.85, 0.4));
 const AMBIENT = 0.45;
 
 /** A colour [0–1] as lit by SUN on a surface with normal n: 0–255 bytes. */
@@ -771,8 +771,8 @@ function toGeometry(g, { positions, colors }) {
 function sphereMesh(g, c, r, rgb, lit = true, rings = 16, segments = 28) {
   const at = (i, j) => {
     const theta = (Math.PI * i) / rings, phi = (2 * Math.PI * j) / segments;
-    const n = vec3(Math.sin(theta) * Math.cos(phi), Math.cos(theta), Math.sin(theta) * Math.sin(phi));
-    return { p: vec3(c.x + r * n.x, c.y + r * n.y, c.z + r * n.z), col: shade(rgb, n, lit) };
+    const n = new Vec3(Math.sin(theta) * Math.cos(phi), Math.cos(theta), Math.sin(theta) * Math.sin(phi));
+    return { p: new Vec3(c.x + r * n.x, c.y + r * n.y, c.z + r * n.z), col: shade(rgb, n, lit) };
   };
   for (let i = 0; i < rings; i++) {
     for (let j = 0; j < segments; j++) {
@@ -807,12 +807,12 @@ function wireSphere(g, sphere) {
 
 /** A box: two triangles a face, each face shaded by its normal. */
 function boxMesh(g, min, max, rgb) {
-  const P = (x, y, z) => vec3(x ? max.x : min.x, y ? max.y : min.y, z ? max.z : min.z);
+  const P = (x, y, z) => new Vec3(x ? max.x : min.x, y ? max.y : min.y, z ? max.z : min.z);
   /** @type {Array<[import('../vec3.js').Vec3, import('../vec3.js').Vec3[]]>} a face: its normal and its four corners */
   const faces = [
-    [vec3(1, 0, 0), [P(1, 0, 0), P(1, 1, 0), P(1, 1, 1), P(1, 0, 1)]], [vec3(-1, 0, 0), [P(0, 0, 0), P(0, 0, 1), P(0, 1, 1), P(0, 1, 0)]],
-    [vec3(0, 1, 0), [P(0, 1, 0), P(0, 1, 1), P(1, 1, 1), P(1, 1, 0)]], [vec3(0, -1, 0), [P(0, 0, 0), P(1, 0, 0), P(1, 0, 1), P(0, 0, 1)]],
-    [vec3(0, 0, 1), [P(0, 0, 1), P(1, 0, 1), P(1, 1, 1), P(0, 1, 1)]], [vec3(0, 0, -1), [P(0, 0, 0), P(0, 1, 0), P(1, 1, 0), P(1, 0, 0)]],
+    [new Vec3(1, 0, 0), [P(1, 0, 0), P(1, 1, 0), P(1, 1, 1), P(1, 0, 1)]], [new Vec3(-1, 0, 0), [P(0, 0, 0), P(0, 0, 1), P(0, 1, 1), P(0, 1, 0)]],
+    [new Vec3(0, 1, 0), [P(0, 1, 0), P(0, 1, 1), P(1, 1, 1), P(1, 1, 0)]], [new Vec3(0, -1, 0), [P(0, 0, 0), P(1, 0, 0), P(1, 0, 1), P(0, 0, 1)]],
+    [new Vec3(0, 0, 1), [P(0, 0, 1), P(1, 0, 1), P(1, 1, 1), P(0, 1, 1)]], [new Vec3(0, 0, -1), [P(0, 0, 0), P(0, 1, 0), P(1, 1, 0), P(1, 0, 0)]],
   ];
   for (const [n, [a, b, c, d]] of faces) {
     const col = shade(rgb, n);
@@ -850,7 +850,7 @@ function nearestAhead(scene, camera) {
   let nearest = Infinity;
   for (const o of scene.objects) {
     if (!(o instanceof Sphere) || o.radius > HUGE_RADIUS) continue;
-    const along = dot(sub(vec3(), o.center, camera.position), camera.forward) - o.radius;
+    const along = dot(sub(new Vec3(), o.center, camera.position), camera.forward) - o.radius;
     if (along > 0) nearest = Math.min(nearest, along);
   }
   return Number.isFinite(nearest) ? nearest : 10;

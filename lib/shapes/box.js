@@ -1,7 +1,7 @@
 /**
  * An axis-aligned box between corners `min` and `max` (the slab method).
  */
-import { toVec3, vec3, set } from '../vec3.js';
+import { toVec3, Vec3, set } from '../vec3.js';
 import { shapeOptions } from '../material.js';
 import { EPSILON } from '../constants.js';
 
@@ -49,7 +49,7 @@ export class Box {
   }
 
   /** The outward normal of the face nearest to `point`. */
-  normalAt(point, out = vec3()) {
+  normalAt(point, out = new Vec3()) {
     let best = Infinity;
     set(out, 0, 1, 0);
     for (const a of AXES) {

@@ -1,7 +1,7 @@
 /**
  * An infinite plane through `point` with unit `normal` (a floor, a wall).
  */
-import { toVec3, toUnit, vec3, copy } from '../vec3.js';
+import { toVec3, toUnit, Vec3, copy } from '../vec3.js';
 import { shapeOptions } from '../material.js';
 import { EPSILON } from '../constants.js';
 
@@ -33,7 +33,7 @@ export class Plane {
   }
 
   /** The plane's normal (the same everywhere). */
-  normalAt(point, out = vec3()) {
+  normalAt(point, out = new Vec3()) {
     return copy(out, this.normal);
   }
 }

@@ -2,7 +2,7 @@
  * A sphere, and the lesson's two ways to intersect a ray with it:
  * the quadratic (A, B, C, discriminant) and the geometric route (L, tca, d², thc).
  */
-import { toVec3, vec3, sub, normalize } from '../vec3.js';
+import { toVec3, Vec3, sub, normalize } from '../vec3.js';
 import { finiteNumber } from '../check.js';
 import { shapeOptions } from '../material.js';
 import { EPSILON } from '../constants.js';
@@ -55,7 +55,7 @@ export class Sphere {
   }
 
   /** The outward unit normal at a surface point. */
-  normalAt(point, out = vec3()) {
+  normalAt(point, out = new Vec3()) {
     return normalize(out, sub(out, point, this.center));
   }
 }
@@ -107,7 +107,7 @@ export function intersectQuadratic(ray, sphere, target = {}) {
  */
 export function intersectGeometric(ray, sphere, target = {}) {
   const o = ray.origin, d = ray.direction, c = sphere.center, r = sphere.radius;
-  const L = target.L ?? (target.L = vec3());
+  const L = target.L ?? (target.L = new Vec3());
   L.x = c.x - o.x; L.y = c.y - o.y; L.z = c.z - o.z;
   const tca = L.x * d.x + L.y * d.y + L.z * d.z;
   const LL = L.x * L.x + L.y * L.y + L.z * L.z;

@@ -5,7 +5,7 @@ import { Sphere, intersectGeometric } from '../../lib/shapes/sphere.js';
 import { PointLight } from '../../lib/lights.js';
 import { inspectPixel } from '../../lib/explain.js';
 import { classScene } from '../../lib/scenes.js';
-import { vec3, sub, normalize, length, dot, distance } from '../../lib/vec3.js';
+import { Vec3, sub, normalize, length, dot, distance } from '../../lib/vec3.js';
 import {
   imagePoint, pixelCenter, imagePlane, pixelGrid, frustum, pickImagePlane, raySegments,
   geometricConstruction, orbitCamera, screenRay, projectToScreen, sceneBounds,
@@ -14,7 +14,7 @@ import {
 const close = (a, b, digits = 9) => {
   expect(a.x).toBeCloseTo(b.x, digits); expect(a.y).toBeCloseTo(b.y, digits); expect(a.z).toBeCloseTo(b.z, digits);
 };
-const dir = (from, to) => normalize(vec3(), sub(vec3(), to, from));
+const dir = (from, to) => normalize(new Vec3(), sub(new Vec3(), to, from));
 
 describe('pixel → image-plane point', () => {
   const cameras = [
@@ -30,7 +30,7 @@ describe('pixel → image-plane point', () => {
           const c = pixelCenter(camera, x, y, d);
           close(dir(camera.position, c), ray.direction, 12);
           // and lies on the plane at distance d along the view direction
-          expect(dot(sub(vec3(), c, camera.position), camera.forward)).toBeCloseTo(d, 12);
+          expect(dot(sub(new Vec3(), c, camera.position), camera.forward)).toBeCloseTo(d, 12);
         }
       }
     });
@@ -41,7 +41,7 @@ describe('pixel → image-plane point', () => {
     const plane = imagePlane(camera, 1);
     expect(plane.height).toBeCloseTo(2 * Math.tan(Math.PI / 6), 12);
     expect(plane.width).toBeCloseTo(plane.height * 2, 12);
-    close(plane.center, vec3(0, 0, -1));
+    close(plane.center, new Vec3(0, 0, -1));
     const [tl, tr, br, bl] = plane.corners;
     expect(tl.x).toBeLessThan(tr.x); expect(tl.y).toBeGreaterThan(bl.y);
     close(imagePoint(camera, 0, 0), tl); close(imagePoint(camera, 40, 20), br);
@@ -67,7 +67,7 @@ describe('pixel → image-plane point', () => {
 describe('picking a pixel on the image plane in 3D', () => {
   const camera = new Camera({ width: 32, height: 24, yaw: 10, pitch: 5 });
   it('a ray from anywhere through a pixel centre picks that pixel', () => {
-    const from = vec3(12, 7, 9);
+    const from = new Vec3(12, 7, 9);
     for (const [x, y] of [[0, 0], [31, 23], [10, 12]]) {
       const c = pixelCenter(camera, x, y, 5);
       const pick = pickImagePlane(camera, 5, from, dir(from, c));
@@ -76,10 +76,10 @@ describe('picking a pixel on the image plane in 3D', () => {
     }
   });
   it('a ray beside the picture, or away from the plane, picks nothing', () => {
-    const from = vec3(0, 0, 5);
+    const from = new Vec3(0, 0, 5);
     expect(pickImagePlane(camera, 5, from, dir(from, imagePoint(camera, -1, 5, 5)))).toBeNull();
     expect(pickImagePlane(camera, 5, from, dir(from, imagePoint(camera, 33, 5, 5)))).toBeNull();
-    expect(pickImagePlane(camera, 5, from, vec3(0, 0, 1))).toBeNull();
+    expect(pickImagePlane(camera, 5, from, new Vec3(0, 0, 1))).toBeNull();
   });
 });
 
@@ -92,7 +92,7 @@ describe('ray segments of a pixel, from inspectPixel', () => {
     const segs = raySegments(scene, record, { missLength: 30 });
     expect(segs).toHaveLength(1);
     expect(segs[0]).toMatchObject({ kind: 'primary', hit: false, depth: 0 });
-    close(segs[0].to, vec3(record.ray.direction.x * 30, record.ray.direction.y * 30, record.ray.direction.z * 30));
+    close(segs[0].to, new Vec3(record.ray.direction.x * 30, record.ray.direction.y * 30, record.ray.direction.z * 30));
   });
 
   it('a hit: primary to the hit point, the normal, one shadow ray per light (lit or blocked), as the record says', () => {
@@ -125,7 +125,7 @@ describe('ray segments of a pixel, from inspectPixel', () => {
     expect(record.hit?.lights[0].inShadow).toBe(true);
     const [shadow] = raySegments(scene, record).filter((s) => s.kind === 'shadow');
     expect(shadow.lit).toBe(false);
-    expect(distance(shadow.blockedAt, vec3(0, 2, -10))).toBeCloseTo(1, 6);
+    expect(distance(shadow.blockedAt, new Vec3(0, 2, -10))).toBeCloseTo(1, 6);
     expect(shadow.blockedAt.y).toBeGreaterThan(record.hit.point.y);
     expect(shadow.blockedAt.y).toBeLessThan(10);
   });
@@ -141,7 +141,7 @@ describe('ray segments of a pixel, from inspectPixel', () => {
     const first = segs.find((s) => s.kind === 'reflection');
     close(first.from, record.hit.point);
     const d = record.ray.direction, n = record.hit.normal, k = 2 * dot(d, n);
-    close(dir(first.from, first.to), normalize(vec3(), vec3(d.x - k * n.x, d.y - k * n.y, d.z - k * n.z)), 6);
+    close(dir(first.from, first.to), normalize(new Vec3(), new Vec3(d.x - k * n.x, d.y - k * n.y, d.z - k * n.z)), 6);
     if (record.hit.reflection.hit) close(first.to, record.hit.reflection.hit.point);
     // a refraction whose next hit is recorded ends on it
     const refraction = segs.find((s) => s.kind === 'refraction');
@@ -165,7 +165,7 @@ describe('the geometric construction in 3D', () => {
     const test = record.tests.find((t) => t.sphere.name === 'pink');
     const g = intersectGeometric(record.ray, test.sphere);
     const parts = geometricConstruction(record.ray, test.sphere, g);
-    expect(length(sub(vec3(), parts.L[1], parts.L[0]))).toBeCloseTo(Math.sqrt(dot(g.L, g.L)), 9);
+    expect(length(sub(new Vec3(), parts.L[1], parts.L[0]))).toBeCloseTo(Math.sqrt(dot(g.L, g.L)), 9);
     expect(distance(...parts.tca)).toBeCloseTo(g.tca, 9);
     expect(distance(...parts.d) ** 2).toBeCloseTo(g.d2, 6);
     expect(distance(...parts.thc)).toBeCloseTo(g.thc, 9);
@@ -175,7 +175,7 @@ describe('the geometric construction in 3D', () => {
 
 describe('the orbit camera', () => {
   it('looks at its target from the given distance; a screen ray through the middle goes to the target', () => {
-    const target = vec3(1, 2, -10);
+    const target = new Vec3(1, 2, -10);
     const orbit = orbitCamera({ target, yaw: 35, pitch: 20, distance: 30 });
     expect(distance(orbit.eye, target)).toBeCloseTo(30, 9);
     expect(orbit.eye.y).toBeGreaterThan(target.y);
@@ -183,11 +183,11 @@ describe('the orbit camera', () => {
     close(direction, orbit.forward, 12);
   });
   it('projectToScreen undoes screenRay', () => {
-    const orbit = orbitCamera({ target: vec3(0, 0, -20), yaw: -50, pitch: 30, distance: 40 });
+    const orbit = orbitCamera({ target: new Vec3(0, 0, -20), yaw: -50, pitch: 30, distance: 40 });
     const { origin, direction } = screenRay(orbit, 123, 45, 480, 360, 0.9);
-    const p = projectToScreen(orbit, vec3(origin.x + direction.x * 17, origin.y + direction.y * 17, origin.z + direction.z * 17), 480, 360, 0.9);
+    const p = projectToScreen(orbit, new Vec3(origin.x + direction.x * 17, origin.y + direction.y * 17, origin.z + direction.z * 17), 480, 360, 0.9);
     expect(p.x).toBeCloseTo(123, 6); expect(p.y).toBeCloseTo(45, 6);
-    expect(projectToScreen(orbit, vec3(orbit.eye.x - orbit.forward.x, orbit.eye.y - orbit.forward.y, orbit.eye.z - orbit.forward.z), 480, 360, 0.9)).toBeNull();
+    expect(projectToScreen(orbit, new Vec3(orbit.eye.x - orbit.forward.x, orbit.eye.y - orbit.forward.y, orbit.eye.z - orbit.forward.z), 480, 360, 0.9)).toBeNull();
   });
   it('the class scene is framed without its ground', () => {
     const { center, radius } = sceneBounds(classScene(), new Camera({ width: 32, height: 24 }), 4);

@@ -1,7 +1,7 @@
 import { describe, it, expect } from 'vitest';
 import * as vec3 from '../../lib/vec3.js';
 
-const V = vec3.vec3;
+const V = vec3.create;
 
 describe('vec3: hand-checkable numbers', () => {
   const a = V(1, 2, 3), b = V(4, -5, 6);
