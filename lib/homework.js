@@ -38,7 +38,7 @@ const SIGNAL = ['red', 'yellow', 'green']; // top to bottom
 /** The labels of Task 1's checks, in order. */
 export const SIGNAL_CHECKS = {
   three: 'Three lights',
-  colours: 'One red, one yellow, one green',
+  colors: 'One red, one yellow, one green',
   column: 'Stacked in one column (same x and z)',
   order: 'Red on top, yellow in the middle, green at the bottom',
   seen: 'The camera sees all three',
@@ -59,13 +59,13 @@ export function checkTrafficSignal(scene, camera) {
   const add = (check) => (checks.push(check), check.passed);
 
   const three = add(threeLights(lights, scene));
-  const byColour = three ? oneOfEach(lights, SIGNAL) : null;
-  const colours = add(three ? coloursCheck(lights, byColour) : waiting(SIGNAL_CHECKS.colours, 'three lights'));
-  const stack = colours ? SIGNAL.map((name) => byColour[name]) : null;
-  add(colours ? sameColumn(stack) : waiting(SIGNAL_CHECKS.column, 'the three colours'));
-  const ordered = add(colours ? topToBottom(stack) : waiting(SIGNAL_CHECKS.order, 'the three colours'));
-  const seen = colours ? lookAt(scene, camera, stack) : null;
-  const visible = add(colours ? allVisible(seen, camera) : waiting(SIGNAL_CHECKS.seen, 'the three colours'));
+  const byColor = three ? oneOfEach(lights, SIGNAL) : null;
+  const colors = add(three ? colorsCheck(lights, byColor) : waiting(SIGNAL_CHECKS.colors, 'three lights'));
+  const stack = colors ? SIGNAL.map((name) => byColor[name]) : null;
+  add(colors ? sameColumn(stack) : waiting(SIGNAL_CHECKS.column, 'the three colours'));
+  const ordered = add(colors ? topToBottom(stack) : waiting(SIGNAL_CHECKS.order, 'the three colours'));
+  const seen = colors ? lookAt(scene, camera, stack) : null;
+  const visible = add(colors ? allVisible(seen, camera) : waiting(SIGNAL_CHECKS.seen, 'the three colours'));
   add(visible ? pictureOrder(seen, ordered) : waiting(SIGNAL_CHECKS.picture, 'all three in view'));
   return result(checks);
 }
@@ -77,10 +77,10 @@ function threeLights(lights, scene) {
   return fail(label, `Found ${count(lights.length, 'light')} (${listNames(lights)}); a traffic signal has 3: red, yellow and green.`);
 }
 
-function coloursCheck(lights, byColour) {
-  const label = SIGNAL_CHECKS.colours;
-  if (byColour) return pass(label, 'Red, yellow and green: the three colours of a traffic signal.');
-  const missing = SIGNAL.filter((name) => !lights.some((l) => l.colour === name));
+function colorsCheck(lights, byColor) {
+  const label = SIGNAL_CHECKS.colors;
+  if (byColor) return pass(label, 'Red, yellow and green: the three colours of a traffic signal.');
+  const missing = SIGNAL.filter((name) => !lights.some((l) => l.color === name));
   return fail(label, `Your lights are ${listNames(lights)}: ${andList(missing)} ${missing.length > 1 ? 'are' : 'is'} missing. ` +
     'The colour of a light is its emission, e.g. emission: [1, 0.8, 0] for yellow.');
 }
@@ -93,11 +93,11 @@ function sameColumn(stack) {
   for (const light of stack.slice(1)) {
     const dx = light.center.x - top.center.x, dz = light.center.z - top.center.z;
     if (Math.abs(dx) > tolerance) {
-      return fail(label, `The ${light.colour} light is ${fmt(Math.abs(dx))} to the ${dx > 0 ? 'right' : 'left'} of the red one ` +
+      return fail(label, `The ${light.color} light is ${fmt(Math.abs(dx))} to the ${dx > 0 ? 'right' : 'left'} of the red one ` +
         `(x = ${fmt(light.center.x)}, red x = ${fmt(top.center.x)}): give all three the same x.`);
     }
     if (Math.abs(dz) > tolerance) {
-      return fail(label, `The ${light.colour} light is ${fmt(Math.abs(dz))} ${dz > 0 ? 'in front of' : 'behind'} the red one ` +
+      return fail(label, `The ${light.color} light is ${fmt(Math.abs(dz))} ${dz > 0 ? 'in front of' : 'behind'} the red one ` +
         `(z = ${fmt(light.center.z)}, red z = ${fmt(top.center.z)}): give all three the same z.`);
     }
   }
@@ -107,15 +107,15 @@ function sameColumn(stack) {
 /** Red highest, then yellow, then green; no two overlapping. */
 function topToBottom(stack) {
   const label = SIGNAL_CHECKS.order;
-  const heights = stack.map((l) => `${l.colour} y = ${fmt(l.center.y)}`).join(', ');
-  const order = [...stack].sort((a, b) => b.center.y - a.center.y).map((l) => l.colour);
+  const heights = stack.map((l) => `${l.color} y = ${fmt(l.center.y)}`).join(', ');
+  const order = [...stack].sort((a, b) => b.center.y - a.center.y).map((l) => l.color);
   if (order.join() !== SIGNAL.join()) {
     return fail(label, `From top to bottom your lights are ${order.join(', ')} (${heights}). Red goes on top, green at the bottom: a larger y is higher.`);
   }
   for (let i = 0; i + 1 < stack.length; i++) {
     const upper = stack[i], lower = stack[i + 1];
     if (upper.center.y - lower.center.y < upper.radius + lower.radius - 1e-9) {
-      return fail(label, `The ${upper.colour} and ${lower.colour} lights overlap (${heights}): move them further apart, ` +
+      return fail(label, `The ${upper.color} and ${lower.color} lights overlap (${heights}): move them further apart, ` +
         `at least ${fmt(upper.radius + lower.radius)} (the two radii added).`);
     }
   }
@@ -125,14 +125,14 @@ function topToBottom(stack) {
 /** Where each light shows in the picture, in screen order (`ordered`: is the scene's order right?). */
 function pictureOrder(seen, ordered) {
   const label = SIGNAL_CHECKS.picture;
-  const order = [...seen].sort((a, b) => a.row - b.row).map((s) => s.light.colour);
+  const order = [...seen].sort((a, b) => a.row - b.row).map((s) => s.light.color);
   if (order.join() !== SIGNAL.join()) {
     const why = ordered ? 'Is the camera looking straight up or down at them?' : 'Fix the order of the lights (above) and this follows.';
     return fail(label, `In the picture, from the top: ${order.join(', ')}. ${why}`);
   }
-  const off = seen.find((s) => s.seenAs !== s.light.colour);
-  if (off) return fail(label, `The ${off.light.colour} light looks ${off.seenAs} in the picture: is another light or a reflection changing its colour?`);
-  return pass(label, `Seen from the top: ${seen.map((s) => `${s.light.colour} (row ${Math.round(s.row)})`).join(', ')}.`);
+  const off = seen.find((s) => s.seenAs !== s.light.color);
+  if (off) return fail(label, `The ${off.light.color} light looks ${off.seenAs} in the picture: is another light or a reflection changing its colour?`);
+  return pass(label, `Seen from the top: ${seen.map((s) => `${s.light.color} (row ${Math.round(s.row)})`).join(', ')}.`);
 }
 
 /* ======================= Task 2: a car's rear lights ====================== */
@@ -160,7 +160,7 @@ export const CAR_CHECKS = {
 export function checkRearLights(scene, camera) {
   checkArguments(scene, camera);
   const lights = findLights(scene);
-  const red = lights.filter((l) => l.colour === 'red');
+  const red = lights.filter((l) => l.color === 'red');
   const checks = [];
   const add = (check) => (checks.push(check), check.passed);
 
@@ -175,7 +175,7 @@ export function checkRearLights(scene, camera) {
 
 function twoRedLights(lights, red, scene) {
   const label = CAR_CHECKS.two;
-  if (red.length === 2) return pass(label, lights.length > 2 ? `Two red lights (and ${listNames(lights.filter((l) => l.colour !== 'red'))}).` : 'Two red lights.');
+  if (red.length === 2) return pass(label, lights.length > 2 ? `Two red lights (and ${listNames(lights.filter((l) => l.color !== 'red'))}).` : 'Two red lights.');
   if (lights.length === 0) return fail(label, `No lights yet. ${HOW_TO_LIGHT}${pointLightHint(scene)}`);
   if (red.length === 0) return fail(label, `Your ${count(lights.length, 'light')} ${lights.length > 1 ? 'are' : 'is'} ${listNames(lights)}: rear lights are red, e.g. emission: [1, 0, 0].`);
   return fail(label, `Found ${count(red.length, 'red light')}; a car has 2 rear lights, one on each side.`);
@@ -257,12 +257,12 @@ const HOW_TO_LIGHT = 'A light is a sphere that gives off light, e.g. new Sphere(
 /** Every light must show up in the picture, in its own colour. */
 function allVisible(seen, camera) {
   const label = SIGNAL_CHECKS.seen;
-  const role = (s) => s.light.role ?? s.light.colour; // 'red' … or 'left', 'right'
+  const role = (s) => s.light.role ?? s.light.color; // 'red' … or 'left', 'right'
   for (const s of seen) {
     const name = `The ${role(s)} light`;
     if (s.pixels === 0) return fail(label, `${name} is not in the picture: ${whereIsIt(s.light, camera)}`);
-    if (s.seenAs !== s.light.colour) {
-      return fail(label, `${name} looks ${s.seenAs} in the picture, not ${s.light.colour}: is something in front of it, or is its surface colour mixing in? Use color: [0, 0, 0].`);
+    if (s.seenAs !== s.light.color) {
+      return fail(label, `${name} looks ${s.seenAs} in the picture, not ${s.light.color}: is something in front of it, or is its surface colour mixing in? Use color: [0, 0, 0].`);
     }
   }
   return pass(label, seen.map((s) => `${role(s)}: ${count(s.pixels, 'pixel')}`).join(', ') + '.');
@@ -286,7 +286,7 @@ function whereIsIt(light, camera) {
 export function findLights(scene) {
   return scene.objects
     .filter((o) => o instanceof Sphere && o.material.isEmissive)
-    .map((sphere) => ({ sphere, center: sphere.center, radius: sphere.radius, colour: lightColour(sphere.material.emission) }));
+    .map((sphere) => ({ sphere, center: sphere.center, radius: sphere.radius, color: lightColor(sphere.material.emission) }));
 }
 
 /**
@@ -294,7 +294,7 @@ export function findLights(scene) {
  * names, so an amber [1, 0.6, 0] counts as yellow and a blue-green as green.
  * Colours with little saturation are 'white'; [0, 0, 0] is 'off'.
  */
-export function lightColour([r, g, b]) {
+export function lightColor([r, g, b]) {
   const max = Math.max(r, g, b);
   if (!(max > 0)) return 'off';
   const { h } = rgbToHsl(r / max, g / max, b / max);
@@ -332,7 +332,7 @@ export function lookAt(scene, camera, lights) {
     light: s.light,
     pixels: Math.round(s.pixels * toCamera * toCamera),
     row: s.pixels ? (s.rowSum / s.pixels + 0.5) * toCamera - 0.5 : null,
-    seenAs: s.pixels ? lightColour(s.rgb.map((c) => c / s.pixels / 255)) : null,
+    seenAs: s.pixels ? lightColor(s.rgb.map((c) => c / s.pixels / 255)) : null,
   }));
 }
 
@@ -356,19 +356,19 @@ function project(camera, point) {
 
 /** `{ red: light, yellow: light, … }` when each name has exactly one light, else null. */
 function oneOfEach(lights, names) {
-  const byColour = {};
+  const byColor = {};
   for (const name of names) {
-    const matches = lights.filter((l) => l.colour === name);
+    const matches = lights.filter((l) => l.color === name);
     if (matches.length !== 1) return null;
-    byColour[name] = matches[0];
+    byColor[name] = matches[0];
   }
-  return byColour;
+  return byColor;
 }
 
 /** A hint for students who used a PointLight, which lights the scene but cannot be seen. */
 function pointLightHint(scene) {
-  const coloured = scene.lights.some((l) => l.source instanceof PointLight && lightColour(l.emission) !== 'white');
-  return coloured ? ' (A PointLight cannot be seen in the picture: use a sphere with an emission.)' : '';
+  const colored = scene.lights.some((l) => l.source instanceof PointLight && lightColor(l.emission) !== 'white');
+  return colored ? ' (A PointLight cannot be seen in the picture: use a sphere with an emission.)' : '';
 }
 
 function checkArguments(scene, camera) {
@@ -383,7 +383,7 @@ function result(checks) {
 const pass = (label, detail) => ({ label, passed: true, detail });
 const fail = (label, detail) => ({ label, passed: false, detail });
 const waiting = (label, what) => ({ label, passed: false, skipped: true, detail: `Checked once you have ${what}.` });
-const listNames = (lights) => lights.map((l) => l.colour).join(', ');
+const listNames = (lights) => lights.map((l) => l.color).join(', ');
 const andList = (words) => words.length > 1 ? `${words.slice(0, -1).join(', ')} and ${words.at(-1)}` : words[0];
 const count = (n, word) => `${n} ${word}${n === 1 ? '' : 's'}`;
 const fmt = (n) => String(Math.round(n * 100) / 100);

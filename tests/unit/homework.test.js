@@ -2,7 +2,7 @@
 // with the right message, and each kind of mistake fails on its own check.
 import { describe, test, expect, vi } from 'vitest';
 import { Sphere, Camera, Scene } from '../../lib/index.js';
-import { checkTrafficSignal, checkRearLights, lightColour, findLights, solutionParameter } from '../../lib/homework.js';
+import { checkTrafficSignal, checkRearLights, lightColor, findLights, solutionParameter } from '../../lib/homework.js';
 
 // The sketches are p5 sketches; their scenes are plain library code. Without
 // a browser, p5 and the adapter are stand-ins that do nothing.
@@ -168,20 +168,20 @@ describe('checkRearLights', () => {
 
 describe('light colours', () => {
   test('traffic-light names from the hue, whatever the brightness', () => {
-    expect(lightColour([1, 0.1, 0.05])).toBe('red');
-    expect(lightColour([2, 0.2, 0.1])).toBe('red');
-    expect(lightColour([1, 0.6, 0])).toBe('yellow'); // amber counts as yellow
-    expect(lightColour([1, 0.8, 0])).toBe('yellow');
-    expect(lightColour([0, 1, 0.6])).toBe('green');
-    expect(lightColour([0, 0, 1])).toBe('blue');
-    expect(lightColour([1, 1, 1])).toBe('white');
-    expect(lightColour([1, 0.9, 0.85])).toBe('white');
-    expect(lightColour([0, 0, 0])).toBe('off');
+    expect(lightColor([1, 0.1, 0.05])).toBe('red');
+    expect(lightColor([2, 0.2, 0.1])).toBe('red');
+    expect(lightColor([1, 0.6, 0])).toBe('yellow'); // amber counts as yellow
+    expect(lightColor([1, 0.8, 0])).toBe('yellow');
+    expect(lightColor([0, 1, 0.6])).toBe('green');
+    expect(lightColor([0, 0, 1])).toBe('blue');
+    expect(lightColor([1, 1, 1])).toBe('white');
+    expect(lightColor([1, 0.9, 0.85])).toBe('white');
+    expect(lightColor([0, 0, 0])).toBe('off');
   });
 
   test('findLights lists emissive spheres only', () => {
     const scene = new Scene().add(light([0, 0, -5], RED)).add(new Sphere([1, 0, -5], 1, { color: [1, 0, 0] }));
-    expect(findLights(scene).map((l) => l.colour)).toEqual(['red']);
+    expect(findLights(scene).map((l) => l.color)).toEqual(['red']);
   });
 });
 
