@@ -6,7 +6,7 @@
  * `data-render="rendering"`; paused, once the last frame is on screen, "done",
  * and a click on a pixel explains that frame.
  *
- *   const movie = new Animation(view, { sceneAt, camera, stats: element });
+ *   const movie = new SceneAnimation(view, { sceneAt, camera, stats: element });
  *   movie.start('main');                      // or 'workers'; movie.stop() hands the view back
  *   p.draw = () => movie.tick(p.deltaTime);
  *
@@ -72,11 +72,11 @@ export function blit(canvas, buffer, width, height) {
 
 /**
  * An animation shown in a tracer view: `p.createAnimation({ view, sceneAt, camera })`;
- * the other options as for the Animation class below.
+ * the other options as for the SceneAnimation class below.
  * @param {import('p5').default} p the sketch
  * @param {object} options
  * @param {import('./tracer-view.js').TracerView} options.view where the frames are shown
- * @returns {Animation}
+ * @returns {SceneAnimation}
  * @example
  * const view = p.createTracerView({ scene: classSceneAt(0), camera: new Camera({ width: 160, height: 120 }) });
  * const animation = p.createAnimation({ view, sceneAt: classSceneAt, camera: view.camera, workers: 2 });
@@ -84,7 +84,7 @@ export function blit(canvas, buffer, width, height) {
  */
 export function createAnimation(p, options) { // no options: checkOptions gives {}
   const { view, ...rest } = checkOptions(options, ['view', 'sceneAt', 'camera', 'workers', 'stats', 'onPlay', 'onPause', 'onError'], 'createAnimation');
-  return new Animation(view, rest);
+  return new SceneAnimation(view, rest);
 }
 
 /**
@@ -94,7 +94,7 @@ export function createAnimation(p, options) { // no options: checkOptions gives 
  * animation.start('main');
  * animation.play(false); // pause: click a pixel of the frame on screen
  */
-export class Animation {
+export class SceneAnimation {
   #page;
   #parallel = null;
   #inFlight = false;

@@ -1,7 +1,7 @@
 /**
  * Buttons for a page of examples that share one picture, as in sketch 07
  * (still, animated, workers): the chosen one is pressed. An example that
- * plays an Animation shows a row with Pause / Play (and, on the workers, how
+ * plays a SceneAnimation shows a row with Pause / Play (and, on the workers, how
  * many), and under the picture the frame counter and a note on what is shown.
  *
  *   const picker = p.createExamplePicker({ parent: column, examples: EXAMPLES, onChoose }); // EXAMPLES: { name: { note, label?, thread? } }

@@ -20,7 +20,7 @@ export { TracerView } from './tracer-view.js';
 export { SceneView } from './scene-view.js';
 export { PhotonView } from './photon-view.js';
 export { Inspector, answerLine, formatAngle } from './inspector.js';
-export { Animation } from './animation.js';
+export { SceneAnimation } from './animation.js';
 export { exampleInLink } from './example-picker.js';
 export { fmt } from './diagrams/format.js';
 export { pageRenderState } from './page-state.js';
