@@ -16,7 +16,7 @@ import { tileCandidates, TILE } from './bounds.js';
 import { positiveInteger, finiteNumber, show, checkOptions } from './check.js';
 
 /** The render orders a ProgressiveRenderer knows. */
-export const MODES = ['coarse', 'scanline', 'slow'];
+export const ORDERS = ['coarse', 'scanline', 'slow'];
 
 /** Block sizes of the coarse passes, largest first. */
 export const COARSE_PASSES = [16, 8, 4, 2, 1];
@@ -106,7 +106,7 @@ export class ProgressiveRenderer {
     if (!camera || typeof camera.directionAt !== 'function') throw new TypeError(`camera must be a Camera, got ${show(camera)}`);
     positiveInteger(camera.width, 'camera.width');
     positiveInteger(camera.height, 'camera.height');
-    if (!MODES.includes(mode)) throw new RangeError(`mode must be one of ${MODES.map((m) => `'${m}'`).join(', ')}, got ${show(mode)}`);
+    if (!ORDERS.includes(mode)) throw new RangeError(`mode must be one of ${ORDERS.map((m) => `'${m}'`).join(', ')}, got ${show(mode)}`);
     if (typeof shader !== 'function') throw new TypeError(`shader must be a function (scene, camera, x, y, target), got ${show(shader)}`);
     if (changes.slowRaysPerStep !== undefined) this.slowRaysPerStep = positiveInteger(changes.slowRaysPerStep, 'slowRaysPerStep');
 

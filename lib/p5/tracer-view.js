@@ -16,7 +16,7 @@
  * A sketch that animates just calls `view.setCamera(…)` from its draw().
  */
 import { clamp } from '../numbers.js';
-import { MODES as RENDER_MODES } from '../progressive.js';
+import { ORDERS } from '../progressive.js';
 import { WorkerProgressiveRenderer } from '../workers/progressive.js';
 import { modeShader, modeLegend } from '../modes.js';
 import { pixelCoordinate, show, checkOptions } from '../check.js';
@@ -154,8 +154,8 @@ export class TracerView {
   }
   /** Traces in another order: 'coarse', 'scanline' or 'slow'. */
   setRenderMode(renderMode) {
-    if (!RENDER_MODES.includes(renderMode)) {
-      throw new RangeError(`renderMode must be one of ${RENDER_MODES.map((m) => `'${m}'`).join(', ')}, got ${show(renderMode)}`);
+    if (!ORDERS.includes(renderMode)) {
+      throw new RangeError(`renderMode must be one of ${ORDERS.map((m) => `'${m}'`).join(', ')}, got ${show(renderMode)}`);
     }
     return this.#change({ mode: renderMode });
   }

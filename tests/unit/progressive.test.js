@@ -3,7 +3,7 @@ import { ProgressiveRenderer, CHECK_EVERY, COARSE_PASSES } from '../../lib/progr
 import { render, Camera, Scene, Sphere, Plane, Box, PointLight, classScene } from '../../lib/index.js';
 import { renderPixel } from '../../lib/render.js';
 
-const MODES = ['coarse', 'scanline', 'slow'];
+const ORDERS = ['coarse', 'scanline', 'slow'];
 
 function floorScene() {
   const scene = new Scene({ background: [0.2, 0.3, 0.5], ambient: 0.1 });
@@ -41,7 +41,7 @@ describe('ProgressiveRenderer: the finished picture is render()\'s, byte for byt
       it(`${name} at ${width}×${height} in every mode`, () => {
         const camera = new Camera({ width, height, fov: 40, position: [0, 1, 0], pitch: -5 });
         const expected = render(scene, camera);
-        for (const mode of MODES) {
+        for (const mode of ORDERS) {
           const clock = fakeClock();
           // The shader advances the clock, so budgets end after a known number of pixels.
           const shader = (...args) => { clock.t += 0.25; renderPixel(...args); };
@@ -69,7 +69,7 @@ describe('with the default shader, each primary ray meets only its tile\'s candi
       for (const [width, height] of [...SIZES, [64, 48]]) {
         const camera = new Camera({ width, height, fov: 50, position: [-1, 2, 1], yaw: 8, pitch: -10 });
         const expected = render(scene, camera);
-        for (const mode of MODES) {
+        for (const mode of ORDERS) {
           const p = new ProgressiveRenderer({ scene, camera, mode, slowRaysPerStep: 7 });
           expect(finish(p, 0)).toEqual(expected);
         }
@@ -82,7 +82,7 @@ describe('with the default shader, each primary ray meets only its tile\'s candi
     const counter = countTests(scene);
     render(scene, camera);
     const byRender = counter.tests;
-    for (const mode of MODES) {
+    for (const mode of ORDERS) {
       counter.tests = 0;
       finish(new ProgressiveRenderer({ scene, camera, mode, slowRaysPerStep: 100 }), 1e9);
       expect(counter.tests).toBe(byRender);
@@ -228,7 +228,7 @@ describe('progress and restarts', () => {
   const scene = classScene();
 
   it('progress goes from 0 to 1 without going back, in every mode', () => {
-    for (const mode of MODES) {
+    for (const mode of ORDERS) {
       const p = new ProgressiveRenderer({ scene, camera: new Camera({ width: 37, height: 23 }), mode, slowRaysPerStep: 20 });
       expect(p.progress).toBe(0);
       expect(p.done).toBe(false);
@@ -244,7 +244,7 @@ describe('progress and restarts', () => {
   });
 
   it('a restart in the middle starts over and still ends with render()\'s picture', () => {
-    for (const mode of MODES) {
+    for (const mode of ORDERS) {
       const camera = new Camera({ width: 37, height: 23 });
       const p = new ProgressiveRenderer({ scene, camera, mode, slowRaysPerStep: 40 });
       for (let i = 0; i < 5; i++) p.step(0);
