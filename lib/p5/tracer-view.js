@@ -23,7 +23,7 @@ import { pixelCoordinate, show, checkOptions } from '../check.js';
 import { registerView } from './page-state.js';
 import { useStyle, element, resolveParent, sketchNode } from './dom.js';
 import { addProjectorSwitch } from './projector.js';
-import { createLegendElement } from './diagrams.js';
+import { createLegendElement } from './diagrams/index.js';
 
 /** On-screen pixels per traced pixel below which the grid would hide the picture. */
 const GRID_MIN_SCALE = 6;

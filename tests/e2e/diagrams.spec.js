@@ -1,4 +1,4 @@
-// The diagrams of lib/p5/diagrams.js for the class scene: each canvas draws
+// The diagrams of lib/p5/diagrams/index.js for the class scene: each canvas draws
 // without console errors, and matches its reference screenshot.
 import { test, expect } from '@playwright/test';
 import { clickPixel, expectCanvasScreenshot, watchConsole, waitForDone } from './helpers.js';

@@ -2,7 +2,7 @@
 // into a recording stand-in for p5 for pixels all over the class scene and
 // sketch 01's scene, where no label may land on another or leave the view.
 import { describe, it, expect } from 'vitest';
-import { drawSideView, drawTopView } from '../../lib/p5/diagrams.js';
+import { drawSideView, drawTopView } from '../../lib/p5/diagrams/index.js';
 import { labelPlacer, ON_THICK } from '../../lib/p5/diagrams/labels.js';
 import { classScene, Camera, Scene, Sphere, PointLight, inspectPixel } from '../../lib/index.js';
 

@@ -14,13 +14,13 @@
  * diagrams draw the scene and ask for a click. Nothing here throws on a miss,
  * a tangent ray, a ray starting inside a sphere or a huge ground sphere.
  *
- * The code lives in ./diagrams/: plane-views.js and plane-marks.js (side and
+ * The code lives beside this file: plane-views.js and plane-marks.js (side and
  * top views), construction.js, parabola.js, legend.js, and the shared
  * style.js, draw.js, labels.js, format.js and focus.js.
  */
-export { drawSideView, drawTopView } from './diagrams/plane-views.js';
-export { drawGeometricConstruction } from './diagrams/construction.js';
-export { drawParabola } from './diagrams/parabola.js';
-export { drawLegend, createLegendElement } from './diagrams/legend.js';
-export { focusTest } from './diagrams/focus.js';
-export { fmt } from './diagrams/format.js';
+export { drawSideView, drawTopView } from './plane-views.js';
+export { drawGeometricConstruction } from './construction.js';
+export { drawParabola } from './parabola.js';
+export { drawLegend, createLegendElement } from './legend.js';
+export { focusTest } from './focus.js';
+export { fmt } from './format.js';
