@@ -1,0 +1,136 @@
+// The renderer's shortcuts must never show: over random scenes (spheres,
+// planes, boxes, point lights and emissive shapes, mirrors, glass, shadows and
+// highlights on or off) and random cameras, render() — which tests each
+// primary ray only against its tile's candidate shapes (lib/bounds.js) — gives
+// the very bytes of the plain reference, every pixel traced against every
+// shape; so does every visual mode, however its pictures are traced; and so
+// does a ProgressiveRenderer's finished buffer, in every order; and the
+// inspector, which records every step of the same trace, gives render()'s colour.
+import { describe, it, expect } from 'vitest';
+import fc from 'fast-check';
+import { Camera, Scene, Sphere, Plane, Box, PointLight, render, inspectPixel } from '../../lib/index.js';
+import { renderPixel } from '../../lib/render.js';
+import { MODES, modeShader } from '../../lib/modes.js';
+import { ProgressiveRenderer, ORDERS } from '../../lib/progressive.js';
+
+const coord = (size) => fc.double({ min: -size, max: size, noNaN: true });
+const point = (size) => fc.tuple(coord(size), coord(size), coord(size));
+/** Anywhere near the eye, or ahead of it (down −z, where a camera that looks ahead sees it small). */
+const place = fc.oneof(point(15), fc.tuple(coord(10), coord(8), fc.double({ min: -40, max: -3, noNaN: true })));
+const unit = fc.double({ min: 0, max: 1, noNaN: true });
+/** Zero half the time: most surfaces are plain, some mirror, some glass, some shine. */
+const sometimes = (value) => fc.oneof(fc.constant(0), value);
+const color = fc.tuple(unit, unit, unit);
+
+const material = fc.record({
+  color,
+  emission: fc.oneof({ weight: 3, arbitrary: fc.constant(0) }, { weight: 1, arbitrary: fc.tuple(unit, unit, unit).map((c) => c.map((v) => 2 * v)) }),
+  reflection: sometimes(unit),
+  transparency: sometimes(unit),
+  ior: fc.double({ min: 1, max: 2.5, noNaN: true }),
+  specular: sometimes(unit),
+  shininess: fc.double({ min: 1, max: 200, noNaN: true }),
+});
+
+const sphere = fc.tuple(place, fc.oneof(
+  { weight: 4, arbitrary: fc.double({ min: 0.05, max: 1.5, noNaN: true }) }, // small: many tiles leave it out
+  { weight: 2, arbitrary: fc.double({ min: 0.05, max: 8, noNaN: true }) },
+  { weight: 1, arbitrary: fc.double({ min: 100, max: 10000, noNaN: true }) }, // a ground or a wall
+), material).map(([center, radius, m]) => new Sphere(center, radius, m));
+
+const direction = point(1).filter(([x, y, z]) => x * x + y * y + z * z > 0.01);
+const plane = fc.tuple(point(10), direction, material).map(([p, normal, m]) => new Plane(p, normal, m));
+
+const size = fc.double({ min: 0.1, max: 4, noNaN: true });
+const box = fc.tuple(place, size, size, size, material)
+  .map(([[x, y, z], dx, dy, dz, m]) => new Box([x, y, z], [x + dx, y + dy, z + dz], m));
+
+const light = fc.tuple(point(20), color, fc.double({ min: 0, max: 2, noNaN: true }))
+  .map(([position, c, intensity]) => new PointLight(position, c, intensity));
+
+const scene = fc.record({
+  background: color,
+  ambient: sometimes(unit),
+  shadows: fc.boolean(),
+  specular: fc.boolean(),
+  maxDepth: fc.integer({ min: 0, max: 4 }),
+  bias: fc.constantFrom(1e-4, 0, 0.01),
+  epsilon: fc.constantFrom(1e-6, 0),
+  items: fc.array(fc.oneof({ weight: 5, arbitrary: sphere }, { weight: 1, arbitrary: plane }, { weight: 3, arbitrary: box }, { weight: 2, arbitrary: light }),
+    { minLength: 1, maxLength: 7 }),
+}).map(({ items, ...options }) => items.reduce((s, item) => s.add(item), new Scene(options)));
+
+/** Small frames of a few tiles (16 px), rarely whole ones; from anywhere looking anywhere, or from near the origin looking ahead. */
+const camera = fc.record({
+  width: fc.integer({ min: 1, max: 48 }),
+  height: fc.integer({ min: 1, max: 36 }),
+  fov: fc.oneof(fc.double({ min: 10, max: 60, noNaN: true }), fc.double({ min: 10, max: 150, noNaN: true })),
+  yaw: fc.oneof(fc.double({ min: -30, max: 30, noNaN: true }), fc.double({ min: -180, max: 180, noNaN: true })),
+  pitch: fc.oneof(fc.double({ min: -20, max: 20, noNaN: true }), fc.double({ min: -89, max: 89, noNaN: true })),
+  position: fc.oneof(point(2), point(6)),
+}).map((options) => new Camera(options));
+
+/** The plain reference: `shader` called for every pixel, in reading order, each primary ray against every shape. */
+function pixelByPixel(scene, cam, shader = renderPixel) {
+  const out = new Uint8ClampedArray(cam.width * cam.height * 4);
+  for (let y = 0; y < cam.height; y++) for (let x = 0; x < cam.width; x++) shader(scene, cam, x, y, out);
+  return out;
+}
+
+/** A ProgressiveRenderer run to its end, in short steps (its clock never moves: each step traces a few pixels). */
+function progressively(scene, cam, order, shader) {
+  const renderer = new ProgressiveRenderer({ scene, camera: cam, mode: order, slowRaysPerStep: 13, now: () => 0, ...(shader && { shader }) });
+  while (!renderer.step(0).done);
+  return renderer.buffer;
+}
+
+/** The index of the first byte where two pictures differ, or -1: a failing run names the pixel. */
+function firstDifference(a, b) {
+  if (a.length !== b.length) return 0;
+  for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) return i;
+  return -1;
+}
+
+const RUNS = { seed: 12, numRuns: 300 };
+
+describe('the same bytes as the plain reference, for random scenes and cameras (property)', () => {
+  it('render(), and render() of a band of rows', () => {
+    fc.assert(fc.property(scene, camera, fc.nat(), fc.nat(), (s, cam, a, b) => {
+      const reference = pixelByPixel(s, cam);
+      expect(firstDifference(render(s, cam), reference)).toBe(-1);
+      const y0 = a % (cam.height + 1), y1 = y0 + (b % (cam.height - y0 + 1));
+      const band = render(s, cam, undefined, { y0, y1 });
+      const rows = (buffer) => buffer.subarray(y0 * cam.width * 4, y1 * cam.width * 4);
+      expect(firstDifference(rows(band), rows(reference))).toBe(-1);
+    }), RUNS);
+  });
+
+  it('every visual mode, whole or traced progressively in every order', () => {
+    fc.assert(fc.property(scene, camera, (s, cam) => {
+      for (const { name } of MODES) {
+        const shader = modeShader(name);
+        const reference = pixelByPixel(s, cam, shader);
+        for (const order of ORDERS) {
+          expect(firstDifference(progressively(s, cam, order, shader), reference), `${name}, ${order}`).toBe(-1);
+        }
+      }
+    }), { ...RUNS, numRuns: 100 });
+  });
+
+  it("inspectPixel's colour, which records every step on the way, is render()'s pixel", () => {
+    fc.assert(fc.property(scene, camera, fc.nat(), fc.nat(), (s, cam, a, b) => {
+      const pixels = render(s, cam);
+      for (let k = 0; k < 8; k++) { // a few pixels, anywhere in the frame
+        const x = (a + 7 * k) % cam.width, y = (b + 5 * k) % cam.height, i = (y * cam.width + x) * 4;
+        expect(inspectPixel(s, cam, x, y).color, `pixel ${x},${y}`).toEqual([pixels[i], pixels[i + 1], pixels[i + 2]]);
+      }
+    }), { ...RUNS, numRuns: 150 });
+  });
+
+  it("a ProgressiveRenderer's finished buffer is render()'s, in every order", () => {
+    fc.assert(fc.property(scene, camera, (s, cam) => {
+      const expected = render(s, cam);
+      for (const order of ORDERS) expect(firstDifference(progressively(s, cam, order), expected), order).toBe(-1);
+    }), { ...RUNS, numRuns: 150 });
+  });
+});
