@@ -85,7 +85,7 @@ const TRACER_VIEW_OPTIONS = ['scene', 'camera', 'scale', 'grid', 'mode', 'render
 export class TracerView {
   #renderer; #page; #imageData = null; #raf = 0; #destroyed = false;
   #scale; #grid; #mode; #selected = null; #listeners = [];
-  #shownCurrent = null; #progressText = '';
+  #shownCurrent = null; #progressText = ''; #shownProblem = null;
   #ctx; #overlayCtx; #onResize;
 
   /**
@@ -226,6 +226,7 @@ export class TracerView {
     const { changed, done } = r.step(this.budgetMs);
     if (changed) this.#blit();
     this.#showProgress();
+    if (r.problem !== this.#shownProblem) this.#shownProblem = showWorkerProblem(this.workerNote, r.problem);
     const c = r.current;
     if (c && (c.x !== this.#shownCurrent?.x || c.y !== this.#shownCurrent?.y)) this.#drawOverlay();
     if (done) {
@@ -380,8 +381,9 @@ export class TracerView {
     const save = element('button', { type: 'button', class: 'rt-button', 'data-export': '', title: 'Download the traced image as a PNG, one pixel per traced pixel' }, 'Save PNG');
     save.addEventListener('click', () => this.downloadPNG());
     this.legendHost = element('div', { class: 'rt-legend-host' });
+    this.workerNote = element('p', { class: 'rt-note rt-view-note', 'data-message': 'view-workers', role: 'status', hidden: true });
 
-    this.figure.append(stage, element('div', { class: 'rt-bar' }, this.progressBar, save), this.legendHost);
+    this.figure.append(stage, element('div', { class: 'rt-bar' }, this.progressBar, save), this.workerNote, this.legendHost);
     parent.append(this.figure);
     this.#listen(c);
   }
@@ -422,6 +424,16 @@ export class TracerView {
 }
 
 /* ---------------- helpers ---------------- */
+
+/**
+ * The note under a view whose Web Workers failed (their frames are then traced
+ * on the page's thread, the same picture): says so and why, or hides. Returns `problem`.
+ */
+function showWorkerProblem(note, problem) {
+  note.hidden = problem === null;
+  note.textContent = problem === null ? '' : `Workers unavailable: rendering on the page's thread instead — ${problem}.`;
+  return problem;
+}
 
 const ARROWS = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] };
 

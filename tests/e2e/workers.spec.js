@@ -82,17 +82,46 @@ test('a 640×480 tracer view: coarse previews first, the rest from the workers, 
     for (let i = 1; i < steps.length; i++) expect(steps[i].pass).toBeLessThanOrEqual(steps[i - 1].pass); // coarse to fine
     expect(await page.evaluate(() => window.differing())).toBe(0);
     await expect(page.locator('[data-progress-text]')).toHaveText(/^100% · /);
+    await expect(page.locator('[data-message="view-workers"]')).toBeHidden(); // nothing to say when the workers work
     await page.evaluate(() => window.view.setScene(window.classSceneAt(2))); // the page says "rendering" from here on
     await waitForDone(page);
   }
   expect(errors).toEqual([]);
 });
 
-test('a 640×480 tracer view whose workers never answer: the page finishes the picture itself, the same bytes', async ({ page }) => {
+// A tracer view whose workers fail says so in a quiet note (never the mistake panel) and finishes the picture itself.
+const workerNote = (page) => page.locator('[data-message="view-workers"]');
+
+async function finishedOnThePage(page, reason, timeout) {
+  await waitForDone(page, timeout);
+  expect(await page.evaluate(() => window.differing())).toBe(0);
+  await expect(workerNote(page)).toBeVisible();
+  await expect(workerNote(page)).toHaveText(new RegExp(`^Workers unavailable: rendering on the page's thread instead — ${reason}\\.$`));
+  await expect(page.locator('[data-error]')).toBeHidden();
+  // The next frame is traced here from the start, and the note stays.
+  await page.evaluate(() => window.view.setScene(window.classSceneAt(2)));
+  await waitForDone(page, timeout);
+  expect(await page.evaluate(() => [window.view.renderer.usingWorkers, window.differing()])).toEqual([false, 0]);
+  await expect(workerNote(page)).toBeVisible();
+}
+
+test('a 640×480 tracer view whose workers never answer: the page finishes the picture itself, the same bytes, and says why', async ({ page }) => {
   test.slow();
   await page.route('**/render-worker.js*', silentWorker);
   await page.goto('/tests/e2e/pages/tracer-workers.html');
-  await waitForDone(page, 40_000);
-  expect(await page.evaluate(() => window.differing())).toBe(0);
+  await finishedOnThePage(page, 'render worker \\d did not answer within 6 s', 40_000);
   expect(await page.evaluate(() => window.view.renderer.problem)).toMatch(/^render worker \d did not answer within 6 s$/);
+});
+
+test('a 640×480 tracer view whose worker script is missing (404): a note, and render()\'s bytes traced on the page', async ({ page }) => {
+  await page.route('**/render-worker.js*', (route) => route.fulfill({ status: 404, contentType: 'text/plain', body: 'gone' }));
+  await page.goto('/tests/e2e/pages/tracer-workers.html');
+  await finishedOnThePage(page, 'render worker \\d failed \\(.+\\)');
+});
+
+test('a 640×480 tracer view on a page that may start no worker: a note, and render()\'s bytes traced on the page', async ({ page }) => {
+  const errors = watchConsole(page);
+  await page.goto('/tests/e2e/pages/tracer-workers.html?worker=throw');
+  await finishedOnThePage(page, 'render workers could not start \\(Web Workers are not allowed on this page\\)');
+  expect(errors).toEqual([]);
 });
