@@ -24,9 +24,8 @@ import { registerView } from './page-state.js';
 import { useStyle, element, resolveParent, sketchNode } from './dom.js';
 import { addProjectorSwitch } from './projector.js';
 import { createLegendElement } from './diagrams/index.js';
+import { drawOverlay } from './tracer-overlay.js';
 
-/** On-screen pixels per traced pixel below which the grid would hide the picture. */
-const GRID_MIN_SCALE = 6;
 /**
  * 'auto' scale: the picture fits its parent's width, 40rem, 70% of the
  * window's height, and leaves 34rem of the window's width for a panel beside
@@ -344,16 +343,11 @@ export class TracerView {
     this.#drawOverlay();
   }
 
-  /** Grid, the selected pixel's crosshair and the "now tracing" pixel, on the overlay only. */
+  /** Grid, the pixel being traced and the selected pixel's crosshair, on the overlay only (see tracer-overlay.js). */
   #drawOverlay() {
-    const o = this.overlay, g = this.#overlayCtx;
-    const k = o.width / this.width; // overlay pixels per traced pixel
-    g.clearRect(0, 0, o.width, o.height);
-    if (this.#grid && k >= GRID_MIN_SCALE) drawGrid(g, this.width, this.height, k);
     const current = this.#renderer.done ? null : this.#renderer.current;
     this.#shownCurrent = current && { ...current };
-    if (current) outlinePixel(g, current.x, current.y, k, '#ffd400', Math.max(2, Math.round(k / 8)));
-    if (this.#selected) drawCrosshair(g, this.#selected.x, this.#selected.y, k, o.width, o.height);
+    drawOverlay(this.#overlayCtx, { width: this.width, height: this.height, grid: this.#grid, current, selected: this.#selected });
   }
 
   /* ---------------- DOM and input ---------------- */
@@ -446,49 +440,6 @@ export function pixelAt(canvas, clientX, clientY, width, height) {
   const x = Math.floor(((clientX - box.left) / box.width) * width);
   const y = Math.floor(((clientY - box.top) / box.height) * height);
   return { x: clamp(x, 0, width - 1), y: clamp(y, 0, height - 1) };
-}
-
-function drawGrid(g, w, h, k) {
-  g.save();
-  g.beginPath();
-  for (let x = 1; x < w; x++) { const X = Math.round(x * k) + 0.5; g.moveTo(X, 0); g.lineTo(X, h * k); }
-  for (let y = 1; y < h; y++) { const Y = Math.round(y * k) + 0.5; g.moveTo(0, Y); g.lineTo(w * k, Y); }
-  g.strokeStyle = 'rgba(0, 0, 0, 0.22)';
-  g.lineWidth = 1;
-  g.stroke();
-  g.restore();
-}
-
-/** A square around pixel (x, y): a dark and a light stroke, visible on any colour. */
-function outlinePixel(g, x, y, k, color, width) {
-  const X = Math.round(x * k), Y = Math.round(y * k), K = Math.max(1, Math.round(k));
-  g.save();
-  g.lineWidth = width + 2;
-  g.strokeStyle = 'rgba(0, 0, 0, 0.85)';
-  g.strokeRect(X - width / 2 - 0.5, Y - width / 2 - 0.5, K + width + 1, K + width + 1);
-  g.lineWidth = width;
-  g.strokeStyle = color;
-  g.strokeRect(X - width / 2 - 0.5, Y - width / 2 - 0.5, K + width + 1, K + width + 1);
-  g.restore();
-}
-
-/** Hair lines from the edges toward the selected pixel, stopping short of it, and a box around it. */
-function drawCrosshair(g, x, y, k, W, H) {
-  const cx = (x + 0.5) * k, cy = (y + 0.5) * k, gap = k / 2 + Math.max(6, k * 0.6);
-  g.save();
-  g.beginPath();
-  g.moveTo(0, cy); g.lineTo(cx - gap, cy);
-  g.moveTo(cx + gap, cy); g.lineTo(W, cy);
-  g.moveTo(cx, 0); g.lineTo(cx, cy - gap);
-  g.moveTo(cx, cy + gap); g.lineTo(cx, H);
-  g.lineWidth = 3;
-  g.strokeStyle = 'rgba(0, 0, 0, 0.45)';
-  g.stroke();
-  g.lineWidth = 1;
-  g.strokeStyle = 'rgba(255, 255, 255, 0.9)';
-  g.stroke();
-  g.restore();
-  outlinePixel(g, x, y, k, '#ffffff', Math.max(2, Math.round(k / 8)));
 }
 
 /** The root element's font size in px (1rem). */
