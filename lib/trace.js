@@ -5,38 +5,39 @@
  *      ray toward each light; Lambert's cos term; an optional highlight);
  *   3. mix in what a mirror reflects and what glass lets through (Fresnel).
  *
- * `trace` fills `out` ([r, g, b], 0–1 and above) and allocates nothing; given a
- * `steps` object it also records every intermediate value for the inspector.
+ * `trace` fills `color` ([r, g, b], 0–1 and above) and allocates nothing;
+ * given a `steps` object it also records every intermediate value for the
+ * inspector, computed apart from the colour by the same functions.
  */
 import { Vec3, dot, copy, scaleAndAdd, reflect } from './vec3.js';
 import { Ray } from './ray.js';
 import { EPSILON, DEG_PER_RAD } from './constants.js';
 
 /**
- * Traces `ray` through `scene`; writes its colour into `out` and returns it.
+ * Traces `ray` through `scene`; writes its colour into `color` and returns it.
  * @param {import('./scene.js').Scene} scene
  * @param {Ray} ray
- * @param {number[]} out [r, g, b] target
+ * @param {number[]} color [r, g, b] target
  * @param {object} [steps] filled with the hit record when given (the inspector's)
  * @param {number} [depth=0] how many bounces led here
  * @param {object[]} [objects=scene.objects] the shapes this ray may hit: all of them, or for a
  *   primary ray the few that `render` knows can be under its pixel (the nearest hit is the same)
  */
-export function trace(scene, ray, out, steps, depth = 0, objects = scene.objects) {
-  const f = frames[depth] ?? newFrame(depth);
-  if (!nearestHit(objects, ray, f.hit, scene.epsilon)) {
+export function trace(scene, ray, color, steps, depth = 0, objects = scene.objects) {
+  const frame = frames[depth] ?? newFrame(depth);
+  if (!nearestHit(objects, ray, frame.hit, scene.epsilon)) {
     if (steps) steps.hit = null;
-    return copyColor(out, scene.background);
+    return copyColor(color, scene.background);
   }
-  const object = f.hit.object, m = object.material;
-  const inside = surfaceAt(f, ray);
-  const record = steps ? hitRecord(steps, object, f, ray, inside, scene) : null;
+  frame.scene = scene;
+  frame.ray = ray;
+  surfaceAt(frame);
 
-  lightPoint(scene, object, f, ray, out, record);
-  if (depth < scene.maxDepth && (m.reflection > 0 || m.transparency > 0)) {
-    mirrorAndGlass(scene, m, f, ray, inside, out, record, depth);
-  }
-  return out;
+  lightPoint(frame, color);
+  const record = steps ? recordHit(steps, frame) : null;
+  const { reflection, transparency } = frame.hit.object.material;
+  if (depth < scene.maxDepth && (reflection > 0 || transparency > 0)) mirrorAndGlass(frame, color, record);
+  return color;
 }
 
 /**
@@ -56,38 +57,37 @@ export function nearestHit(objects, ray, hit, tMin = EPSILON) {
 
 /**
  * The hit point P = Ro + Rd·t and its unit normal, turned to face the ray;
- * true when the ray meets the surface from inside. (Numbers stay in `f`
- * rather than passing between functions: a bare number handed to a function
- * the engine did not inline costs an allocation, once per pixel.)
+ * `frame.inside` when the ray meets the surface from inside. (Numbers stay
+ * in the frame rather than passing between functions: a bare number handed
+ * to a function the engine did not inline costs an allocation, once per pixel.)
  */
-function surfaceAt(f, ray) {
-  const o = ray.origin, d = ray.direction, t = f.hit.t, P = f.point, N = f.normal;
+function surfaceAt(frame) {
+  const o = frame.ray.origin, d = frame.ray.direction, t = frame.hit.t, P = frame.point, N = frame.normal;
   P.x = o.x + d.x * t; P.y = o.y + d.y * t; P.z = o.z + d.z * t;
-  f.hit.object.normalAt(P, N);
-  const inside = d.x * N.x + d.y * N.y + d.z * N.z > 0;
-  if (inside) { N.x = -N.x; N.y = -N.y; N.z = -N.z; } // shade the side the ray sees
-  return inside;
+  frame.hit.object.normalAt(P, N);
+  frame.inside = d.x * N.x + d.y * N.y + d.z * N.z > 0;
+  if (frame.inside) { N.x = -N.x; N.y = -N.y; N.z = -N.z; } // shade the side the ray sees
 }
 
 /** Emission + ambient + every light the point can see (diffuse and specular). */
-function lightPoint(scene, object, f, ray, out, record) {
-  const m = object.material, c = m.color, a = scene.ambient, lights = scene.lights;
-  setColor(out, m.emission[0] + a * c[0], m.emission[1] + a * c[1], m.emission[2] + a * c[2]);
+function lightPoint(frame, color) {
+  const { scene } = frame, object = frame.hit.object, { emission, color: surface } = object.material;
+  const ambient = scene.ambient, lights = scene.lights;
+  setColor(color, emission[0] + ambient * surface[0], emission[1] + ambient * surface[1], emission[2] + ambient * surface[2]);
   for (let i = 0; i < lights.length; i++) {
     const light = lights[i];
     if (light.object === object) continue; // a light does not light itself
-    const distance = directionTo(f.toLight, f.point, light.position);
-    const cos = dot(f.normal, f.toLight); // Lambert: light falls at an angle
-    if (cos <= 0 && !record) continue; // the light is behind the surface
-    const transmission = cos <= 0 ? 0 : scene.shadows ? shadowRay(scene, f, distance, light.object) : 1;
-    if (transmission === 0 && !record) continue;
+    const distance = directionTo(frame.toLight, frame.point, light.position);
+    const cos = dot(frame.normal, frame.toLight); // Lambert: light falls at an angle
+    if (cos <= 0) continue; // the light is behind the surface
+    const transmission = scene.shadows ? shadowRay(frame, distance, light.object) : 1;
+    if (transmission === 0) continue; // in shadow
     const diffuse = cos * transmission;
-    const highlight = transmission > 0 && scene.specular && m.specular > 0 ? specular(m, f, ray) * transmission : 0;
-    const e = light.emission;
-    out[0] += e[0] * (c[0] * diffuse + highlight);
-    out[1] += e[1] * (c[1] * diffuse + highlight);
-    out[2] += e[2] * (c[2] * diffuse + highlight);
-    if (record) recordLight(record, light, cos, transmission, Math.max(0, diffuse), highlight, c, distance);
+    const highlight = scene.specular ? specular(frame) * transmission : 0;
+    const lightColor = light.emission;
+    color[0] += lightColor[0] * (surface[0] * diffuse + highlight);
+    color[1] += lightColor[1] * (surface[1] * diffuse + highlight);
+    color[2] += lightColor[2] * (surface[2] * diffuse + highlight);
   }
 }
 
@@ -100,58 +100,62 @@ function directionTo(out, from, to) {
 }
 
 /**
- * Shadow ray: how much light gets from the point to the light (1 none in the
- * way, 0 blocked; glass lets its `transparency` through). The ray stops at
- * the light: whatever lies beyond it, or around it, casts no shadow.
+ * Shadow ray from the hit point along `frame.toLight`: how much light gets
+ * through to the light `distance` away (1 none in the way, 0 blocked; glass
+ * lets its `transparency` through). The ray stops at the light: whatever lies
+ * beyond it, or around it (`lightObject`, the light's own shape), casts no shadow.
  */
-function shadowRay(scene, f, distance, lightObject) {
-  const shadow = f.shadowRay, objects = scene.objects, epsilon = scene.epsilon;
-  scaleAndAdd(shadow.origin, f.point, f.normal, scene.bias); // step off the surface: no acne
-  copy(shadow.direction, f.toLight);
+function shadowRay(frame, distance, lightObject) {
+  const { scene } = frame, shadow = frame.shadowRay, objects = scene.objects, epsilon = scene.epsilon;
+  scaleAndAdd(shadow.origin, frame.point, frame.normal, scene.bias); // step off the surface: no acne
+  copy(shadow.direction, frame.toLight);
   const reach = distance - scene.bias; // stop short of the light: a light on a face is not behind it
   let transmission = 1;
   for (let i = 0; i < objects.length; i++) {
-    const o = objects[i];
-    if (o === lightObject || o.hit(shadow, epsilon) >= reach) continue;
-    transmission *= o.material.transparency;
+    const blocker = objects[i];
+    if (blocker === lightObject || blocker.hit(shadow, epsilon) >= reach) continue;
+    transmission *= blocker.material.transparency;
     if (transmission === 0) return 0;
   }
   return transmission;
 }
 
-/** Phong highlight: (R·V)^shininess, R the light mirrored about the normal. */
-function specular(m, f, ray) {
-  reflect(f.mirror, f.toLight, f.normal);
-  const rv = dot(f.mirror, ray.direction); // mirror = −R, ray = −V: R·V
-  return rv > 0 ? m.specular * Math.pow(rv, m.shininess) : 0;
+/** Phong highlight toward `frame.toLight`: specular·(R·V)^shininess, R the light mirrored about the normal. */
+function specular(frame) {
+  const material = frame.hit.object.material;
+  if (!(material.specular > 0)) return 0;
+  reflect(frame.mirror, frame.toLight, frame.normal);
+  const rv = dot(frame.mirror, frame.ray.direction); // mirror = −R, ray = −V: R·V
+  return rv > 0 ? material.specular * Math.pow(rv, material.shininess) : 0;
 }
 
 /**
- * Mirror and glass: opaque = (1 − reflection)·local + reflection·colour·mirror;
- * result = (1 − transparency)·opaque + transparency·(F·mirror + (1 − F)·colour·refracted),
+ * Mirror and glass: opaque = (1 − reflection)·local + reflection·colour·mirrored,
+ * result = (1 − transparency)·opaque + transparency·(F·mirrored + (1 − F)·colour·refracted),
  * F the Fresnel share of light reflected (Schlick's approximation).
  */
-function mirrorAndGlass(scene, m, f, ray, inside, out, record, depth) {
-  const kr = m.reflection, kt = m.transparency, c = m.color;
-  const cosi = -dot(ray.direction, f.normal);
-  const eta = inside ? m.ior : 1 / m.ior;
-  const refracts = kt > 0 && refractDirection(f.refracted.direction, ray.direction, f.normal, cosi, eta);
-  const F = kt > 0 ? (refracts ? schlick(cosi, m.ior) : 1) : 0;
+function mirrorAndGlass(frame, color, record) {
+  const { scene, ray, reflected, refracted } = frame;
+  const { reflection, transparency, ior, color: surface } = frame.hit.object.material;
+  const cosi = -dot(ray.direction, frame.normal);
+  const eta = frame.inside ? ior : 1 / ior;
+  const refracts = transparency > 0 && refractDirection(refracted.direction, ray.direction, frame.normal, cosi, eta);
+  const fresnel = transparency > 0 ? (refracts ? schlick(cosi, ior) : 1) : 0;
 
-  const mirror = f.mirrorColor, through = f.throughColor;
-  reflect(f.reflected.direction, ray.direction, f.normal);
-  scaleAndAdd(f.reflected.origin, f.point, f.normal, scene.bias);
-  trace(scene, f.reflected, mirror, record && (record.reflection = {}), depth + 1);
+  const mirrored = frame.reflectedColor, through = frame.refractedColor, depth = frame.depth + 1;
+  reflect(reflected.direction, ray.direction, frame.normal);
+  scaleAndAdd(reflected.origin, frame.point, frame.normal, scene.bias);
+  trace(scene, reflected, mirrored, record && (record.reflection = {}), depth);
   if (refracts) {
-    scaleAndAdd(f.refracted.origin, f.point, f.normal, -scene.bias); // start just inside
-    trace(scene, f.refracted, through, record && (record.refraction = {}), depth + 1);
+    scaleAndAdd(refracted.origin, frame.point, frame.normal, -scene.bias); // start just inside
+    trace(scene, refracted, through, record && (record.refraction = {}), depth);
   } else setColor(through, 0, 0, 0);
 
   for (let i = 0; i < 3; i++) {
-    const opaque = (1 - kr) * out[i] + kr * c[i] * mirror[i];
-    out[i] = (1 - kt) * opaque + kt * (F * mirror[i] + (1 - F) * c[i] * through[i]);
+    const opaque = (1 - reflection) * color[i] + reflection * surface[i] * mirrored[i];
+    color[i] = (1 - transparency) * opaque + transparency * (fresnel * mirrored[i] + (1 - fresnel) * surface[i] * through[i]);
   }
-  if (record) record.fresnel = F;
+  if (record) record.fresnel = fresnel;
 }
 
 /** Snell's law: refracted unit direction into `out`; false on total internal reflection. */
@@ -179,14 +183,19 @@ function copyColor(out, c) {
   return out;
 }
 
-/* Scratch space, one frame per bounce depth, so tracing allocates nothing. */
+/*
+ * Scratch space, one frame per bounce depth, so tracing allocates nothing.
+ * A frame is also the bounce's context: the scene and ray being traced, what
+ * it hit, where and facing which way, passed whole to each step of the story.
+ */
 const frames = [];
 function newFrame(depth) {
   while (frames.length <= depth) {
     frames.push({
-      hit: { object: null, t: Infinity }, point: new Vec3(), normal: new Vec3(), toLight: new Vec3(),
-      mirror: new Vec3(), shadowRay: new Ray(), reflected: new Ray(), refracted: new Ray(),
-      mirrorColor: [0.5, 0.5, 0.5], throughColor: [0.5, 0.5, 0.5],
+      depth: frames.length, scene: null, ray: null,
+      hit: { object: null, t: Infinity }, point: new Vec3(), normal: new Vec3(), inside: false,
+      toLight: new Vec3(), mirror: new Vec3(), shadowRay: new Ray(), reflected: new Ray(), refracted: new Ray(),
+      reflectedColor: [0.5, 0.5, 0.5], refractedColor: [0.5, 0.5, 0.5],
     });
   }
   return frames[depth];
@@ -194,25 +203,34 @@ function newFrame(depth) {
 
 /* ---- the inspector's record (only built when `steps` is given) ---- */
 
-function hitRecord(steps, object, f, ray, inside, scene) {
-  const cos = Math.min(1, Math.abs(dot(ray.direction, f.normal)));
+/** The hit and how each light coloured it, by the lighting's own functions; the colour stays trace's. */
+function recordHit(steps, frame) {
+  const { scene, ray } = frame, { object, t } = frame.hit, { material } = object;
+  const cos = Math.min(1, Math.abs(dot(ray.direction, frame.normal)));
   steps.hit = {
-    object, index: scene.objects.indexOf(object), t: f.hit.t,
-    point: copy(new Vec3(), f.point), normal: copy(new Vec3(), f.normal), inside,
-    incidence: Math.acos(cos) * DEG_PER_RAD, lights: [],
-    emission: [...object.material.emission],
-    ambient: object.material.color.map((c) => c * scene.ambient),
+    object, index: scene.objects.indexOf(object), t,
+    point: copy(new Vec3(), frame.point), normal: copy(new Vec3(), frame.normal), inside: frame.inside,
+    incidence: Math.acos(cos) * DEG_PER_RAD,
+    lights: scene.lights.filter((light) => light.object !== object).map((light) => recordLight(frame, light)),
+    emission: [...material.emission],
+    ambient: material.color.map((c) => c * scene.ambient),
     reflection: null, refraction: null, fresnel: null,
   };
   return steps.hit;
 }
 
-function recordLight(record, light, cos, transmission, diffuse, highlight, c, distance) {
-  const e = light.emission;
-  record.lights.push({
+/** One light's share at the hit point, as lightPoint adds it (zero when it faces away or is blocked). */
+function recordLight(frame, light) {
+  const { scene } = frame, surface = frame.hit.object.material.color, lightColor = light.emission;
+  const distance = directionTo(frame.toLight, frame.point, light.position);
+  const cos = dot(frame.normal, frame.toLight);
+  const transmission = cos <= 0 ? 0 : scene.shadows ? shadowRay(frame, distance, light.object) : 1;
+  const diffuse = transmission > 0 ? cos * transmission : 0;
+  const highlight = transmission > 0 && scene.specular ? specular(frame) * transmission : 0;
+  return {
     light: light.source, position: copy(new Vec3(), light.position), distance,
     cos, facing: cos > 0, inShadow: cos > 0 && transmission < 1, transmission,
-    contribution: [0, 1, 2].map((i) => e[i] * (c[i] * diffuse + highlight)),
+    contribution: [0, 1, 2].map((i) => lightColor[i] * (surface[i] * diffuse + highlight)),
     specular: highlight,
-  });
+  };
 }
