@@ -9,7 +9,7 @@
  * The text box is read by readNumber, as every value box of the sketchbook
  * is; fieldMessage needs no page.
  */
-import { readNumber } from './scene-form.js';
+import { readNumber } from '../values.js';
 import { withText } from './dom.js';
 import { checkOptions } from '../check.js';
 

@@ -1,79 +1,10 @@
-// The value boxes' pure parts: reading what a student types (every bad value
-// named), showing colours, editing scene JSON, and the scene in a link.
+// The scene form's pure parts: its columns, editing scene JSON, and the scene in a link.
 import { describe, it, expect } from 'vitest';
 import { classScene, render, Camera } from '../../lib/index.js';
 import { sceneToJSON, sceneFromJSON } from '../../lib/serialize.js';
 import {
-  readNumber, readColor, colorText, tableColumns, COLUMNS, withValue, compactSceneJSON, encodeScene, decodeScene,
+  tableColumns, COLUMNS, withValue, compactSceneJSON, encodeScene, decodeScene,
 } from '../../lib/p5/scene-form.js';
-
-describe('readNumber', () => {
-  it('reads numbers as people type them', () => {
-    expect(readNumber('4', 'radius')).toBe(4);
-    expect(readNumber('  -5.5 ', 'x')).toBe(-5.5);
-    expect(readNumber('.5', 'x')).toBe(0.5);
-    expect(readNumber('1e3', 'x')).toBe(1000);
-    expect(readNumber('−3', 'x')).toBe(-3); // a typographic minus
-    expect(readNumber(12, 'x')).toBe(12);
-  });
-
-  it('names the box when it is empty or not a number', () => {
-    expect(() => readNumber('', 'Pixel x')).toThrow(TypeError);
-    expect(() => readNumber('   ', 'Pixel x')).toThrow(/^Pixel x is empty/);
-    expect(() => readNumber('abc', 'radius')).toThrow(/^radius must be a number, got "abc"/);
-    expect(() => readNumber('4px', 'radius')).toThrow(/^radius must be a number/);
-    expect(() => readNumber('1,5', 'radius')).toThrow(/^radius must be a number/);
-    expect(() => readNumber('NaN', 'radius')).toThrow(/^radius must be a number/);
-    expect(() => readNumber('Infinity', 'radius')).toThrow(/^radius must be a number/);
-    expect(() => readNumber('1e999', 'radius')).toThrow(RangeError);
-  });
-
-  it('checks whole numbers and ranges, with the range in the message', () => {
-    const rule = { min: 0, max: 31, integer: true };
-    expect(readNumber('31', 'Pixel x', rule)).toBe(31);
-    expect(() => readNumber('32', 'Pixel x', rule)).toThrow(/^Pixel x must be from 0 to 31, got 32$/);
-    expect(() => readNumber('-1', 'Pixel x', rule)).toThrow(RangeError);
-    expect(() => readNumber('2.5', 'Pixel x', rule)).toThrow(/^Pixel x must be a whole number, got 2.5$/);
-    expect(() => readNumber('', 'Pixel x', rule)).toThrow(/whole number from 0 to 31/);
-    expect(() => readNumber('120', 'Camera V', { min: -90, max: 90 })).toThrow(/^Camera V must be from -90 to 90, got 120$/);
-    expect(() => readNumber('-1', 'intensity', { min: 0 })).toThrow(/^intensity must be at least 0, got -1$/);
-  });
-
-  it('can exclude the bound: a radius must be greater than 0', () => {
-    expect(readNumber('0.001', 'radius', { above: 0 })).toBe(0.001);
-    expect(() => readNumber('0', 'radius', { above: 0 })).toThrow(/^radius must be greater than 0, got 0$/);
-    expect(() => readNumber('-1', 'radius', { above: 0 })).toThrow(/^radius must be greater than 0, got -1$/);
-  });
-});
-
-describe('readColor and colorText', () => {
-  it('reads hex, names, rgb(), three numbers and one number (a grey)', () => {
-    expect(readColor('#ff0000', 'colour')).toEqual([1, 0, 0]);
-    expect(readColor('pink', 'colour')).toEqual([1, 192 / 255, 203 / 255]);
-    expect(readColor('rgb(0, 255, 0)', 'colour')).toEqual([0, 1, 0]);
-    expect(readColor('1, 0.32, 0.36', 'colour')).toEqual([1, 0.32, 0.36]);
-    expect(readColor('[1 0.5 0]', 'colour')).toEqual([1, 0.5, 0]);
-    expect(readColor('1.2', 'emission')).toEqual([1.2, 1.2, 1.2]);
-  });
-
-  it('names the box for a bad colour', () => {
-    expect(() => readColor('', 'Sphere 1 colour')).toThrow(/^Sphere 1 colour is empty/);
-    expect(() => readColor('pinkish', 'Sphere 1 colour')).toThrow(/^Sphere 1 colour must be a colour like/);
-    expect(() => readColor('-1', 'emission')).toThrow(RangeError);
-    expect(() => readColor('-1', 'emission')).toThrow(/^emission/);
-    expect(() => readColor('1, 2', 'colour')).toThrow(/^colour/);
-  });
-
-  it('shows colours the way a box can read them back', () => {
-    expect(colorText([1, 0, 0])).toBe('#ff0000');
-    expect(colorText([2, 2, 2])).toBe('2');
-    expect(colorText([1.2, 1.2, 1.2], { grey: true })).toBe('1.2');
-    expect(colorText([0, 0, 0], { grey: true })).toBe('0');
-    expect(colorText([0, 0, 0])).toBe('#000000');
-    expect(colorText([2, 1, 0])).toBe('2, 1, 0');
-    for (const rgb of [[2, 2, 2], [2, 1, 0], [0.2, 0.4, 1]]) expect(readColor(colorText(rgb), 'c')).toEqual(rgb);
-  });
-});
 
 describe('the columns of each kind of object', () => {
   it('give every sphere its centre, radius, colour, reflection, transparency and emission', () => {
