@@ -137,34 +137,6 @@ export function decodeScene(text) {
 
 /* ---------------- a box with its message, for any sketch ---------------- */
 
-const FORM_STYLE = `
-.sf-box { display: inline-flex; flex-direction: column; gap: 0.2rem; vertical-align: top; }
-.sf-label { font-weight: 600; }
-.sf-hidden-label { position: absolute; width: 1px; height: 1px; overflow: hidden; clip-path: inset(50%); white-space: nowrap; }
-.sf-field { display: inline-flex; gap: 0.3rem; align-items: center; }
-.sf-box input[type="text"] { font: 1.05rem var(--rt-mono, monospace); padding: 0.25rem 0.4rem; border: 1px solid #9aa4b1; border-radius: 0.3rem; background: #fff; color: inherit; }
-.sf-box input[type="color"] { inline-size: 2.2rem; block-size: 2rem; padding: 0; border: 1px solid #9aa4b1; border-radius: 0.3rem; background: #fff; }
-.sf-box input[aria-invalid="true"] { border-color: var(--rt-bad, #c4321b); outline: 2px solid var(--rt-bad, #c4321b); background: #fff1ee; }
-.sf-message { color: var(--rt-bad, #c4321b); font-weight: 600; font-size: 0.9rem; max-width: 18rem; white-space: normal; line-height: 1.25; }
-.sf-message:empty { display: none; }
-.sf-form { font-family: var(--rt-sans, sans-serif); }
-.sf-top { display: flex; flex-wrap: wrap; gap: 0.6rem 0.8rem; align-items: flex-end; margin-bottom: 0.8rem; }
-.sf-section h3 { margin: 0.8rem 0 0.3rem; font-size: 1.05rem; }
-.sf-table-wrap { overflow-x: auto; }
-.sf-table { border-collapse: collapse; }
-.sf-table th, .sf-table td { padding: 0.2rem 0.3rem; text-align: left; vertical-align: top; border-bottom: 1px solid var(--rt-line, #d5dae1); }
-.sf-table thead th { font-size: 0.9rem; color: var(--rt-muted, #5b6470); }
-.sf-table tbody th { white-space: nowrap; padding-top: 0.45rem; }
-.sf-remove { font-size: 0.85rem; padding: 0.25rem 0.5rem; }
-`;
-
-/** Adds the sketchbook's stylesheet and the value boxes' few rules to the page, once. */
-function useFormStyle() {
-  useStyle();
-  if (typeof document === 'undefined' || document.querySelector('style[data-scene-form-style]')) return;
-  document.head.append(element('style', { 'data-scene-form-style': '' }, FORM_STYLE));
-}
-
 /**
  * A labelled text box with a message beside it. `read()` returns the value
  * (via `parse(text, label)`) or, when it throws, shows the message and
@@ -178,7 +150,7 @@ function useFormStyle() {
  * @param {string} [options.size='6'] width in characters
  */
 export function valueBox({ label, value = '', parse, rule, name, size = '6' }) {
-  useFormStyle();
+  useStyle();
   const read = parse ?? ((text, l) => readNumber(text, l, rule));
   const input = element('input', { type: 'text', inputmode: 'decimal', name, size, spellcheck: 'false', autocomplete: 'off', 'aria-label': label });
   input.value = String(value);
@@ -248,7 +220,7 @@ export class SceneForm {
 
   constructor({ json, parent, onChange }) {
     if (typeof onChange !== 'function') throw new TypeError(`onChange must be a function, got ${show(onChange)}`);
-    useFormStyle();
+    useStyle();
     this.json = sceneToJSON(sceneFromJSON(json)); // checked, every field present
     this.onChange = onChange;
     this.element = element('div', { class: 'sf-form', 'data-scene-form': '' });
