@@ -9,7 +9,7 @@
  *   const values = form.read();   // { x: 10 }, or undefined after marking the bad box in red
  *   form.show({ ok: true, message: 'Pink!', color, answer: 'Pixel: 10,12; H: 30; V: -82' });
  */
-import { valueBox } from './scene-form.js';
+import { valueBox } from './value-box.js';
 import { element, resolveParent, sketchNode } from './dom.js';
 import { checkOptions } from '../check.js';
 

@@ -1,9 +1,8 @@
 /**
- * Value boxes: a box for a number or a colour a student types (read by
- * lib/values.js), with a message that names the box; and a whole form of boxes
- * for a scene (every sphere's centre, radius, colour, reflection, transparency
- * and emission, every point light) that hands back a new Scene only when the
- * values are good. Also: a scene in a page's URL (`?scene=<base64url JSON>`), to share it.
+ * The scene form: value boxes (value-box.js) for a whole scene (every
+ * sphere's centre, radius, colour, reflection, transparency and emission,
+ * every point light) that hand back a new Scene only when the values are good.
+ * Also: a scene in a page's URL (`?scene=<base64url JSON>`), to share it.
  *
  *   const form = p.createSceneForm({ json: sceneToJSON(scene), parent, onChange: (scene, json) => view.setScene(scene) });
  *
@@ -13,10 +12,11 @@
 import { Scene } from '../scene.js';
 import { Sphere } from '../shapes/sphere.js';
 import { colorToHex } from '../color.js';
-import { readNumber, readColor, colorText } from '../values.js';
+import { readColor, colorText } from '../values.js';
 import { sceneToJSON, sceneFromJSON } from '../serialize.js';
 import { show, checkOptions } from '../check.js';
 import { useStyle, element } from './dom.js';
+import { valueBox } from './value-box.js';
 
 /* ---------------- the columns of each kind of object ---------------- */
 
@@ -133,52 +133,6 @@ export function decodeScene(text) {
     throw new TypeError('the scene in the link is not text');
   }
   return sceneFromJSON(json);
-}
-
-/* ---------------- a box with its message, for any sketch ---------------- */
-
-/**
- * A labelled text box with a message beside it. `read()` returns the value
- * (via `parse(text, label)`) or, when it throws, shows the message and
- * returns undefined. Good values clear the message.
- * @param {object} options
- * @param {string} options.label also the name used in messages
- * @param {string|number} [options.value]
- * @param {(text: string, label: string) => any} [options.parse] default readNumber with `rule`
- * @param {object} [options.rule] for readNumber
- * @param {string} [options.name] the box's `name` (for tests and labels)
- * @param {string} [options.size='6'] width in characters
- */
-export function valueBox({ label, value = '', parse, rule, name, size = '6' }) {
-  useStyle();
-  const read = parse ?? ((text, l) => readNumber(text, l, rule));
-  const input = element('input', { type: 'text', inputmode: 'decimal', name, size, spellcheck: 'false', autocomplete: 'off', 'aria-label': label });
-  input.value = String(value);
-  const message = element('span', { class: 'sf-message', role: 'alert', 'data-message-for': name ?? label });
-  const box = {
-    element: element('label', { class: 'sf-box' }, element('span', { class: 'sf-label' }, label), element('span', { class: 'sf-field' }, input), message),
-    input,
-    message,
-    read() {
-      try {
-        const v = read(input.value, label);
-        box.clear();
-        return v;
-      } catch (error) {
-        box.fail(error.message);
-        return undefined;
-      }
-    },
-    fail(text) {
-      message.textContent = text;
-      input.setAttribute('aria-invalid', 'true');
-    },
-    clear() {
-      message.textContent = '';
-      input.removeAttribute('aria-invalid');
-    },
-  };
-  return box;
 }
 
 /* ---------------- the scene form ---------------- */
