@@ -2,15 +2,11 @@
  * The scene form: value boxes (value-box.js) for a whole scene (every
  * sphere's centre, radius, colour, reflection, transparency and emission,
  * every point light) that hand back a new Scene only when the values are good.
- * Also: a scene in a page's URL (`?scene=<base64url JSON>`), to share it.
  *
  *   const form = p.createSceneForm({ json: sceneToJSON(scene), parent, onChange: (scene, json) => view.setScene(scene) });
  *
- * The pure functions (tableColumns, withValue, compactSceneJSON, encodeScene,
- * decodeScene) need no page.
+ * The pure functions (tableColumns, withValue) need no page.
  */
-import { Scene } from '../scene.js';
-import { Sphere } from '../shapes/sphere.js';
 import { colorToHex } from '../color.js';
 import { readColor, colorText } from '../values.js';
 import { sceneToJSON, sceneFromJSON } from '../serialize.js';
@@ -72,69 +68,6 @@ function boxText(o, column) {
   return column.kind === 'color' ? colorText(v, { grey: column.grey }) : String(v);
 }
 
-/* ---------------- the scene in a URL ---------------- */
-
-let defaults = null;
-
-/** The library's own defaults, read from an empty scene and a plain sphere: nothing to keep in step. */
-function defaultValues() {
-  if (!defaults) {
-    const probe = sceneToJSON(new Scene().add(new Sphere([0, 0, 0], 1)));
-    const { objects, ...scene } = probe;
-    defaults = { scene, material: objects[0].material };
-  }
-  return defaults;
-}
-
-const same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
-
-/** Scene JSON without the fields that hold their default value (shorter links); `sceneFromJSON` reads it back the same. */
-export function compactSceneJSON(json) {
-  const { scene, material } = defaultValues();
-  const out = {};
-  for (const [key, value] of Object.entries(json)) if (key === 'objects' || !same(value, scene[key])) out[key] = value;
-  out.objects = (json.objects ?? []).map((o) => {
-    const copy = { ...o };
-    if (!copy.name) delete copy.name;
-    if (copy.material) {
-      copy.material = Object.fromEntries(Object.entries(copy.material).filter(([k, v]) => !same(v, material[k])));
-    }
-    return copy;
-  });
-  return out;
-}
-
-/** Scene JSON as URL-safe text: base64url of its compact JSON. */
-export function encodeScene(json) {
-  const bytes = new TextEncoder().encode(JSON.stringify(compactSceneJSON(json)));
-  let binary = '';
-  for (const b of bytes) binary += String.fromCharCode(b);
-  return btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
-}
-
-/**
- * The Scene in text made by encodeScene (or plain JSON text), checked by
- * sceneFromJSON; a TypeError/RangeError saying what is wrong otherwise.
- */
-export function decodeScene(text) {
-  const t = String(text ?? '').trim();
-  if (t.startsWith('{')) return sceneFromJSON(t);
-  if (!/^[A-Za-z0-9_-]+$/.test(t)) throw new TypeError('the scene in the link is not base64url text');
-  let binary;
-  try {
-    binary = atob(t.replace(/-/g, '+').replace(/_/g, '/'));
-  } catch {
-    throw new TypeError('the scene in the link is cut short or not base64url text');
-  }
-  let json;
-  try {
-    json = new TextDecoder('utf-8', { fatal: true }).decode(Uint8Array.from(binary, (c) => c.charCodeAt(0)));
-  } catch {
-    throw new TypeError('the scene in the link is not text');
-  }
-  return sceneFromJSON(json);
-}
-
 /* ---------------- the scene form ---------------- */
 
 /**
@@ -154,7 +87,7 @@ export const FORM_ROWS = 40;
  * @param {object} options
  * @param {object} options.json scene JSON (sceneToJSON)
  * @param {HTMLElement} options.parent
- * @param {(scene: Scene, json: object) => void} options.onChange
+ * @param {(scene: import('../scene.js').Scene, json: object) => void} options.onChange
  * @example
  * p.createSceneForm({
  *   json: sceneToJSON(classScene()), parent: document.getElementById('values'),

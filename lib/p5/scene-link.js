@@ -14,8 +14,7 @@
  *   const scene = await readSceneLink(location.href);         // null when the link has none
  *   history.replaceState(null, '', await sceneLinkURL(location.href, json));
  */
-import { compactSceneJSON, decodeScene } from './scene-form.js';
-import { sceneFromJSON } from '../serialize.js';
+import { compactSceneBytes, decodeScene, sceneFromBytes, isBase64url, toBase64url, fromBase64url } from '../scene-codec.js';
 
 /** Links longer than this may be cut by chats and e-mail. */
 export const LINK_WARN_LENGTH = 8_000;
@@ -35,8 +34,7 @@ export function sceneTextInLink(href) {
 
 /** Scene JSON as link text: `z.` + base64url of its compressed compact JSON. */
 export async function encodeSceneLink(json) {
-  const bytes = new TextEncoder().encode(JSON.stringify(compactSceneJSON(json)));
-  return PREFIX + toBase64url(await pipe(bytes, new CompressionStream('deflate-raw')));
+  return PREFIX + toBase64url(await pipe(compactSceneBytes(json), new CompressionStream('deflate-raw')));
 }
 
 /**
@@ -47,7 +45,7 @@ export async function decodeSceneLink(text) {
   const t = String(text ?? '').trim();
   if (!t.startsWith(PREFIX)) return decodeScene(t);
   const body = t.slice(PREFIX.length);
-  if (!/^[A-Za-z0-9_-]+$/.test(body)) throw new TypeError('the scene in the link is not base64url text');
+  if (!isBase64url(body)) throw new TypeError('the scene in the link is not base64url text');
   let bytes;
   try {
     bytes = await pipe(fromBase64url(body), new DecompressionStream('deflate-raw'), MAX_SCENE_BYTES);
@@ -55,13 +53,7 @@ export async function decodeSceneLink(text) {
     if (error instanceof RangeError) throw error;
     throw new TypeError('the scene in the link is cut short or damaged', { cause: error });
   }
-  let json;
-  try {
-    json = new TextDecoder('utf-8', { fatal: true }).decode(bytes);
-  } catch {
-    throw new TypeError('the scene in the link is not text');
-  }
-  return sceneFromJSON(json);
+  return sceneFromBytes(bytes);
 }
 
 /** The Scene in a page's link, null when it has none; throws (see decodeSceneLink) when it cannot be read. */
@@ -114,15 +106,4 @@ async function pipe(bytes, transform, max = Infinity) {
   let at = 0;
   for (const c of chunks) { out.set(c, at); at += c.length; }
   return out;
-}
-
-function toBase64url(bytes) {
-  let binary = '';
-  for (let i = 0; i < bytes.length; i += 0x8000) binary += String.fromCharCode(...bytes.subarray(i, i + 0x8000));
-  return btoa(binary).replace(/\+/g, '-').replace(/\//g, '_').replace(/=+$/, '');
-}
-
-function fromBase64url(text) {
-  const binary = atob(text.replace(/-/g, '+').replace(/_/g, '/'));
-  return Uint8Array.from(binary, (c) => c.charCodeAt(0));
 }

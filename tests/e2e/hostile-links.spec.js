@@ -8,7 +8,7 @@ import { watchConsole } from './helpers.js';
 import { EVERY_PAGE, PAGE_PARAMETERS } from './link-parameters.js';
 import { sceneToJSON } from '../../lib/serialize.js';
 import { classScene } from '../../lib/scenes.js';
-import { encodeScene } from '../../lib/p5/scene-form.js';
+import { encodeScene } from '../../lib/scene-codec.js';
 
 const PAGES = ['index.html', ...readdirSync('sketches').filter((f) => f.endsWith('.html')).map((f) => `sketches/${f}`)];
 const PAYLOADS = [

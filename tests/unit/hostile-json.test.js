@@ -2,7 +2,7 @@
 // TypeError/RangeError that names the path, in a message of a few lines.
 import { describe, it, expect } from 'vitest';
 import { sceneFromJSON, cameraFromJSON, MAX_JSON_DEPTH } from '../../lib/serialize.js';
-import { decodeScene } from '../../lib/p5/scene-form.js';
+import { decodeScene } from '../../lib/scene-codec.js';
 import { show, SHOW_MAX } from '../../lib/check.js';
 
 const SHORT = 400; // no message longer than this
