@@ -5,41 +5,16 @@
  *
  *   const form = p.createSceneForm({ json: sceneToJSON(scene), parent, onChange: (scene, json) => view.setScene(scene) });
  *
- * The pure functions (tableColumns, withValue) need no page.
+ * Which boxes each kind of object gets, and the new JSON a box's value makes:
+ * lib/scene-fields.js.
  */
 import { colorToHex } from '../color.js';
 import { readColor, colorText } from '../values.js';
+import { tableColumns, withValue, fieldText } from '../scene-fields.js';
 import { sceneToJSON, sceneFromJSON } from '../serialize.js';
 import { show, checkOptions } from '../check.js';
 import { useStyle, element } from './dom.js';
 import { valueBox } from './value-box.js';
-
-/* ---------------- the columns of each kind of object ---------------- */
-
-const xyz = (field, name) => ['x', 'y', 'z'].map((axis, i) => ({ path: [field, i], label: `${name} ${axis}`, head: axis, kind: 'number' }));
-const share = (field) => ({ path: ['material', field], label: field, head: field, kind: 'number', rule: { min: 0, max: 1 } });
-const surface = { path: ['material', 'color'], label: 'colour', head: 'colour', kind: 'color' };
-
-/**
- * The boxes of each object type, in table order: `path` into the object's
- * JSON, `label` for messages, `head` for the column, `kind` 'number' or
- * 'color', and `rule` for readNumber.
- */
-export const COLUMNS = {
-  sphere: [...xyz('center', 'centre'), { path: ['radius'], label: 'radius', head: 'radius', kind: 'number', rule: { above: 0 } },
-    surface, share('reflection'), share('transparency'),
-    { path: ['material', 'emission'], label: 'emission', head: 'emission', kind: 'color', grey: true }],
-  pointLight: [...xyz('position', 'position'), { path: ['color'], label: 'colour', head: 'colour', kind: 'color' },
-    { path: ['intensity'], label: 'intensity', head: 'intensity', kind: 'number', rule: { min: 0 } }],
-  plane: [...xyz('point', 'point'), ...xyz('normal', 'normal'), surface, share('reflection')],
-  box: [...xyz('min', 'min'), ...xyz('max', 'max'), surface, share('reflection')],
-};
-
-/** The columns for objects of `type` (a TypeError for an unknown one). */
-export function tableColumns(type) {
-  if (!Object.hasOwn(COLUMNS, type)) throw new TypeError(`type must be one of ${Object.keys(COLUMNS).join(', ')}, got ${show(type)}`);
-  return COLUMNS[type];
-}
 
 /** What each table is called, and what a new row holds. */
 const TABLES = [
@@ -48,25 +23,6 @@ const TABLES = [
   { type: 'plane', title: 'Planes', what: 'Plane' },
   { type: 'box', title: 'Boxes', what: 'Box' },
 ];
-
-/** A copy of `json` with `value` at `path` (an array of keys); `json` itself is untouched. */
-export function withValue(json, path, value) {
-  const copy = structuredClone(json);
-  let at = copy;
-  for (const key of path.slice(0, -1)) at = at[key];
-  at[path.at(-1)] = value;
-  return copy;
-}
-
-function valueAt(json, path) {
-  return path.reduce((at, key) => at?.[key], json);
-}
-
-/** The box's text for the value at `path` of an object. */
-function boxText(o, column) {
-  const v = valueAt(o, column.path);
-  return column.kind === 'color' ? colorText(v, { grey: column.grey }) : String(v);
-}
 
 /* ---------------- the scene form ---------------- */
 
@@ -200,8 +156,8 @@ export class SceneForm {
       const label = `${who} ${c.label}`;
       const commit = (value) => this.#try(withValue(this.json, ['objects', index, ...c.path], value), who);
       const box = c.kind === 'color'
-        ? this.#colorBox(boxText(o, c), id, label, commit, !c.grey)
-        : this.#numberBox(boxText(o, c), id, label, c.rule, commit);
+        ? this.#colorBox(fieldText(o, c), id, label, commit, !c.grey)
+        : this.#numberBox(fieldText(o, c), id, label, c.rule, commit);
       return element('td', {}, box.element);
     });
     const remove = element('button', { type: 'button', class: 'rt-button sf-remove', 'data-remove': String(index), title: `Remove ${who}` }, 'Remove');

@@ -1,8 +1,8 @@
-// The scene form's pure parts: its columns, and editing scene JSON.
+// The values a scene form edits: the columns of each type, a box's text, and editing scene JSON.
 import { describe, it, expect } from 'vitest';
 import { classScene } from '../../lib/index.js';
 import { sceneToJSON, sceneFromJSON } from '../../lib/serialize.js';
-import { tableColumns, COLUMNS, withValue } from '../../lib/p5/scene-form.js';
+import { tableColumns, COLUMNS, withValue, fieldText } from '../../lib/scene-fields.js';
 
 describe('the columns of each kind of object', () => {
   it('give every sphere its centre, radius, colour, reflection, transparency and emission', () => {
@@ -27,6 +27,14 @@ describe('the columns of each kind of object', () => {
         expect(v, `${o.type} ${c.label}`).toBeDefined();
       }
     }
+  });
+});
+
+describe('fieldText', () => {
+  it('shows numbers as they are and colours the way a box reads them back', () => {
+    const [sphere] = sceneToJSON(sceneFromJSON({ objects: [{ type: 'sphere', center: [0, -2.5, -5], radius: 1, material: { color: [1, 0, 0], emission: 1.5 } }] })).objects;
+    const text = (label) => fieldText(sphere, COLUMNS.sphere.find((c) => c.label === label));
+    expect([text('centre y'), text('radius'), text('colour'), text('emission')]).toEqual(['-2.5', '1', '#ff0000', '1.5']);
   });
 });
 
