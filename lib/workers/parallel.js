@@ -1,11 +1,13 @@
 /**
  * A frame rendered by several Web Workers at once. The workers stay up
- * between frames and get the scene and camera (as JSON) once per change; each
- * frame they get a share of the rows, in bands dealt out in turn so that every
- * share holds some sky and some spheres, and answer in a few large messages.
+ * between frames and get the scene and camera (as JSON) once per change.
  * Where the page is cross-origin isolated they write straight into one
- * SharedArrayBuffer; elsewhere their rows come back transferred. The picture
- * is render()'s, byte for byte: the workers run the same code on the same numbers.
+ * SharedArrayBuffer and take bands of a few rows from a shared counter as
+ * they go, so they end within a band of each other whatever the picture;
+ * elsewhere each gets a share of thin bands dealt out in turn, and its rows
+ * come back transferred. A worker answers a short frame in one message. The
+ * picture is render()'s, byte for byte: the workers run the same code on the
+ * same numbers.
  *
  * A worker that fails to start, reports an error or stays silent for
  * `timeoutMs` is stopped: its rows, and every later frame, are rendered on
@@ -14,9 +16,9 @@
 import { render } from '../render.js';
 import { positiveInteger, show, checkOptions } from '../check.js';
 import { sceneToJSON, cameraToJSON } from '../serialize.js';
-import { splitRows, bandHeight } from './split.js';
+import { splitRows, bandHeight, claimHeight } from './split.js';
 
-export { splitRows, bandHeight } from './split.js';
+export { splitRows, bandHeight, claimHeight } from './split.js';
 
 /** A module worker running render-worker.js (Vite sees this pattern and bundles the worker). */
 function startWorker() {
@@ -40,13 +42,15 @@ export class ParallelRenderer {
   #key = null;
   #version = 0;
   #json = null;
-  /** Shared frames of finished renders, kept for the next one of the same size. */
+  /** Shared frames of finished renders, `{ frame, next }` (next: its band counter), kept for the next one of the same size. */
   #spare = [];
+  /** Bumped when the workers are stopped: a frame they may still touch is never handed out again. */
+  #crew = 0;
 
   /**
    * @param {object} [options]
    * @param {number} [options.workers=navigator.hardwareConcurrency || 2] how many workers
-   * @param {'auto'|number} [options.rowsPerBand='auto'] rows per band ('auto': up to 16, at least 8 bands per worker)
+   * @param {'auto'|number} [options.rowsPerBand='auto'] rows per band ('auto': thin bands, see split.js's claimHeight and bandHeight)
    * @param {number} [options.timeoutMs=6000] a worker silent this long during a render is given up on
    * @param {'auto'|boolean} [options.shared='auto'] share one frame with the workers ('auto': where the page is cross-origin isolated)
    * @param {boolean} [options.fallback=true] when the workers fail, render on the main thread (false: reject)
@@ -126,18 +130,32 @@ export class ParallelRenderer {
       this.#version++;
       this.#json = { scene: sceneJSON, camera: cameraJSON };
     }
-    const rowsPerBand = this.rowsPerBand === 'auto' ? bandHeight(height, this.workers) : this.rowsPerBand;
     const size = width * height * 4;
     const job = {
-      id: this.#nextId++, scene, camera, onRows, buffer: new Uint8ClampedArray(size),
-      shared: this.shared ? this.#sharedFrame(size) : null,
-      pending: new Map(), heard: new Map(), timer: 0,
+      id: this.#nextId++, crew: this.#crew, scene, camera, onRows, buffer: new Uint8ClampedArray(size), shared: null,
+      /** Bands [y0, y1) not yet in `buffer`, by y0; workers that have not said they are done, with when they were last heard. */
+      owed: new Map(), working: new Map(), timer: 0,
     };
-    splitRows(height, this.workers, rowsPerBand).forEach((bands, i) => { if (bands.length) job.pending.set(i, bands); });
+    const messages = [];
+    if (this.shared) {
+      // One job for every worker: each takes bands from the shared counter until the frame runs out.
+      const rowsPerBand = this.rowsPerBand === 'auto' ? claimHeight(height, this.workers) : this.rowsPerBand;
+      job.shared = this.#sharedFrame(size);
+      Atomics.store(job.shared.next, 0, 0);
+      for (let y0 = 0; y0 < height; y0 += rowsPerBand) job.owed.set(y0, [y0, Math.min(y0 + rowsPerBand, height)]);
+      const message = { id: job.id, version: this.#version, shared: job.shared.frame.buffer, next: job.shared.next.buffer, rowsPerBand };
+      for (let i = 0; i < Math.min(this.workers, job.owed.size); i++) messages.push([i, message]);
+    } else {
+      const rowsPerBand = this.rowsPerBand === 'auto' ? bandHeight(height, this.workers) : this.rowsPerBand;
+      splitRows(height, this.workers, rowsPerBand).forEach((bands, i) => {
+        for (const band of bands) job.owed.set(band[0], band);
+        if (bands.length) messages.push([i, { id: job.id, version: this.#version, bands }]);
+      });
+    }
     return new Promise((resolve, reject) => {
       Object.assign(job, { resolve, reject });
       this.#jobs.set(job.id, job);
-      for (const [i, bands] of job.pending) this.#send(i, job, bands);
+      for (const [i, message] of messages) this.#send(i, job, message);
       this.#watch(job);
     });
   }
@@ -164,8 +182,8 @@ export class ParallelRenderer {
     return this.#workers[i];
   }
 
-  /** Posts share `bands` of `job` to worker i, with the scene and camera if it does not hold them yet. */
-  #send(i, job, bands) {
+  /** Posts `message` (a job) to worker i, with the scene and camera if it does not hold them yet. */
+  #send(i, job, message) {
     if (!this.#jobs.has(job.id)) return; // already taken over by the main thread
     let entry;
     try {
@@ -174,39 +192,39 @@ export class ParallelRenderer {
       this.#giveUp(`render workers could not start (${error.message})`);
       return;
     }
-    const message = { id: job.id, version: this.#version, bands, shared: job.shared?.buffer };
-    if (entry.version !== this.#version) Object.assign(message, this.#json);
+    if (entry.version !== this.#version) message = { ...message, ...this.#json };
     entry.version = this.#version;
-    job.heard.set(i, performance.now());
+    job.working.set(i, performance.now());
     entry.worker.postMessage(message);
   }
 
-  /** Copies a group of finished bands into the frame: the main thread's only work. */
+  /** Copies bands a worker finished into the frame: the main thread's only work. */
   #receive(i, message) {
     const job = this.#jobs.get(message.id);
-    if (!job || !job.pending.has(i)) return; // a render already finished, failed or taken over
+    if (!job || !job.working.has(i)) return; // a render already finished, failed or taken over
     if (message.error) {
       this.#giveUp(`render worker ${i + 1} reported ${message.error}`);
       return;
     }
-    job.heard.set(i, performance.now());
-    const rowBytes = job.camera.width * 4, source = job.shared ?? new Uint8ClampedArray(message.pixels);
+    job.working.set(i, performance.now());
+    const rowBytes = job.camera.width * 4, source = job.shared?.frame ?? new Uint8ClampedArray(message.pixels);
     let at = 0;
     for (const [y0, y1] of message.bands) {
-      const start = y0 * rowBytes, length = (y1 - y0) * rowBytes;
-      job.buffer.set(source.subarray(job.shared ? start : at, (job.shared ? start : at) + length), start);
+      const start = y0 * rowBytes, length = (y1 - y0) * rowBytes, from = job.shared ? start : at;
+      job.buffer.set(source.subarray(from, from + length), start);
+      job.owed.delete(y0);
       at += length;
     }
-    const left = job.pending.get(i).filter(([y0]) => !message.bands.some(([b0]) => b0 === y0));
-    if (message.done || left.length === 0) job.pending.delete(i);
-    else job.pending.set(i, left);
+    if (message.done) job.working.delete(i);
     try {
       for (const [y0, y1] of message.bands) job.onRows?.(y0, y1, job.buffer);
     } catch (error) {
       this.#finish(job, error);
       return;
     }
-    if (job.pending.size === 0) this.#finish(job);
+    if (job.working.size > 0) return;
+    if (job.owed.size > 0) this.#giveUp(`render workers left rows ${[...job.owed.keys()].join(', ')} undone`);
+    else this.#finish(job);
   }
 
   /** Gives up on a worker silent for timeoutMs while it owes rows. */
@@ -215,8 +233,8 @@ export class ParallelRenderer {
     if (!this.#jobs.has(job.id)) return;
     const now = performance.now();
     let wait = this.timeoutMs;
-    for (const i of job.pending.keys()) {
-      const silent = now - job.heard.get(i);
+    for (const [i, heard] of job.working) {
+      const silent = now - heard;
       if (silent >= this.timeoutMs) {
         this.#giveUp(`render worker ${i + 1} did not answer within ${this.timeoutMs / 1000} s`);
         return;
@@ -241,11 +259,9 @@ export class ParallelRenderer {
         continue;
       }
       try {
-        for (const bands of job.pending.values()) {
-          for (const [y0, y1] of bands) render(job.scene, job.camera, job.buffer, { y0, y1 });
-        }
-        const owed = [...job.pending.values()].flat().sort((a, b) => a[0] - b[0]);
-        job.pending.clear();
+        const owed = [...job.owed.values()].sort((a, b) => a[0] - b[0]);
+        for (const [y0, y1] of owed) render(job.scene, job.camera, job.buffer, { y0, y1 });
+        job.owed.clear();
         for (const [y0, y1] of owed) job.onRows?.(y0, y1, job.buffer);
         this.#finish(job);
       } catch (error) {
@@ -257,22 +273,25 @@ export class ParallelRenderer {
   #stopWorkers() {
     for (const entry of this.#workers) entry?.worker.terminate();
     this.#workers = [];
+    // A stopped worker may run on for a moment: no frame it could still write into is used again.
+    this.#crew++;
+    this.#spare = [];
   }
 
   /** Settles a render: its picture, or `error`. */
   #finish(job, error) {
     if (!this.#jobs.delete(job.id)) return;
     clearTimeout(job.timer);
-    if (job.shared) this.#spare.push(job.shared);
+    if (job.shared && job.crew === this.#crew) this.#spare.push(job.shared);
     if (error) job.reject(error);
     else job.resolve(job.buffer);
   }
 
-  /** A shared frame of `size` bytes: a spare one, or a new one. */
+  /** A shared frame of `size` bytes and its band counter: a spare one, or a new one. */
   #sharedFrame(size) {
-    const k = this.#spare.findIndex((frame) => frame.length === size);
+    const k = this.#spare.findIndex(({ frame }) => frame.length === size);
     if (k >= 0) return this.#spare.splice(k, 1)[0];
     this.#spare = [];
-    return new Uint8ClampedArray(new SharedArrayBuffer(size));
+    return { frame: new Uint8ClampedArray(new SharedArrayBuffer(size)), next: new Int32Array(new SharedArrayBuffer(4)) };
   }
 }

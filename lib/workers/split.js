@@ -25,41 +25,56 @@ export function splitRows(height, parts, rowsPerBand = 1) {
   return shares;
 }
 
-/** Bands per worker at least: enough for the shares to balance, few enough to cost little. */
-const BANDS_PER_WORKER = 8;
+/** Bands per worker at least: many, so the shares balance (the bands travel in a few messages, however many). */
+const BANDS_PER_WORKER = 16;
 
 /**
- * Rows per band for a frame of `height` rows over `parts` workers: a tile's
- * height (16, the rows render() finds candidate shapes for at once) when the
- * frame is tall enough to give every worker BANDS_PER_WORKER of them, fewer
- * rows otherwise, so the shares stay within a band of each other.
+ * Rows per band for a frame of `height` rows over `parts` workers: half a
+ * tile's height (8) when the frame is tall enough to give every worker
+ * BANDS_PER_WORKER of them, fewer rows otherwise. Dealt in turn, such thin
+ * bands give every worker about the same mix of sky and spheres.
  */
 export function bandHeight(height, parts) {
-  return Math.max(1, Math.min(TILE, Math.floor(height / (parts * BANDS_PER_WORKER))));
+  return Math.max(1, Math.min(TILE / 2, Math.floor(height / (parts * BANDS_PER_WORKER))));
 }
 
-/** Messages a worker sends per share at most: its bands, finished, in about this many groups. */
-export const GROUPS = 4;
+/**
+ * Rows per band when the workers take bands from one counter as they go (a
+ * shared frame): a worker that finishes early takes more, so the bands can be
+ * few rows each: the shares then end within a band's time of each other.
+ */
+export function claimHeight(height, parts) {
+  return Math.max(1, Math.min(TILE / 4, Math.floor(height / (parts * 2 * BANDS_PER_WORKER))));
+}
+
+/** A worker reports its finished bands at most once per this many milliseconds of work, and when it is done. */
+export const REPORT_MS = 16;
 
 /**
  * What a worker does, as a function of its messages (the worker's whole
  * state lives in the closure). A job is
- *   { id, version, scene?, camera?, bands, shared? }
+ *   { id, version, scene?, camera?, bands }                      its share, rows transferred back;
+ *   { id, version, scene?, camera?, shared, next, rowsPerBand }  bands taken as it goes.
  * `scene` and `camera` (JSON) come only when `version` is new to this worker:
  * they are parsed, and the tiles' candidate shapes found, once per change.
- * With `shared` (a SharedArrayBuffer of the whole frame) the worker writes its
- * rows straight into it and posts `{ id, bands, done }` for each group of
- * bands; without, it posts `{ id, bands, pixels, done }`, `pixels` an
- * ArrayBuffer (transferred) of those bands' rows one after the other. On a
- * problem it posts `{ id, error }`.
+ * `shared` is a SharedArrayBuffer of the whole frame, written in place;
+ * `next` a SharedArrayBuffer holding one Int32, the next band of `rowsPerBand`
+ * rows to take: every worker on the frame takes from it (Atomics.add) until
+ * the frame runs out, so one that runs faster does more of it.
+ * The worker posts `{ id, bands, done }` (with `pixels` on the transfer path:
+ * an ArrayBuffer, transferred, of those bands' rows one after the other) when
+ * REPORT_MS have passed since its last message, and once done. A frame that
+ * takes less time is answered in one message. On a problem it posts `{ id, error }`.
+ * @param {object} [options]
+ * @param {() => number} [options.now=performance.now] the clock, in milliseconds (tests pass their own)
  * @returns {(job: object, post: (message: object, transfer?: ArrayBuffer[]) => void) => void}
  */
-export function workerHandler() {
+export function workerHandler({ now = () => performance.now() } = {}) {
   let version = null, scene = null, camera = null, tiles = null;
   let frame = new Uint8ClampedArray(0); // scratch frame for the transfer path, kept between jobs
 
   return function handle(job, post) {
-    const { id, bands } = job;
+    const { id } = job;
     try {
       if (job.scene !== undefined) {
         version = null; // until the new scene is whole
@@ -72,26 +87,41 @@ export function workerHandler() {
       const rowBytes = camera.width * 4, size = rowBytes * camera.height;
       const target = job.shared ? new Uint8ClampedArray(job.shared) : frame.length === size ? frame : (frame = new Uint8ClampedArray(size));
       if (target.length !== size) throw new RangeError(`shared frame holds ${target.length} bytes, the camera needs ${size}`);
-      const perGroup = Math.ceil(bands.length / GROUPS);
-      for (let g = 0; g < bands.length; g += perGroup) {
-        const group = bands.slice(g, g + perGroup);
-        for (const [y0, y1] of group) renderRows(scene, camera, target, y0, y1, tiles);
-        const done = g + perGroup >= bands.length;
+      const report = (bands, done) => {
         if (job.shared) {
-          post({ id, bands: group, done });
-        } else {
-          const pixels = new Uint8ClampedArray(group.reduce((n, [y0, y1]) => n + (y1 - y0) * rowBytes, 0));
-          let at = 0;
-          for (const [y0, y1] of group) {
-            pixels.set(target.subarray(y0 * rowBytes, y1 * rowBytes), at);
-            at += (y1 - y0) * rowBytes;
-          }
-          post({ id, bands: group, pixels: pixels.buffer, done }, [pixels.buffer]);
+          post({ id, bands, done });
+          return;
         }
+        const pixels = new Uint8ClampedArray(bands.reduce((n, [y0, y1]) => n + (y1 - y0) * rowBytes, 0));
+        let at = 0;
+        for (const [y0, y1] of bands) {
+          pixels.set(target.subarray(y0 * rowBytes, y1 * rowBytes), at);
+          at += (y1 - y0) * rowBytes;
+        }
+        post({ id, bands, pixels: pixels.buffer, done }, [pixels.buffer]);
+      };
+      const bands = job.next ? claimed(job.next, positiveInteger(job.rowsPerBand, 'rowsPerBand'), camera.height) : job.bands.values();
+      let finished = [], reportedAt = now();
+      for (const [y0, y1] of bands) {
+        if (finished.length > 0 && now() - reportedAt >= REPORT_MS) { // (before the band: the last one goes with `done`)
+          report(finished, false);
+          finished = [];
+          reportedAt = now();
+        }
+        renderRows(scene, camera, target, y0, y1, tiles);
+        finished.push([y0, y1]);
       }
-      if (bands.length === 0) post({ id, bands: [], done: true });
+      report(finished, true);
     } catch (error) {
       post({ id, error: `${error.name}: ${error.message}` });
     }
   };
+}
+
+/** The bands [y0, y1) a worker takes from the shared counter `next`, one at a time, until the frame runs out. */
+function* claimed(next, rowsPerBand, height) {
+  const counter = new Int32Array(next);
+  for (let k = Atomics.add(counter, 0, 1); k * rowsPerBand < height; k = Atomics.add(counter, 0, 1)) {
+    yield [k * rowsPerBand, Math.min((k + 1) * rowsPerBand, height)];
+  }
 }

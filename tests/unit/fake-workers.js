@@ -5,11 +5,12 @@ import { workerHandler } from '../../lib/workers/split.js';
  * A stand-in for a Web Worker: runs the real worker code (workerHandler)
  * later, on structured clones of the messages, as a worker would (a
  * SharedArrayBuffer clones to the same memory, as between threads).
+ * `handlerOptions` go to workerHandler (a clock, say).
  */
-export function fakeWorkers() {
+export function fakeWorkers(handlerOptions) {
   const started = [], received = [], answers = [];
   const create = () => {
-    const handle = workerHandler();
+    const handle = workerHandler(handlerOptions);
     const worker = {
       onmessage: null, onerror: null, terminated: false, jobs: 0,
       postMessage(data) {

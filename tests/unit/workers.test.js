@@ -1,6 +1,6 @@
 import { describe, it, expect } from 'vitest';
-import { ParallelRenderer, splitRows, bandHeight } from '../../lib/workers/parallel.js';
-import { workerHandler, GROUPS } from '../../lib/workers/split.js';
+import { ParallelRenderer, splitRows, bandHeight, claimHeight } from '../../lib/workers/parallel.js';
+import { workerHandler, REPORT_MS } from '../../lib/workers/split.js';
 import { fakeWorkers, silentWorker } from './fake-workers.js';
 import { sceneToJSON, cameraToJSON } from '../../lib/serialize.js';
 import { render, Camera, Scene, Sphere, Plane, Box, PointLight, classScene, classSceneAt } from '../../lib/index.js';
@@ -33,13 +33,21 @@ describe('splitRows', () => {
     expect(Math.max(...sizes) - Math.min(...sizes)).toBeLessThanOrEqual(1);
   });
 
-  it('bandHeight: a tile\'s 16 rows on tall frames, fewer so that every worker gets 8 bands or more', () => {
-    expect(bandHeight(480, 2)).toBe(16);
-    expect(bandHeight(240, 4)).toBe(7);
+  it('bandHeight: half a tile (8 rows) on tall frames, fewer so that every worker gets 16 bands or one-row bands', () => {
+    expect(bandHeight(480, 2)).toBe(8);
+    expect(bandHeight(240, 4)).toBe(3);
     expect(bandHeight(23, 3)).toBe(1);
-    for (const [height, parts] of [[480, 2], [240, 4], [120, 8], [1000, 3]]) {
-      expect(splitRows(height, parts, bandHeight(height, parts)).every((bands) => bands.length >= 8)).toBe(true);
+    for (const [height, parts] of [[480, 2], [240, 4], [120, 8], [1000, 3], [240, 2]]) {
+      const rows = bandHeight(height, parts);
+      expect(rows === 1 || splitRows(height, parts, rows).every((bands) => bands.length >= 16), `${height} rows, ${parts} workers`).toBe(true);
     }
+  });
+
+  it('claimHeight: bands taken from a counter are thinner still (4 rows at most, 32 a worker or one-row bands)', () => {
+    expect(claimHeight(480, 2)).toBe(4);
+    expect(claimHeight(240, 2)).toBe(3);
+    expect(claimHeight(23, 3)).toBe(1);
+    expect(claimHeight(4000, 1)).toBe(4);
   });
 
   it('checks its arguments', () => {
@@ -101,8 +109,8 @@ describe('ParallelRenderer', () => {
     }
   }
 
-  it('sends the scene and camera once per change, and each worker answers in a few messages', async () => {
-    const fake = fakeWorkers();
+  it('sends the scene and camera once per change, and each worker answers a short frame in one message', async () => {
+    const fake = fakeWorkers({ now: () => 0 }); // a clock that stands still: every frame is "short"
     const parallel = new ParallelRenderer({ workers: 2, createWorker: fake.create });
     const camera = new Camera({ width: 64, height: 480 });
     const answers = [];
@@ -111,10 +119,28 @@ describe('ParallelRenderer', () => {
     await parallel.render(classSceneAt(1), camera); // a change
     const withScene = fake.received.map((m) => m.scene !== undefined);
     expect(withScene).toEqual([true, true, false, false, true, true]);
-    expect(fake.received.every((m) => m.bands.length === 15)).toBe(true); // 480 rows in 16-row bands, dealt in turn
-    expect(answers.length).toBe(2 * 15); // onRows: once per band
-    expect(fake.answers.length).toBe(3 * 2 * GROUPS); // but a worker answers a frame in GROUPS messages
+    expect(fake.received.every((m) => m.bands.length === 30)).toBe(true); // 480 rows in 8-row bands, dealt in turn
+    expect(answers.length).toBe(60); // onRows: once per band
+    expect(fake.answers.length).toBe(3 * 2); // but a worker answers a frame in one message
     expect(await parallel.render(classSceneAt(1), camera)).toEqual(render(classSceneAt(1), camera));
+  });
+
+  it('a shared frame: every worker gets the same job, and the bands are taken from one counter, each once', async () => {
+    const fake = fakeWorkers({ now: () => 0 });
+    const parallel = new ParallelRenderer({ workers: 3, shared: true, createWorker: fake.create });
+    const camera = new Camera({ width: 48, height: 100 });
+    const arrived = new Array(100).fill(0);
+    for (const scene of [classScene(), classSceneAt(3)]) {
+      arrived.fill(0);
+      expect(await parallel.render(scene, camera, { onRows: (y0, y1) => { for (let y = y0; y < y1; y++) arrived[y]++; } })).toEqual(render(scene, camera));
+      expect(arrived.every((n) => n === 1)).toBe(true);
+    }
+    const jobs = fake.received.map(({ id, rowsPerBand, shared, next, bands }) => ({ id, rowsPerBand, shared: shared instanceof SharedArrayBuffer, next: next instanceof SharedArrayBuffer, bands }));
+    expect(jobs).toEqual([1, 1, 1, 2, 2, 2].map((id) => ({ id, rowsPerBand: claimHeight(100, 3), shared: true, next: true, bands: undefined })));
+    // The frames are reused: the second render wrote into the first one's shared frame, its counter set back to 0.
+    expect(fake.received[3].shared).toBe(fake.received[0].shared);
+    // The fake workers run one after the other: the first takes every band, the others find none left.
+    expect(fake.answers.map((m) => m.bands.length)).toEqual([100, 0, 0, 100, 0, 0]); // one-row bands: 100 rows over 3 workers
   });
 
   it('two renders at once each get their own picture, shared or transferred', async () => {
@@ -169,6 +195,27 @@ describe('ParallelRenderer', () => {
       const parallel = new ParallelRenderer({ workers: 3, rowsPerBand: 2, timeoutMs: 60, createWorker: () => (n++ === 1 ? silentWorker() : fake.create()) });
       expect(await parallel.render(classScene(), camera)).toEqual(expected);
       expect(parallel.problem).toMatch(/^render worker 2 did not answer/);
+    });
+
+    it('a shared frame: a worker that stops after taking bands from the counter: the bands it took are rendered here', async () => {
+      const fake = fakeWorkers();
+      let t = 0;
+      const dying = {
+        onmessage: null, onerror: null, terminated: false,
+        postMessage(job) {
+          // Takes a band, renders it, takes another, and dies at its first report: two bands taken, none reported.
+          const handle = workerHandler({ now: () => (t += REPORT_MS) });
+          setTimeout(() => { try { handle(job, () => { throw new Error('gone'); }); } catch { /* it died */ } });
+        },
+        terminate() { dying.terminated = true; },
+      };
+      let n = 0;
+      const parallel = new ParallelRenderer({ workers: 2, shared: true, timeoutMs: 60, createWorker: () => (n++ === 0 ? dying : fake.create()) });
+      const arrived = new Array(40).fill(0);
+      expect(await parallel.render(classScene(), camera, { onRows: (y0, y1) => { for (let y = y0; y < y1; y++) arrived[y]++; } })).toEqual(expected);
+      expect(arrived.every((k) => k === 1)).toBe(true);
+      expect(parallel.problem).toMatch(/^render worker 1 did not answer within 0.06 s/);
+      expect(dying.terminated).toBe(true);
     });
 
     it('a worker that cannot start (its script fails to load)', async () => {
@@ -227,10 +274,11 @@ describe('workerHandler (what a worker does)', () => {
   const expected = render(scene, camera);
   const job = (more) => ({ id: 5, version: 1, scene: sceneToJSON(scene), camera: cameraToJSON(camera), ...more });
 
-  it('posts its bands in a few groups, the last one done; put together they are render()\'s rows', () => {
+  it(`reports its finished bands at most once per REPORT_MS (${REPORT_MS}) of work, the last with done; put together they are render()'s rows`, () => {
     const messages = [];
+    let t = 0;
     const bands = [[0, 1], [2, 3], [4, 5], [6, 7], [8, 9], [10, 11]];
-    workerHandler()(job({ bands }), (m, transfer) => messages.push({ m, transfer }));
+    workerHandler({ now: () => (t += REPORT_MS * 0.6) })(job({ bands }), (m, transfer) => messages.push({ m, transfer }));
     expect(messages.map(({ m }) => [m.id, m.bands, m.done])).toEqual([
       [5, [[0, 1], [2, 3]], false], [5, [[4, 5], [6, 7]], false], [5, [[8, 9], [10, 11]], true],
     ]);
@@ -241,21 +289,44 @@ describe('workerHandler (what a worker does)', () => {
     }
   });
 
-  it('with a shared frame, writes its rows there and posts no pixels', () => {
+  it('answers a short frame in one message', () => {
+    const messages = [];
+    workerHandler({ now: () => 0 })(job({ bands: [[0, 3], [6, 9]] }), (m) => messages.push(m));
+    expect(messages.map((m) => [m.bands, m.done])).toEqual([[[[0, 3], [6, 9]], true]]);
+  });
+
+  it('with a shared frame and no counter, writes its bands there and posts no pixels', () => {
     const shared = new SharedArrayBuffer(13 * 11 * 4), messages = [];
-    workerHandler()(job({ bands: [[0, 4], [8, 11]], shared }), (m) => messages.push(m));
-    expect(messages).toEqual([{ id: 5, bands: [[0, 4]], done: false }, { id: 5, bands: [[8, 11]], done: true }]);
+    workerHandler({ now: () => 0 })(job({ bands: [[0, 4], [8, 11]], shared }), (m) => messages.push(m));
+    expect(messages).toEqual([{ id: 5, bands: [[0, 4], [8, 11]], done: true }]);
     const frame = new Uint8ClampedArray(shared);
     expect(frame.slice(0, 4 * 52)).toEqual(expected.slice(0, 4 * 52));
     expect(frame.slice(8 * 52)).toEqual(expected.slice(8 * 52));
     expect(frame.slice(4 * 52, 8 * 52).every((b) => b === 0)).toBe(true);
   });
 
+  it('with a counter, takes bands from it until the frame runs out, sharing them with the other workers', () => {
+    const shared = new SharedArrayBuffer(13 * 11 * 4), next = new SharedArrayBuffer(4);
+    const a = [], b = [];
+    let t = 0;
+    const clock = () => (t += REPORT_MS); // every band "takes" REPORT_MS: a reports each band before taking the next
+    const handleB = workerHandler({ now: clock });
+    // Worker b starts while worker a is at its first report: b takes all that is left, a finds nothing more.
+    workerHandler({ now: clock })(job({ shared, next, rowsPerBand: 3 }), (m) => {
+      a.push(m);
+      if (a.length === 1) handleB(job({ shared, next, rowsPerBand: 3 }), (mb) => b.push(mb));
+    });
+    expect(a).toEqual([{ id: 5, bands: [[0, 3]], done: false }, { id: 5, bands: [[3, 6]], done: true }]);
+    expect(b.map((m) => [m.bands, m.done])).toEqual([[[[6, 9]], false], [[[9, 11]], true]]);
+    expect(new Uint8ClampedArray(shared)).toEqual(expected);
+    expect(new Int32Array(next)[0]).toBeGreaterThanOrEqual(4); // every band taken (each worker's last take found none)
+  });
+
   it('keeps the scene between jobs, and says so when a job names a version it never got', () => {
     const handle = workerHandler(), messages = [];
     handle(job({ bands: [[0, 11]] }), (m) => messages.push(m));
     handle({ id: 6, version: 1, bands: [[0, 11]] }, (m) => messages.push(m));
-    expect(new Uint8ClampedArray(messages[1].pixels)).toEqual(expected);
+    expect(new Uint8ClampedArray(messages.at(-1).pixels)).toEqual(expected);
     handle({ id: 7, version: 2, bands: [[0, 1]] }, (m) => messages.push(m));
     expect(messages[2]).toEqual({ id: 7, error: 'Error: scene version 2 never arrived (have 1)' });
   });
