@@ -85,7 +85,7 @@ const PAGE = 'bench/browser/bench.html';
 const VIEW3D_PAGE = 'bench/browser/view3d.html';
 const ONLY_VIEW3D = option('--only') === 'view3d'; // `npm run bench:browser -- --only view3d`: section 5 alone
 const DEV = process.argv.includes('--dev');
-const ONLY = option('--only'); // 'progressive', 'workers' or 'view3d': one part alone
+const ONLY = option('--only'); // 'progressive', 'workers', 'animation' or 'view3d': one part alone
 const TASK_LIMIT_MS = 16;
 const CHANGES = 12;           // per way of making a change
 const RUNS = Number(option('--runs') ?? 15), WARMUP = 3;   // worker timings (--runs N)
@@ -204,6 +204,38 @@ async function progressive(browser, base, errors, query = '') {
   }
   await again.close();
   return { result, trace, changes };
+}
+
+const ANIMATION_ROUNDS = Number(option('--rounds') ?? 5), ANIMATION_SECONDS = 3;
+
+/** Sketch 07's animated example at 320×240, on the page's thread and on 2 workers in turns: frames per second. */
+async function animation(browser, base, errors) {
+  const page = await browser.newPage({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1 });
+  watch(page, errors);
+  await page.goto(`${base}${PAGE}?part=animation`);
+  await page.waitForFunction(() => window.bench?.animation, null, { timeout: 60_000, polling: 100 });
+  const result = await page.evaluate((options) => window.bench.animation(options), { rounds: ANIMATION_ROUNDS, seconds: ANIMATION_SECONDS });
+  await page.close();
+  return result;
+}
+
+function reportAnimation(result) {
+  const { fps, drawRate, frameMs, drawMs, workers: n } = result;
+  console.log(`\n6. Sketch 07's animated example, ${result.width}×${result.height}: ${result.rounds} rounds of ${result.seconds} s per thread, in turns`);
+  const column = (label, values, digits = 1) => [label, median(values).toFixed(digits), Math.min(...values).toFixed(digits), Math.max(...values).toFixed(digits)];
+  table(['', 'median', 'min', 'max'], [
+    column("frames per second on the canvas, page's thread", fps.main),
+    column(`frames per second on the canvas, ${n} workers`, fps.workers),
+    column("draw() calls per second, page's thread", drawRate.main),
+    column(`draw() calls per second, ${n} workers`, drawRate.workers),
+    column("ms a frame costs, page's thread (draw(): trace + show)", frameMs.main),
+    column(`ms a frame costs, ${n} workers (request to picture back)`, frameMs.workers),
+    column(`ms of the page's thread per draw(), ${n} workers`, drawMs.workers, 2),
+  ], [58, 8, 8, 8]);
+  const ratios = fps.workers.map((f, i) => f / fps.main[i]);
+  console.log(`   frames per second, ${n} workers over the page's thread: ratio of medians ${(median(fps.workers) / median(fps.main)).toFixed(2)}×, median of per-round ratios ${median(ratios).toFixed(2)}×`);
+  console.log(`   frame cost, page's thread over ${n} workers: ${(median(frameMs.main) / median(frameMs.workers)).toFixed(2)}× (the frames per second each could give if the display did not cap them)`);
+  console.log('   (draw() runs once per display frame at most: a thread that keeps up shows the display\'s rate)');
 }
 
 async function workers(browser, base, errors) {
@@ -449,6 +481,7 @@ try {
     const w = !ONLY || ONLY === 'workers' ? await workers(browser, base, errors) : { cases: [] };
     if (w.width) reportWorkers(w);
     if (w.cases.some((c) => c.differing !== 0)) errors.push('a worker picture differs from render()');
+    if (!ONLY || ONLY === 'animation') reportAnimation(await animation(browser, base, errors));
     if (!ONLY) {
       const devServer = DEV && SAVE_PORT === PORT ? null : await startServer(null, SAVE_PORT);
       try {

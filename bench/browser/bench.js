@@ -11,11 +11,15 @@
  * ?part=workers: window.bench.workers() times ParallelRenderer with 1 and 2
  *   workers and render() on the main thread, side by side, and compares the
  *   pictures byte for byte.
+ * ?part=animation: sketch 07's animated example (p.createAnimation in a
+ *   320×240 tracer view, the class scene turning); window.bench.animation()
+ *   plays it on the page's thread and on 2 workers, in turns, and counts the
+ *   frames that reach the canvas per second.
  *
  * Nothing here asserts a time; the driver prints the figures.
  */
 import p5 from 'p5';
-import { Camera, classScene, render } from '../../lib/index.js';
+import { Camera, classScene, classSceneAt, render } from '../../lib/index.js';
 import '../../lib/p5/index.js';
 import { ParallelRenderer } from '../../lib/workers/parallel.js';
 
@@ -202,9 +206,77 @@ async function workersPart({ runs = 7, warmup = 2 } = {}) {
   }
 }
 
+/* ---------------- the animated example ---------------- */
+
+const MOVIE = { width: 320, height: 240 }, SECONDS_PER_TURN = 12; // as in sketch 07
+
+/**
+ * Sketch 07's animated example, as the sketch makes it: a tracer view, an
+ * animation of the class scene over it, draw() moving it on. `animation()`
+ * plays it `rounds` times on each thread in turns (first thread rotating),
+ * each time `warmupMs` unmeasured then `seconds` counted, and returns the
+ * frames per second that reached the canvas, and what a frame costs: on the
+ * page's thread, draw() (the whole frame traced, and shown); on the workers,
+ * each frame from its request to its picture back (ParallelRenderer.render,
+ * timed here). The display's rate caps the frames per second; the costs say
+ * what each thread could give without that cap.
+ */
+function animationPart() {
+  const renders = [];
+  const parallelRender = ParallelRenderer.prototype.render;
+  ParallelRenderer.prototype.render = async function timedRender(...args) {
+    const start = performance.now();
+    const buffer = await parallelRender.apply(this, args);
+    renders.push(performance.now() - start);
+    return buffer;
+  };
+  new p5((p) => {
+    let movie, draws = [];
+    p.setup = () => {
+      p.noCanvas();
+      const camera = new Camera(MOVIE);
+      const view = p.createTracerView({ scene: classSceneAt(0, SECONDS_PER_TURN), camera, scale: 1, parent: 'sketch' });
+      movie = p.createAnimation({ view, sceneAt: (t) => classSceneAt(t, SECONDS_PER_TURN), camera, workers: 2 });
+      bench.animation = playInTurns;
+      document.body.dataset.render = 'done';
+    };
+    p.draw = () => {
+      const start = performance.now();
+      movie?.tick(p.deltaTime);
+      draws.push(performance.now() - start);
+    };
+
+    async function playInTurns({ rounds = 5, seconds = 3, warmupMs = 1000 } = {}) {
+      const threads = ['main', 'workers'], fps = { main: [], workers: [] }, drawRate = { main: [], workers: [] };
+      const frameMs = { main: [], workers: [] }, drawMs = { main: [], workers: [] };
+      for (let round = 0; round < rounds; round++) {
+        for (let k = 0; k < threads.length; k++) {
+          const thread = threads[(round + k) % threads.length];
+          movie.start(thread);
+          await sleep(warmupMs);
+          const frames0 = movie.counter.frames, t0 = performance.now();
+          draws = [];
+          renders.length = 0;
+          await sleep(seconds * 1000);
+          const ms = performance.now() - t0;
+          fps[thread].push(((movie.counter.frames - frames0) * 1000) / ms);
+          drawRate[thread].push((draws.length * 1000) / ms);
+          drawMs[thread].push(...draws);
+          frameMs[thread].push(...(thread === 'main' ? draws : renders));
+          movie.stop();
+          await sleep(200);
+        }
+      }
+      return { width: MOVIE.width, height: MOVIE.height, workers: movie.workers, rounds, seconds, fps, drawRate, frameMs, drawMs };
+    }
+  });
+}
+
 if (part === 'workers') {
   bench.workers = workersPart;
   document.body.dataset.render = 'done';
+} else if (part === 'animation') {
+  animationPart();
 } else {
   progressivePart();
 }

@@ -2,7 +2,9 @@
  * An animation in a tracer view: each frame of `sceneAt(t)` traced whole,
  * either on the page's own thread (the view's renderer) or shared out over Web
  * Workers (ParallelRenderer: the page only copies the finished frame onto the
- * view's canvas), with a frame and FPS counter. While it plays the page says
+ * view's canvas), with a frame and FPS counter. On the workers the frames are
+ * pipelined: while draw() shows frame n, the workers already trace frame n+1
+ * (the moment of the next draw()), and up to PIPELINE frames are under way. While it plays the page says
  * `data-render="rendering"`; paused, once the last frame is on screen, "done",
  * and a click on a pixel explains that frame.
  *
@@ -17,6 +19,9 @@ import { registerView } from './page-state.js';
 import { element } from './dom.js';
 import { ParallelRenderer } from '../workers/parallel.js';
 import { checkOptions } from '../check.js';
+
+/** Frames under way on the workers at most: one shown while the next ones are traced. */
+export const PIPELINE = 2;
 
 /** Frames per second from the times (ms) frames reached the screen: 0 with fewer than two. */
 export function framesPerSecond(stamps) {
@@ -97,8 +102,12 @@ export function createAnimation(p, options) { // no options: checkOptions gives 
 export class SceneAnimation {
   #page;
   #parallel = null;
-  #inFlight = false;
+  /** Frames posted to the workers and not yet back; the newest one back, `{ buffer, t }`, not yet shown. */
+  #inFlight = 0;
+  #arrived = null;
+  /** The workers' frame on screen; bumped by start() and stop(), so frames of an earlier run are dropped. */
   #workerFrame = null;
+  #run = 0;
 
   /**
    * @param {import('./tracer-view.js').TracerView} view where the frames are shown
@@ -152,17 +161,27 @@ export class SceneAnimation {
     this.playing = on;
     this.onPlay?.(on);
     if (on) this.#page.rendering();
-    else if (!this.#inFlight) this.#paused();
+    else if (this.#inFlight === 0) {
+      if (this.#arrived) this.#showWorkerFrame();
+      this.#paused();
+    }
   }
 
-  /** Call from draw(): moves the clock on `ms` and shows the next frame. */
+  /**
+   * Call from draw(): moves the clock on `ms` and shows the next frame. On
+   * 'main' it is traced now; on 'workers' it is the newest frame back from
+   * them, and the frame for the next draw() (`ms` on) is posted to them.
+   */
   tick(ms) {
     if (!this.playing) return;
     this.time += ms / 1000;
     if (this.thread === 'main') {
       this.traceHere(this.time);
       this.#counted(this.time);
-    } else if (!this.#inFlight) this.#traceOnWorkers(this.time);
+      return;
+    }
+    if (this.#arrived) this.#showWorkerFrame();
+    if (this.#inFlight < PIPELINE) this.#traceOnWorkers(this.time + ms / 1000);
   }
 
   /** Traces the frame of time t whole, now, on this thread (the view's own renderer). */
@@ -173,27 +192,39 @@ export class SceneAnimation {
     this.shown = t;
   }
 
+  /** Posts the frame of time t to the workers; it is shown by the first draw() after it is back. */
   async #traceOnWorkers(t) {
     if (this.#parallel?.workers !== this.workers) {
+      if (this.#inFlight > 0) return; // a new worker count waits for the frames under way
       this.#parallel?.terminate();
       // A worker that fails or stays silent: its frames go on, traced here, and the page says why.
       this.#parallel = new ParallelRenderer({ workers: this.workers, onProblem: (error) => this.onError?.(error) }).warm();
     }
-    this.#inFlight = true;
+    const run = this.#run;
+    this.#inFlight++;
     try {
       const buffer = await this.#parallel.render(this.sceneAt(t), this.camera);
-      if (this.thread === 'workers') {
-        this.#workerFrame = buffer;
-        this.#blit(buffer);
-        this.#counted(t);
-      }
+      if (run === this.#run && t >= (this.#arrived?.t ?? -Infinity)) this.#arrived = { buffer, t };
     } catch (error) {
-      this.onError?.(error);
-      this.play(false);
+      if (run === this.#run) {
+        this.onError?.(error);
+        this.play(false);
+      }
     } finally {
-      this.#inFlight = false;
-      if (!this.playing) this.#paused();
+      this.#inFlight--;
+      if (!this.playing && this.#inFlight === 0) { // paused while frames were under way: the last one back stays
+        if (this.#arrived) this.#showWorkerFrame();
+        this.#paused();
+      }
     }
+  }
+
+  #showWorkerFrame() {
+    const { buffer, t } = this.#arrived;
+    this.#arrived = null;
+    this.#workerFrame = buffer;
+    this.#blit(buffer);
+    this.#counted(t);
   }
 
   /** The frame on screen is final: let the inspector explain it, and the page say "done". */
@@ -217,6 +248,8 @@ export class SceneAnimation {
   #reset() {
     this.counter.reset();
     this.#workerFrame = null;
+    this.#arrived = null;
+    this.#run++;
   }
 
   /** One more frame on screen, made for time t: count it for the FPS. */
