@@ -15,7 +15,6 @@
  * works the same whether the sketch has a draw(), animates, or calls noLoop()).
  * A sketch that animates just calls `view.setCamera(…)` from its draw().
  */
-import { clamp } from '../numbers.js';
 import { ORDERS } from '../progressive.js';
 import { WorkerProgressiveRenderer } from '../workers/progressive.js';
 import { modeShader, modeLegend } from '../modes.js';
@@ -25,6 +24,7 @@ import { useStyle, element, resolveParent, sketchNode } from './dom.js';
 import { addProjectorSwitch } from './projector.js';
 import { createLegendElement } from './diagrams/index.js';
 import { drawOverlay } from './tracer-overlay.js';
+import { pixelAt, listenForPixels } from './tracer-input.js';
 
 /**
  * 'auto' scale: the picture fits its parent's width, 40rem, 70% of the
@@ -104,6 +104,7 @@ export class TracerView {
     useStyle();
     addProjectorSwitch();
     this.#buildDom(resolveParent(parent, sketchNode(p)), label);
+    listenForPixels(this.canvasElement, this); // press, drag, arrow keys: this.select(x, y)
     this.#page = registerView(this);
     this.#onResize = () => this.#layout();
     window.addEventListener('resize', this.#onResize);
@@ -350,7 +351,7 @@ export class TracerView {
     drawOverlay(this.#overlayCtx, { width: this.width, height: this.height, grid: this.#grid, current, selected: this.#selected });
   }
 
-  /* ---------------- DOM and input ---------------- */
+  /* ---------------- DOM ---------------- */
 
   #buildDom(parent, label) {
     this.figure = element('figure', { class: 'rt-view', 'data-tracer-view': '' });
@@ -379,36 +380,6 @@ export class TracerView {
 
     this.figure.append(stage, element('div', { class: 'rt-bar' }, this.progressBar, save), this.workerNote, this.legendHost);
     parent.append(this.figure);
-    this.#listen(c);
-  }
-
-  #listen(c) {
-    let pointer = { x: NaN, y: NaN }; // where the pointer last picked, in client coordinates
-    const pick = (event) => {
-      pointer = { x: event.clientX, y: event.clientY };
-      const { x, y } = pixelAt(c, event.clientX, event.clientY, this.width, this.height);
-      if (x !== this.#selected?.x || y !== this.#selected?.y) this.select(x, y);
-    };
-    // Press, or press and drag, to scrub across pixels and watch the numbers change.
-    c.addEventListener('pointerdown', (event) => {
-      if (event.button !== 0) return; // the browser focuses the canvas itself (tabindex), for the arrow keys
-      c.setPointerCapture?.(event.pointerId);
-      pick(event);
-    });
-    c.addEventListener('pointermove', (event) => {
-      // Chromium also sends a move when the page reflows under a still pointer (the
-      // panel filling in beside the picture): that is no drag, and must not re-pick.
-      const moved = event.clientX !== pointer.x || event.clientY !== pointer.y;
-      if (moved && event.buttons & 1 && c.hasPointerCapture?.(event.pointerId)) pick(event);
-    });
-    c.addEventListener('keydown', (event) => {
-      const step = ARROWS[event.key];
-      if (!step) return;
-      event.preventDefault(); // the page must not scroll
-      const n = event.shiftKey ? 10 : 1;
-      const s = this.#selected ?? { x: Math.floor(this.width / 2) - step[0] * n, y: Math.floor(this.height / 2) - step[1] * n };
-      this.select(clamp(s.x + step[0] * n, 0, this.width - 1), clamp(s.y + step[1] * n, 0, this.height - 1));
-    });
   }
 
   #notify() {
@@ -427,19 +398,6 @@ function showWorkerProblem(note, problem) {
   note.hidden = problem === null;
   note.textContent = problem === null ? '' : `Workers unavailable: rendering on the page's thread instead — ${problem}.`;
   return problem;
-}
-
-const ARROWS = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] };
-
-/**
- * The traced-image pixel under a point on screen, whatever the canvas's
- * on-screen size: client coordinates → share of the canvas's box → pixel.
- */
-export function pixelAt(canvas, clientX, clientY, width, height) {
-  const box = canvas.getBoundingClientRect();
-  const x = Math.floor(((clientX - box.left) / box.width) * width);
-  const y = Math.floor(((clientY - box.top) / box.height) * height);
-  return { x: clamp(x, 0, width - 1), y: clamp(y, 0, height - 1) };
 }
 
 /** The root element's font size in px (1rem). */
