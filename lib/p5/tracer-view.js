@@ -25,6 +25,7 @@ import { addProjectorSwitch } from './projector.js';
 import { createLegendElement } from './diagrams/index.js';
 import { drawOverlay } from './tracer-overlay.js';
 import { pixelAt, listenForPixels } from './tracer-input.js';
+import { pngDataURL, pngFilename, download, createSaveButton } from './tracer-export.js';
 
 /**
  * 'auto' scale: the picture fits its parent's width, 40rem, 70% of the
@@ -204,15 +205,12 @@ export class TracerView {
 
   /** The traced image (at traced resolution) as a PNG data URL. */
   toPNG() {
-    return this.canvasElement.toDataURL('image/png');
+    return pngDataURL(this.canvasElement);
   }
 
-  /** Downloads the traced image as a PNG file at traced resolution. */
-  downloadPNG(filename = `trace-${this.width}x${this.height}-${this.#mode}.png`) {
-    const a = document.createElement('a');
-    a.href = this.toPNG();
-    a.download = filename;
-    a.click();
+  /** Downloads the traced image as a PNG file at traced resolution (named `trace-64x48-shaded.png` unless given a name). */
+  downloadPNG(filename = pngFilename(this.width, this.height, this.#mode)) {
+    download(this.toPNG(), filename);
   }
 
   /**
@@ -373,8 +371,7 @@ export class TracerView {
       class: 'rt-progress', 'data-progress': '', role: 'progressbar',
       'aria-valuemin': '0', 'aria-valuemax': '100', 'aria-label': 'Rendering progress',
     }, this.progressFill, this.progressText);
-    const save = element('button', { type: 'button', class: 'rt-button', 'data-export': '', title: 'Download the traced image as a PNG, one pixel per traced pixel' }, 'Save PNG');
-    save.addEventListener('click', () => this.downloadPNG());
+    const save = createSaveButton(() => this.downloadPNG());
     this.legendHost = element('div', { class: 'rt-legend-host' });
     this.workerNote = element('p', { class: 'rt-note rt-view-note', 'data-message': 'view-workers', role: 'status', hidden: true });
 
