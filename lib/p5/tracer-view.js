@@ -26,19 +26,7 @@ import { createLegendElement } from './diagrams/index.js';
 import { drawOverlay } from './tracer-overlay.js';
 import { pixelAt, listenForPixels } from './tracer-input.js';
 import { pngDataURL, pngFilename, download, createSaveButton } from './tracer-export.js';
-
-/**
- * 'auto' scale: the picture fits its parent's width, 40rem, 70% of the
- * window's height, and leaves 34rem of the window's width for a panel beside
- * it (so that at 1024×768 the inspector still sits next to the picture).
- * Sizes are in rem so that the picture grows with the page's text on a big
- * screen (sketch.css sets the root font size from the window's width).
- */
-const AUTO_MAX_WIDTH_REM = 40;
-const AUTO_PANEL_ROOM_REM = 34;
-const AUTO_MAX_HEIGHT_SHARE = 0.7;
-/** The size of text a numeric `scale` is given for: the browser's default rem. */
-const BASE_REM = 16;
+import { checkScale, pictureScale, sizePicture } from './tracer-layout.js';
 
 /**
  * Creates a tracer view inside a p5 sketch (call it from setup()).
@@ -309,36 +297,17 @@ export class TracerView {
     host.replaceChildren(...(host.hidden ? [] : [createLegendElement(modeLegend(this.#mode, this.scene, this.camera))]));
   }
 
-  /* ---------------- layout and overlay ---------------- */
+  /* ---------------- size and overlay ---------------- */
 
+  /** On-screen pixels per traced pixel for the scale option on this page (see tracer-layout.js). */
   #screenScale() {
-    const rem = rootFontSize();
-    if (this.#scale !== 'auto') {
-      // A number is for 16 px text; larger text (a projector) makes the pixels larger, in whole steps.
-      const s = this.#scale * (rem / BASE_REM);
-      return Number.isInteger(this.#scale) ? Math.max(1, Math.round(s)) : s;
-    }
-    const available = this.figure.parentElement?.clientWidth || AUTO_MAX_WIDTH_REM * rem;
-    const besidePanel = window.innerWidth - AUTO_PANEL_ROOM_REM * rem; // on a narrow screen the panel goes below instead
-    const maxW = Math.min(available, AUTO_MAX_WIDTH_REM * rem, besidePanel >= 20 * rem ? besidePanel : Infinity);
-    const maxH = window.innerHeight * AUTO_MAX_HEIGHT_SHARE;
-    const fit = Math.min(maxW / this.width, maxH / this.height);
-    return fit >= 1 ? Math.floor(fit) : fit; // whole numbers keep every pixel the same size
+    return pictureScale(this.#scale, this.width, this.height, this.figure);
   }
 
   /** Sizes the picture on screen and the overlay to match it. */
   #layout() {
     if (this.#destroyed) return;
-    const s = this.#screenScale();
-    const cssW = this.width * s, cssH = this.height * s;
-    this.canvasElement.style.width = `${cssW}px`;
-    this.canvasElement.style.height = `${cssH}px`;
-    const o = this.overlay, dpr = window.devicePixelRatio || 1;
-    o.style.width = `${cssW}px`;
-    o.style.height = `${cssH}px`;
-    o.width = Math.round(cssW * dpr);
-    o.height = Math.round(cssH * dpr);
-    this.figure.style.setProperty('--rt-picture-width', `${cssW}px`);
+    sizePicture({ canvas: this.canvasElement, overlay: this.overlay, figure: this.figure }, this.width, this.height, this.#screenScale());
     this.#drawOverlay();
   }
 
@@ -397,23 +366,10 @@ function showWorkerProblem(note, problem) {
   return problem;
 }
 
-/** The root element's font size in px (1rem). */
-function rootFontSize() {
-  return parseFloat(getComputedStyle(document.documentElement).fontSize) || BASE_REM;
-}
-
 function formatRate(n) {
   if (n >= 1e6) return `${(n / 1e6).toFixed(1)}M`;
   if (n >= 1e3) return `${Math.round(n / 1e3)}k`;
   return String(Math.round(n));
-}
-
-function checkScale(scale) {
-  if (scale === 'auto') return scale;
-  if (typeof scale !== 'number' || !Number.isFinite(scale) || scale <= 0) {
-    throw new RangeError(`scale must be 'auto' or a number greater than 0, got ${show(scale)}`);
-  }
-  return scale;
 }
 
 function checkBudget(ms) {
