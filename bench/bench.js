@@ -14,43 +14,12 @@
  * timed alternately with render() and compared byte for byte: it prints both
  * and the ratio (today's figures: docs/performance.md).
  *
- * Performance (Node 20, 2 cores, medians; five runs over one afternoon with
- * load averages of 2–4 from the machine's neighbours). The machine itself
- * runs in two speeds, about 1.7× apart, from run to run and sometimes within
- * one run: a flat, hand-inlined Float64Array version of (a) timed beside
- * render() in one process took 35 or 62 ms and render() 51 or 87 ms, always
- * flipping together, with no V8 deoptimisation in the trace. So compare code
- * side by side in one process (ratios), never one run against another:
- *   (a) 640×480  59–102 ms/frame  5.2–3.0 Mpx/s  (fastest frame 55 ms, 5.6)
- *       160×120  3.8–6.3 ms       5.1–3.0 Mpx/s
- *   (b) 640×480  444–731 ms/frame 0.69–0.42 Mpx/s; 160×120 26–45 ms
- *   ratio (a)/(b) 0.13–0.16 (full shading costs 6–7.5×: mirrors and glass
- *   recurse up to maxDepth 5)
- *   heap across 10 frames of (a): +2.5 MB, 1 collection (boxed numbers gone);
- *   (b): 7 collections (mirrorAndGlass still passes bare numbers around).
- *   render() traces by 16×16 tiles, each primary ray against the shapes its
- *   tile can show (lib/bounds.js): 7.8 sphere tests a pixel, down from 12.8;
- *   1.15–1.3× faster side by side. The 8 Mpx/s goal for (a) is not reached:
- *   the time is spread over shading (lights, shadow rays, normals) rather
- *   than one hot spot; a flat Float64Array sphere test measured only 1.3×
- *   faster than Sphere.hit, and a last-blocker cache for shadow rays saved
- *   no tests on this scene. Culling shadow rays per tile (a first look at
- *   the tile's hit points, then per light only the shapes within a capsule
- *   from those points to the light) cut sphere tests from 7.8 to 4.4 a
- *   pixel with the same bytes, yet measured 0.84–1.02× side by side: the
- *   tests are cheap next to the rest of a pixel's work, so it was left out.
- *   Even the flat version above reaches only 8.1 Mpx/s in the fast mode.
- *   lightPoint skipping lights behind the surface and returning from a
- *   shadow ray at its first opaque blocker: 1.03–1.16× (median 1.07×).
- *   Progressive, the frame of (a) in 8 ms steps (seven runs, load 4–12, CPU
- *   time, which stays steadier than the wall clock on a busy machine):
- *   coarse 1.04–1.20× render()'s time, scanline 1.05–1.14× (one 0.83×),
- *   slow 0.97–1.14×; in a quiet moment 1.08 / 1.00 / 1.01× by the wall
- *   clock. It took 1.29–1.54×, 1.23–1.63× and 1.18–1.37× before it tested
- *   each primary ray against its tile's shapes only, as render() does, traced
- *   a row's run of pixels per loop and read the clock a few dozen times a
- *   step rather than every 16 pixels. Coarse stays the dearest: each pass
- *   also paints its blocks, about 3.25 pixel writes per pixel.
+ * Today's figures, the conditions they were taken in (load average), and
+ * what was tried and measured on the way (tiles, culling shadow rays, Math.pow)
+ * are in docs/performance.md. The machine's speed moves from moment to
+ * moment, so this script times what it compares in turns, in one run, and
+ * reports medians and ratios: compare ratios across runs, never one run's
+ * milliseconds with another's.
  *
  * Timing figures are printed, never asserted: they depend on the machine.
  * Before timing, the script checks that inspectPixel's colour equals render's
