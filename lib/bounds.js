@@ -26,12 +26,12 @@ export function screenBounds(object, camera, out) {
   if (cz + r <= 0) return false; // every primary ray goes forward
   const sx = slopeRange(cx, cz, r), sy = slopeRange(cy, cz, r);
   if (sx) {
-    out.x0 = clamp(Math.floor(toPixelX(sx.lo, camera)) - MARGIN, 0, camera.width - 1);
-    out.x1 = clamp(Math.ceil(toPixelX(sx.hi, camera)) + MARGIN, 0, camera.width - 1);
+    out.x0 = clamp(Math.floor(camera.pixelX(sx.lo)) - MARGIN, 0, camera.width - 1);
+    out.x1 = clamp(Math.ceil(camera.pixelX(sx.hi)) + MARGIN, 0, camera.width - 1);
   }
   if (sy) {
-    out.y0 = clamp(Math.floor(toPixelY(sy.hi, camera)) - MARGIN, 0, camera.height - 1);
-    out.y1 = clamp(Math.ceil(toPixelY(sy.lo, camera)) + MARGIN, 0, camera.height - 1);
+    out.y0 = clamp(Math.floor(camera.pixelY(sy.hi)) - MARGIN, 0, camera.height - 1);
+    out.y1 = clamp(Math.ceil(camera.pixelY(sy.lo)) + MARGIN, 0, camera.height - 1);
   }
   return out.x0 <= out.x1 && out.y0 <= out.y1;
 }
@@ -68,16 +68,6 @@ function toCamera(p, camera) {
   const e = camera.position, r = camera.right, u = camera.up, f = camera.forward;
   const x = p.x - e.x, y = p.y - e.y, z = p.z - e.z;
   return { cx: x * r.x + y * r.y + z * r.z, cy: x * u.x + y * u.y + z * u.z, cz: x * f.x + y * f.y + z * f.z };
-}
-
-/** Inverse of the camera's sx = (2(x + ½)/W − 1)·halfWidth. */
-function toPixelX(sx, camera) {
-  return ((sx / camera.halfWidth + 1) * camera.width) / 2 - 0.5;
-}
-
-/** Inverse of the camera's sy = (1 − 2(y + ½)/H)·halfHeight. */
-function toPixelY(sy, camera) {
-  return ((1 - sy / camera.halfHeight) * camera.height) / 2 - 0.5;
 }
 
 function setAll(out, camera) {

@@ -80,6 +80,34 @@ export class Camera {
     this.directionAt(x, y, ray.direction); // exactly the renderer's direction, bit for bit
     return { ray, ...angles(ray.direction) };
   }
+
+  /**
+   * Where a point lands on the picture, the inverse of directionAt: `x`, `y`
+   * in pixels (fractional; a pixel's centre is whole, and outside 0…width−1
+   * or 0…height−1 is off the picture) and `depth`, its distance along the
+   * view. A `depth` ≤ 0 is beside or behind the eye: no pixel sees it.
+   * @param {number[]|{x,y,z}} point
+   * @returns {{ x: number, y: number, depth: number }}
+   * @example
+   * new Camera({ width: 64, height: 48 }).project([0, 0, -10]); // { x: 31.5, y: 23.5, depth: 10 }: the picture's middle
+   */
+  project(point) {
+    const p = toVec3(point, 'point'), e = this.position;
+    const dx = p.x - e.x, dy = p.y - e.y, dz = p.z - e.z;
+    const along = (v) => dx * v.x + dy * v.y + dz * v.z;
+    const depth = along(this.forward);
+    return { x: this.pixelX(along(this.right) / depth), y: this.pixelY(along(this.up) / depth), depth };
+  }
+
+  /** The pixel x (fractional) of image-plane coordinate `sx` (sideways ÷ forward): the inverse of directionAt's sx = (2(x + ½)/W − 1)·halfWidth. */
+  pixelX(sx) {
+    return ((sx / this.halfWidth + 1) * this.width) / 2 - 0.5;
+  }
+
+  /** The pixel y (fractional) of image-plane coordinate `sy` (up ÷ forward): the inverse of directionAt's sy = (1 − 2(y + ½)/H)·halfHeight. */
+  pixelY(sy) {
+    return ((1 - sy / this.halfHeight) * this.height) / 2 - 0.5;
+  }
 }
 
 /** The horizontal and vertical angles (degrees) of a unit direction. */

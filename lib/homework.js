@@ -270,7 +270,7 @@ function allVisible(seen, camera) {
 
 /** Why a light's sphere covers no pixel: behind the eye, off the picture, or hidden. */
 function whereIsIt(light, camera) {
-  const p = project(camera, light.center);
+  const p = camera.project(light.center);
   if (p.depth <= 0) return 'it is behind the camera (the camera looks toward −z: give it a smaller z).';
   const side = p.x < 0 ? 'left of' : p.x >= camera.width ? 'right of' : p.y < 0 ? 'above' : p.y >= camera.height ? 'below' : null;
   if (side) return `it is ${side} the picture (it would be at pixel ${Math.round(p.x)},${Math.round(p.y)}).`;
@@ -341,15 +341,6 @@ function sampleCamera(camera) {
   const k = SAMPLE_MAX_WIDTH / camera.width;
   const { fov, position, yaw, pitch } = camera;
   return new Camera({ width: SAMPLE_MAX_WIDTH, height: Math.max(1, Math.round(camera.height * k)), fov, position, yaw, pitch });
-}
-
-/** Where a point lands on the camera's picture (pixel x, y) and its depth along the view. */
-function project(camera, point) {
-  const dx = point.x - camera.position.x, dy = point.y - camera.position.y, dz = point.z - camera.position.z;
-  const along = (v) => dx * v.x + dy * v.y + dz * v.z;
-  const depth = along(camera.forward);
-  const sx = along(camera.right) / depth / camera.halfWidth, sy = along(camera.up) / depth / camera.halfHeight;
-  return { depth, x: ((sx + 1) * camera.width) / 2 - 0.5, y: ((1 - sy) * camera.height) / 2 - 0.5 };
 }
 
 /* ============================== helpers =================================== */

@@ -162,6 +162,39 @@ describe('Camera: H and V angles', () => {
   });
 });
 
+describe('Camera: project, the inverse of directionAt', () => {
+  it('takes a point on any pixel\'s ray back to that pixel, whatever the camera', () => {
+    fc.assert(fc.property(
+      fc.integer({ min: 1, max: 200 }), fc.integer({ min: 1, max: 200 }), fc.double({ min: 5, max: 150, noNaN: true }),
+      fc.double({ min: -180, max: 180, noNaN: true }), fc.double({ min: -89, max: 89, noNaN: true }),
+      fc.double({ min: 0, max: 1, noNaN: true }), fc.double({ min: 0, max: 1, noNaN: true }), fc.double({ min: 0.1, max: 1000, noNaN: true }),
+      (width, height, fov, yaw, pitch, u, v, t) => {
+        const camera = new Camera({ width, height, fov, yaw, pitch, position: [1, -2, 3] });
+        const x = Math.floor(u * (width - 1)), y = Math.floor(v * (height - 1));
+        const d = camera.directionAt(x, y);
+        const p = camera.project([1 + d.x * t, -2 + d.y * t, 3 + d.z * t]);
+        expect(p.x).toBeCloseTo(x, 6);
+        expect(p.y).toBeCloseTo(y, 6);
+        expect(p.depth).toBeGreaterThan(0);
+      }));
+  });
+
+  it('puts a point straight ahead in the middle, and says when a point is behind the eye', () => {
+    const camera = new Camera({ width: 64, height: 48 });
+    expect(camera.project([0, 0, -10])).toEqual({ x: 31.5, y: 23.5, depth: 10 });
+    expect(camera.project({ x: 0, y: 0, z: 5 }).depth).toBe(-5);
+    const left = camera.project([-100, 0, -10]), high = camera.project([0, 100, -10]);
+    expect(left.x).toBeLessThan(0);
+    expect(high.y).toBeLessThan(0);
+  });
+
+  it('names the point when it is not one', () => {
+    const camera = new Camera({ width: 4, height: 4 });
+    expect(() => camera.project([0, 0])).toThrow(/^point must have 3 numbers/);
+    expect(() => camera.project([0, NaN, 0])).toThrow(/point\.y/);
+  });
+});
+
 describe('Camera: bad input names the field', () => {
   const cases = [
     [{ width: 0, height: 10 }, RangeError, /width/],
