@@ -15,6 +15,7 @@ import { nearestHit } from './trace.js';
 import { renderPixel } from './render.js';
 import { DEG_PER_RAD } from './constants.js';
 import { toHex, colorToHex } from './color.js';
+import { formatRounded, formatPowerOfTen } from './format.js';
 
 /** Every mode, in the order a menu shows them, with one line for students. */
 export const MODES = [
@@ -280,7 +281,7 @@ const LEGENDS = {
   discriminant() {
     const stops = [];
     for (const value of [-1e6, -1e4, -100, -1, 0, 1, 100, 1e4, 1e6]) {
-      const label = value === 0 ? '0 tangent' : (value < 0 ? '−' : '+') + powerOfTen(Math.abs(value));
+      const label = value === 0 ? '0 tangent' : (value < 0 ? '−' : '+') + formatPowerOfTen(Math.abs(value));
       stops.push({ value, label, color: toHex(discriminantColor(value, value === 0 ? 1 : 2)) });
     }
     return {
@@ -316,9 +317,9 @@ const LEGENDS = {
     const { near, far } = depthRange(scene, camera);
     const stops = [0, 0.25, 0.5, 0.75, 1].map((s) => {
       const value = near + s * (far - near);
-      return { value, label: `t = ${round(value)}${s === 1 ? '+' : ''}`, color: toHex(ramp(DEPTH_RAMP, s)) };
+      return { value, label: `t = ${formatRounded(value)}${s === 1 ? '+' : ''}`, color: toHex(ramp(DEPTH_RAMP, s)) };
     });
-    return { kind: 'gradient', stops, note: `t, the distance along the ray to the first hit: bright at t = ${round(near)}, dark at t = ${round(far)} and beyond. Black: no hit.` };
+    return { kind: 'gradient', stops, note: `t, the distance along the ray to the first hit: bright at t = ${formatRounded(near)}, dark at t = ${formatRounded(far)} and beyond. Black: no hit.` };
   },
 };
 
@@ -357,14 +358,4 @@ function put(target, camera, x, y, rgb) {
   target[i + 1] = rgb[1];
   target[i + 2] = rgb[2];
   target[i + 3] = 255;
-}
-
-const SUPERSCRIPT = { 0: '⁰', 1: '¹', 2: '²', 3: '³', 4: '⁴', 5: '⁵', 6: '⁶', 7: '⁷', 8: '⁸', 9: '⁹' };
-function powerOfTen(value) {
-  const e = Math.round(Math.log10(value));
-  return e <= 2 ? String(10 ** e) : '10' + [...String(e)].map((d) => SUPERSCRIPT[d]).join('');
-}
-
-function round(n) {
-  return Math.abs(n) >= 10 ? String(Math.round(n)) : String(Math.round(n * 10) / 10);
 }

@@ -19,10 +19,10 @@ export { sketchbookAddon, FACTORIES } from './addon.js';
 export { TracerView } from './tracer-view.js';
 export { SceneView } from './scene-view.js';
 export { PhotonView } from './photon-view.js';
-export { Inspector, answerLine, formatAngle } from './inspector.js';
+export { Inspector, answerLine } from './inspector.js';
+export { formatAngle, fmt } from '../format.js';
 export { SceneAnimation } from './animation.js';
 export { exampleInLink } from './example-picker.js';
-export { fmt } from './diagrams/format.js';
 export { pageRenderState } from './page-state.js';
 // A scene in the page's link (#scene=…), and page parts built from text, never parsed as HTML:
 export { readSceneLink, sceneLinkURL, linkNotice } from './scene-link.js';

@@ -15,6 +15,7 @@
  */
 import { inspectPixel } from '../explain.js';
 import { toHex, colorName } from '../color.js';
+import { formatNumber, formatVector, formatAngle } from '../format.js';
 import { show, checkOptions } from '../check.js';
 import { useStyle, element, resolveParent } from './dom.js';
 
@@ -151,38 +152,6 @@ export class Inspector {
 }
 
 /* ---------------- formatting ---------------- */
-
-/**
- * A number as the panel shows it: 4 significant digits (whole numbers of
- * 1000 and more in full), powers of ten for the very large and very small,
- * "—" for null (no value: no root, no hit).
- */
-export function formatNumber(n) {
-  if (n === null || n === undefined || Number.isNaN(n)) return '—';
-  if (n === Infinity) return '∞';
-  if (n === -Infinity) return '-∞';
-  if (n === 0) return '0';
-  const a = Math.abs(n);
-  if (a >= 1e7 || a < 1e-4) return n.toExponential(3).replace(/\.?0+e/, 'e').replace('e+', 'e');
-  if (a >= 1000) return String(Math.round(n));
-  return String(Number(n.toPrecision(4)));
-}
-
-/** A vector `{x, y, z}` as "(x, y, z)". */
-export function formatVector(v) {
-  return v ? `(${formatNumber(v.x)}, ${formatNumber(v.y)}, ${formatNumber(v.z)})` : '—';
-}
-
-/**
- * An angle with one decimal, as in the answer line ("−0.0" shown as "0.0").
- * @example
- * formatAngle(-0.04); // '0.0'
- * formatAngle(30);    // '30.0'
- */
-export function formatAngle(degrees) {
-  const text = degrees.toFixed(1);
-  return text === '-0.0' ? '0.0' : text;
-}
 
 /**
  * The lesson's answer format for a pixel's own ray, one decimal: `Pixel: 10,12; H: -1.9; V: 3.2`.

@@ -15,6 +15,7 @@
  * works the same whether the sketch has a draw(), animates, or calls noLoop()).
  * A sketch that animates just calls `view.setCamera(…)` from its draw().
  */
+import { formatRate } from '../format.js';
 import { ORDERS } from '../progressive.js';
 import { WorkerProgressiveRenderer } from '../workers/progressive.js';
 import { modeShader, modeLegend } from '../modes.js';
@@ -364,12 +365,6 @@ function showWorkerProblem(note, problem) {
   note.hidden = problem === null;
   note.textContent = problem === null ? '' : `Workers unavailable: rendering on the page's thread instead — ${problem}.`;
   return problem;
-}
-
-function formatRate(n) {
-  if (n >= 1e6) return `${(n / 1e6).toFixed(1)}M`;
-  if (n >= 1e3) return `${Math.round(n / 1e3)}k`;
-  return String(Math.round(n));
 }
 
 function checkBudget(ms) {

@@ -2,7 +2,7 @@
 import { intersectGeometric } from '../../shapes/sphere.js';
 import { INK, MUTED, FAINT, PAPER, RAY, NORMAL, SHADOW, CONSTRUCT } from './style.js';
 import { label, labelPlacer } from './labels.js';
-import { fmt } from './format.js';
+import { fmt } from '../../format.js';
 import { panel, closePanel, placeholder, clip, unclip, line, arrow, screenArrow, dot, ring, rightAngle, dimension, darker } from './draw.js';
 import { focusTest } from './focus.js';
 

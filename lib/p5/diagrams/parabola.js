@@ -1,7 +1,8 @@
 /** The lesson's quadratic f(t) = At² + Bt + C as a curve, with its roots and vertex. */
 import { INK, MUTED, RAY, LIT, SHADOW, CONSTRUCT } from './style.js';
 import { label } from './labels.js';
-import { fmt, sign, niceTicks } from './format.js';
+import { fmt, sign } from '../../format.js';
+import { niceTicks } from '../../numbers.js';
 import { panel, closePanel, placeholder, clip, unclip, dot } from './draw.js';
 import { focusTest } from './focus.js';
 

@@ -4,7 +4,7 @@
  */
 import { isHuge } from '../../modes.js';
 import { MUTED, RAY } from './style.js';
-import { fmt } from './format.js';
+import { fmt } from '../../format.js';
 import { labelPlacer, ON_LABEL, ON_THICK, ON_THIN } from './labels.js';
 import { panel, closePanel, placeholder, message, messageBox, mapping, clip, unclip, dot, offset, norm2 } from './draw.js';
 import {
