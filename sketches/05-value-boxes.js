@@ -10,7 +10,7 @@
  */
 import p5 from 'p5';
 import { Camera, classScene, sceneToJSON, sceneToCode } from '../lib/index.js';
-import { readSceneLink, sceneLinkURL, linkNotice, element } from '../lib/p5/index.js'; // and the p5 addon: p.createTracerView, …
+import { readSceneLink, sceneLinkURL, linkNotice, element, copyText } from '../lib/p5/index.js'; // and the p5 addon: p.createTracerView, …
 
 // The picture: its size in pixels and how wide the eye sees.
 const WIDTH = 160;
@@ -77,11 +77,6 @@ new p5((p) => {
   };
 
   async function share(text, done) {
-    try {
-      await navigator.clipboard.writeText(text);
-      status.textContent = done;
-    } catch {
-      status.textContent = 'Select the text and press Ctrl+C (⌘C).';
-    }
+    status.textContent = (await copyText(text)) ? done : 'Select the text and press Ctrl+C (⌘C).';
   }
 }, document.getElementById('sketch'));

@@ -10,7 +10,7 @@
  *   form.show({ ok: true, message: 'Pink!', color, answer: 'Pixel: 10,12; H: 30; V: -82' });
  */
 import { valueBox } from './value-box.js';
-import { element, resolveParent, sketchNode } from './dom.js';
+import { element, resolveParent, sketchNode, copyText } from './dom.js';
 import { checkOptions } from '../check.js';
 
 /**
@@ -57,7 +57,7 @@ export function createAnswerForm(p, options) {
   const result = element('span', { class: 'result', 'data-result': '', role: 'status' });
   const detail = element('p', { class: 'detail', 'data-answer-detail': '' });
   const copyButton = element('button', { type: 'button', class: 'rt-button' }, 'Copy answer');
-  copyButton.addEventListener('click', () => navigator.clipboard?.writeText(answer.textContent).catch(() => {}));
+  copyButton.addEventListener('click', () => copyText(answer.textContent));
   const section = element('section', { class: 'task' },
     element('h2', {}, title), form, element('div', { class: 'answer-row' }, answer, result, copyButton), detail,
     note && (note instanceof Node ? note : element('p', { class: 'note' }, note)));

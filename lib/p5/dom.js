@@ -1,5 +1,6 @@
 /**
- * Small DOM helpers shared by the tracer view, the inspector panel and the controls.
+ * Small DOM helpers shared by the tracer view, the inspector panel and the
+ * controls: the stylesheet, elements built from text, where a part goes, the clipboard.
  */
 import { show } from '../check.js';
 
@@ -73,4 +74,20 @@ export function sketchNode(p) {
   if (node instanceof HTMLElement) return node;
   if (typeof node === 'string' && document.getElementById(node)) return document.getElementById(node);
   return document.querySelector('main') ?? document.body;
+}
+
+/**
+ * Puts `text` on the clipboard: true when the browser took it, false when it
+ * would not (no permission, the page not focused or not secure, no clipboard
+ * at all), and the person has to select the text and copy it themselves.
+ * @example
+ * if (!(await copyText(line))) status.textContent = 'Select the text and press Ctrl+C (⌘C).';
+ */
+export async function copyText(text) {
+  try {
+    await navigator.clipboard.writeText(text);
+    return true;
+  } catch {
+    return false;
+  }
 }

@@ -24,6 +24,6 @@ export { formatAngle, fmt } from '../format.js';
 export { SceneAnimation } from './animation.js';
 export { exampleInLink } from './example-picker.js';
 export { pageRenderState } from './page-state.js';
-// A scene in the page's link (#scene=…), and page parts built from text, never parsed as HTML:
+// A scene in the page's link (#scene=…), page parts built from text (never parsed as HTML), text to the clipboard:
 export { readSceneLink, sceneLinkURL, linkNotice } from './scene-link.js';
-export { element } from './dom.js';
+export { element, copyText } from './dom.js';

@@ -17,7 +17,7 @@ import { inspectPixel } from '../explain.js';
 import { toHex, colorName } from '../color.js';
 import { formatNumber, formatVector, formatAngle } from '../format.js';
 import { show, checkOptions } from '../check.js';
-import { useStyle, element, resolveParent } from './dom.js';
+import { useStyle, element, resolveParent, copyText } from './dom.js';
 
 /** Relative tolerance within which the two intersection routes "agree". */
 export const AGREE_TOLERANCE = 1e-9;
@@ -124,14 +124,9 @@ export class Inspector {
     this.csvDetails.open = true;
     this.csvBox.select();
     if (!text) { this.status.textContent = 'Select a pixel first.'; return false; }
-    try {
-      await navigator.clipboard.writeText(text);
-      this.status.textContent = 'Copied: paste it into a spreadsheet.';
-      return true;
-    } catch {
-      this.status.textContent = 'Select the text below and press Ctrl+C (⌘C).';
-      return false;
-    }
+    const copied = await copyText(text);
+    this.status.textContent = copied ? 'Copied: paste it into a spreadsheet.' : 'Select the text below and press Ctrl+C (⌘C).';
+    return copied;
   }
 
   /** Stops following the view and removes the panel. */
