@@ -168,10 +168,7 @@ export class SceneForm {
   #numberBox(text, id, label, rule, commit) {
     const box = valueBox({ label, value: text, rule, name: id, size: '5' });
     box.element.querySelector('.sf-label').classList.add('sf-hidden-label'); // the column head says it; messages and screen readers use it
-    box.input.addEventListener('change', () => {
-      const v = box.read();
-      if (v !== undefined) this.#report(box, commit(v));
-    });
+    this.#commitOnChange(box, commit);
     return box;
   }
 
@@ -181,10 +178,7 @@ export class SceneForm {
     box.element.querySelector('.sf-label').classList.add('sf-hidden-label'); // the column head says it; messages and screen readers use it
     box.input.removeAttribute('inputmode');
     if (!picker) {
-      box.input.addEventListener('change', () => {
-        const v = box.read();
-        if (v !== undefined) this.#report(box, commit(v));
-      });
+      this.#commitOnChange(box, commit);
       return box;
     }
     const pick = element('input', { type: 'color', 'aria-label': `${label} (picker)`, 'data-picker-for': id });
@@ -202,6 +196,14 @@ export class SceneForm {
     try { showPicker(readColor(text, label)); } catch { /* the text box shows what is wrong */ }
     box.input.before(pick);
     return box;
+  }
+
+  /** A value typed in `box` (Enter, or leaving the box) is committed when good; any problem shows beside the box. */
+  #commitOnChange(box, commit) {
+    box.input.addEventListener('change', () => {
+      const v = box.read();
+      if (v !== undefined) this.#report(box, commit(v));
+    });
   }
 
   /** Checks a whole new scene and takes it; else returns the message, with the row's name for the path. */
