@@ -14,6 +14,11 @@
  * every animation frame, blits, and goes idle once the picture is done (so it
  * works the same whether the sketch has a draw(), animates, or calls noLoop()).
  * A sketch that animates just calls `view.setCamera(…)` from its draw().
+ *
+ * TracerView coordinates: it schedules the frames, builds its figure and
+ * keeps the page's render state. Its parts live beside it: tracer-layout.js
+ * (the size on screen), tracer-overlay.js (grid and marks over the picture),
+ * tracer-input.js (press, drag, arrow keys), tracer-export.js (the PNG).
  */
 import { formatRate } from '../format.js';
 import { ORDERS } from '../progressive.js';
