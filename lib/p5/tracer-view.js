@@ -28,7 +28,7 @@ import { pixelCoordinate, show, checkOptions } from '../check.js';
 import { registerView } from './page-state.js';
 import { useStyle, element, resolveParent, sketchNode } from './dom.js';
 import { addProjectorSwitch } from './projector.js';
-import { createLegendElement } from './diagrams/index.js';
+import { createLegendElement } from './diagrams/legend.js';
 import { drawOverlay } from './tracer-overlay.js';
 import { pixelAt, listenForPixels } from './tracer-input.js';
 import { pngDataURL, pngFilename, download, createSaveButton } from './tracer-export.js';
