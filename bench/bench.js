@@ -145,8 +145,9 @@ function report(cases, times) {
 const mismatches = inspectorMatchesRender();
 console.log(`inspectPixel vs render, 64×48, both scenes: ${mismatches === 0 ? 'identical' : `${mismatches} pixels differ`}`);
 if (mismatches) process.exitCode = 1;
+const startLoad = loadavg()[0];
 console.log(`Node ${process.version}, one thread, ${FRAMES} frames per case (${FRAMES * 4} at 160×120) after ${WARMUP} warm-up frames,` +
-  ` load average ${loadavg()[0].toFixed(1)} on ${availableParallelism()} cores\n`);
+  ` load average ${startLoad.toFixed(1)} on ${availableParallelism()} cores\n`);
 
 const large = [makeCase('(a) Lambert + shadows, 640×480', false, 640, 480), makeCase('(b) full shading, 640×480', true, 640, 480)];
 const small = [makeCase('(a) Lambert + shadows, 160×120', false, 160, 120), makeCase('(b) full shading, 160×120', true, 160, 120)];
@@ -155,6 +156,7 @@ const [a, b] = report(large, timeSideBySide(large, FRAMES));
 const [as, bs] = report(small, timeSideBySide(small, FRAMES * 4));
 console.log(`\nratio (a)/(b) of median times: ${(a / b).toFixed(2)} at 640×480, ${(as / bs).toFixed(2)} at 160×120` +
   ` (full shading costs ${(b / a).toFixed(1)}× and ${(bs / as).toFixed(1)}×)`);
+console.log(`full shading at 640×480: ${(640 * 480 / (b * 1000)).toFixed(2)} Mpx/s by the wall clock (goal 2)`);
 
 const progressive = [large[0], ...['coarse', 'scanline', 'slow'].map((mode) => progressiveCase(large[0], mode))];
 console.log(`\nThe same frame of (a) traced progressively (ProgressiveRenderer, 8 ms steps until done) beside render():`);
@@ -232,3 +234,5 @@ try {
 } finally {
   rmSync(dir, { recursive: true, force: true });
 }
+// The machine's neighbours come and go: the load at both ends says how quiet the run was.
+console.log(`\nload average ${startLoad.toFixed(1)} at the start, ${loadavg()[0].toFixed(1)} at the end (1 minute, ${availableParallelism()} cores)`);
