@@ -6,7 +6,7 @@
  * serves it with `vite preview` on port 5178, or BENCH_PORT / `--port N`
  * (stopped at the end by its PID),
  * and drives headless Chromium (@playwright/test, the browser that
- * scripts/find-browser.js finds) through three measurements:
+ * scripts/find-browser.js finds) through these measurements:
  *   1. the class scene at 640×480 traced progressively in a tracer view
  *      (coarse to fine, budget 8 ms): main-thread tasks over 16 ms, from a
  *      Chromium trace (every task) and from the Long Tasks API (over 50 ms
@@ -14,63 +14,30 @@
  *      the distribution of the per-frame step() and draw() times;
  *   2. time from view.setScene()/restart() to the first coarse preview;
  *   3. the class scene at 640×480 by ParallelRenderer with 1 and 2 workers
- *      and by render() on the main thread, side by side; each worker picture
- *      must equal render()'s byte for byte;
+ *      (one shared frame, and rows transferred) and by render() on the main
+ *      thread, side by side; each worker picture must equal render()'s byte
+ *      for byte;
  *   4. a save while a sketch is open in the Vite dev server (a second server,
  *      on --save-port N or BENCH_SAVE_PORT, default the port + 1): the time
  *      from writing the sketch file to the reloaded page's first coarse
- *      preview, and whether the selected pixel came back (see saves()).
+ *      preview, and whether the selected pixel came back (see saves());
+ *   5. the 3D scene view's frame rate and cost (see view3d());
+ *   6. sketch 07's animated example at 320×240 on the page's thread and on 2
+ *      workers in turns: frames per second on the canvas, and what a frame
+ *      costs on each (see bench/browser/bench.js).
  * Times are printed, never asserted; the exit code is 1 only when something
  * is broken (a page error, a picture that differs, no browser).
  *
  * Options: --dev (the dev server instead of build + preview); --runs N (worker
- * timings per case, default 15); --only workers
- * or --only progressive (one part alone); --port N or
- * BENCH_PORT=N (the server's port, default 5178); BENCH_TRACE=file
- * writes the Chromium trace of part 1 (open it in ui.perfetto.dev), and
- * BENCH_TRACE_CATEGORIES=devtools.timeline,v8 adds detail to it.
+ * timings per case, default 15); --rounds N (animation rounds per thread,
+ * default 5); --only progressive, workers, animation or view3d (one part
+ * alone); --port N or BENCH_PORT=N (the server's port, default 5178);
+ * BENCH_TRACE=file writes the Chromium trace of part 1 (open it in
+ * ui.perfetto.dev), and BENCH_TRACE_CATEGORIES=devtools.timeline,v8 adds
+ * detail to it.
  *
- * Measured (production build, Chromium 156 headless, 2 cores shared with other
- * jobs: load average 5–7, so wall-clock times are stretched; medians of three
- * runs each unless said):
- *   1. 640×480 progressive: 22–25 frames, done 0.49–0.59 s after the first
- *      step; step() 8.0–8.3 ms (p90 11–15, max 14–27 by the wall clock),
- *      draw() 8.7–9.3 ms, blit + progress bar 0.5–0.6 ms, frame to frame
- *      17–18 ms (p90 28–44).
- *      Main-thread tasks over 16 ms while rendering: 9–14 by the wall clock
- *      (longest 35–42 ms) but 1 by CPU time (18–20 ms; two runs had CPU
- *      times): the others waited for a core. Page load: one 175–466 ms task
- *      (module evaluation; 119–136 ms CPU). Long Tasks API (> 50 ms only):
- *      0 while rendering.
- *      In the same runs before lib/vec3.js made vectors Vec3 instances (see
- *      part 3) and before the progressive renderer used render()'s tile
- *      lists, traced a row's run per loop and read the clock a few dozen
- *      times a step: 44–63 frames, done 0.76–1.26 s after the first step.
- *      Before lib/p5/tracer-view.js turned off p5's sketch checker, a built
- *      page had one 1.0–1.4 s task about 200 ms into the render: p5 fetched
- *      the page's last script (the whole bundle) and parsed it.
- *   2. change → first coarse preview: 13.6 ms to the blit, 16.6 ms to the
- *      frame's paint (max 19) from an input event; 16.4 / 19.1 ms (max 29)
- *      from the sketch's draw(). Target 100 ms: met. (From an earlier,
- *      quieter run: at load 5–12 these medians moved by ±5 ms run to run.)
- *   3. whole frame 640×480: render() on the main thread 85–100 ms, 1 worker
- *      61–103 ms, 2 workers 61–93 ms (first frames, workers starting:
- *      229–472 ms); the three cases share two busy cores, so the workers'
- *      speed-ups vary (2 over 1: 1.0–1.7×). Pictures identical to render().
- *      Target 1 s: met. render() on the main thread used to take 227–270 ms,
- *      1.9–2.4× one worker's time: V8 shares one hidden class among all
- *      `{ x, y, z }` literals on a page, and with p5 imported that class's
- *      fields held non-numbers, so every coordinate the tracer wrote was a
- *      newly allocated boxed number. Vectors are Vec3 instances now.
- *   4. a save → the reloaded page's first coarse preview (dev server, two runs
- *      at load average 18 and 26 on the 2 cores, so stretched several times):
- *      medians 378 / 756 ms from the file written, 713 ms from the reload
- *      message reaching the page (the file watcher takes ~40 ms), 339 / 691 ms
- *      from the new page's start (min 193 / 299); the selected pixel came back
- *      9 of 9 times. Target 100 ms: not met. The reload itself dominates: the
- *      page fetches ~54 unbundled modules and compiles p5's 3.7 MB dev bundle
- *      again; only swapping the sketch module in place (no reload) would meet
- *      it, which the kit does not do yet (docs/live-coding.md).
+ * Today's figures, with the conditions they were measured in, and how to read
+ * them: docs/performance.md. (Figures age; that page says when they were taken.)
  */
 import { spawn } from 'node:child_process';
 import { mkdtempSync, rmSync, writeFileSync, readFileSync } from 'node:fs';
