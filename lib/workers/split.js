@@ -47,8 +47,13 @@ export function claimHeight(height, parts) {
   return Math.max(1, Math.min(TILE / 4, Math.floor(height / (parts * 2 * BANDS_PER_WORKER))));
 }
 
-/** A worker reports its finished bands at most once per this many milliseconds of work, and when it is done. */
-export const REPORT_MS = 16;
+/**
+ * A worker reports its finished bands at most once per this many milliseconds
+ * of work, and when it is done. Often enough that the page copies most rows
+ * while the workers still trace (its copying then delays them little: they take
+ * bands as they go), seldom enough that a message costs nothing that counts.
+ */
+export const REPORT_MS = 4;
 
 /**
  * What a worker does, as a function of its messages (the worker's whole
