@@ -214,24 +214,38 @@ const MOVIE = { width: 320, height: 240 }, SECONDS_PER_TURN = 12; // as in sketc
  * Sketch 07's animated example, as the sketch makes it: a tracer view, an
  * animation of the class scene over it, draw() moving it on. `animation()`
  * plays it `rounds` times on each thread in turns (first thread rotating),
- * each time `warmupMs` unmeasured then `seconds` counted, and returns the
- * frames per second that reached the canvas, and what a frame costs: on the
- * page's thread, draw() (the whole frame traced, and shown); on the workers,
- * each frame from its request to its picture back (ParallelRenderer.render,
- * timed here). The display's rate caps the frames per second; the costs say
- * what each thread could give without that cap.
+ * each time `warmupMs` unmeasured then `seconds` counted, in two ways:
+ *   display: draw() on p5's loop, once per display frame, as in class;
+ *   uncapped: p5's loop stopped, and the animation's tick() called again as
+ *     soon as a frame is on the canvas (on the page's thread: right after
+ *     it; on the workers: when a frame is back, 2 frames kept under way), so
+ *     the display's rate caps neither thread.
+ * It returns the frames per second that reached the canvas each way, and what
+ * a frame costs: on the page's thread, draw() (the whole frame traced, and
+ * shown); on the workers, each frame from its request to its picture back
+ * (ParallelRenderer.render, timed here).
  */
 function animationPart() {
   const renders = [];
+  const next = new MessageChannel(); // uncapped: the next tick, as a task of its own
+  let uncapped = false, lastTick = 0, movie;
   const parallelRender = ParallelRenderer.prototype.render;
   ParallelRenderer.prototype.render = async function timedRender(...args) {
     const start = performance.now();
     const buffer = await parallelRender.apply(this, args);
     renders.push(performance.now() - start);
+    if (uncapped) next.port2.postMessage(0); // runs after the animation has taken the frame
     return buffer;
   };
+  next.port1.onmessage = () => {
+    if (!uncapped) return;
+    const now = performance.now();
+    movie.tick(now - lastTick);
+    lastTick = now;
+    if (movie.thread === 'main') next.port2.postMessage(0); // traced and shown: the next one
+  };
   new p5((p) => {
-    let movie, draws = [];
+    let draws = [];
     p.setup = () => {
       p.noCanvas();
       const camera = new Camera(MOVIE);
@@ -246,28 +260,45 @@ function animationPart() {
       draws.push(performance.now() - start);
     };
 
+    /** Plays on `thread` for warmupMs + seconds, p5's loop or uncapped; the counted part's figures. */
+    async function play(thread, way, { seconds, warmupMs }) {
+      movie.start(thread);
+      if (way === 'uncapped') {
+        p.noLoop();
+        uncapped = true;
+        lastTick = performance.now();
+        next.port2.postMessage(0);
+        if (thread === 'workers') next.port2.postMessage(0); // a second frame under way from the start
+      }
+      await sleep(warmupMs);
+      const frames0 = movie.counter.frames, t0 = performance.now();
+      draws = [];
+      renders.length = 0;
+      await sleep(seconds * 1000);
+      const ms = performance.now() - t0;
+      const result = { fps: ((movie.counter.frames - frames0) * 1000) / ms, drawRate: (draws.length * 1000) / ms, draws: [...draws], renders: [...renders] };
+      uncapped = false;
+      movie.stop();
+      p.loop();
+      await sleep(200);
+      return result;
+    }
+
     async function playInTurns({ rounds = 5, seconds = 3, warmupMs = 1000 } = {}) {
-      const threads = ['main', 'workers'], fps = { main: [], workers: [] }, drawRate = { main: [], workers: [] };
-      const frameMs = { main: [], workers: [] }, drawMs = { main: [], workers: [] };
+      const threads = ['main', 'workers'], each = () => ({ main: [], workers: [] });
+      const fps = each(), uncappedFps = each(), drawRate = each(), frameMs = each(), drawMs = each();
       for (let round = 0; round < rounds; round++) {
         for (let k = 0; k < threads.length; k++) {
           const thread = threads[(round + k) % threads.length];
-          movie.start(thread);
-          await sleep(warmupMs);
-          const frames0 = movie.counter.frames, t0 = performance.now();
-          draws = [];
-          renders.length = 0;
-          await sleep(seconds * 1000);
-          const ms = performance.now() - t0;
-          fps[thread].push(((movie.counter.frames - frames0) * 1000) / ms);
-          drawRate[thread].push((draws.length * 1000) / ms);
-          drawMs[thread].push(...draws);
-          frameMs[thread].push(...(thread === 'main' ? draws : renders));
-          movie.stop();
-          await sleep(200);
+          const shown = await play(thread, 'display', { seconds, warmupMs });
+          fps[thread].push(shown.fps);
+          drawRate[thread].push(shown.drawRate);
+          drawMs[thread].push(...shown.draws);
+          frameMs[thread].push(...(thread === 'main' ? shown.draws : shown.renders));
+          uncappedFps[thread].push((await play(thread, 'uncapped', { seconds, warmupMs: warmupMs / 2 })).fps);
         }
       }
-      return { width: MOVIE.width, height: MOVIE.height, workers: movie.workers, rounds, seconds, fps, drawRate, frameMs, drawMs };
+      return { width: MOVIE.width, height: MOVIE.height, workers: movie.workers, rounds, seconds, fps, uncappedFps, drawRate, frameMs, drawMs };
     }
   });
 }
