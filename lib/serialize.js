@@ -144,7 +144,8 @@ function addOrder(scene) {
   return items;
 }
 
-function objectToJSON(item) {
+/** One shape's or point light's JSON, as sceneToJSON writes it. */
+export function objectToJSON(item) {
   const name = item.name ?? '';
   if (item instanceof Sphere) return { type: 'sphere', name, center: vector(item.center), radius: item.radius, material: materialToJSON(item.material) };
   if (item instanceof Plane) return { type: 'plane', name, point: vector(item.point), normal: vector(item.normal), material: materialToJSON(item.material) };
@@ -224,7 +225,11 @@ function onlyFields(data, allowed, path) {
   }
 }
 
-function objectFromJSON(o, path) {
+/**
+ * One object of scene JSON as a shape or point light, with sceneFromJSON's
+ * checks and messages: `path` ('objects[2]') starts them.
+ */
+export function objectFromJSON(o, path) {
   if (o === null || typeof o !== 'object' || Array.isArray(o)) throw new TypeError(`${path} must be an object, got ${show(o)}`);
   if (!Object.hasOwn(TYPES, o.type)) {
     throw new TypeError(`${path}.type must be one of ${Object.keys(TYPES).map((t) => `"${t}"`).join(', ')}, got ${show(o.type)}`);

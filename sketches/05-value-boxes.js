@@ -54,7 +54,8 @@ new p5((p) => {
       codeBox.hidden = false;
       share(codeBox.value, 'Code copied: paste it into a sketch.');
     });
-    const copyLink = button('Copy link', () => {
+    const copyLink = button('Copy link', async () => {
+      await linked; // the last edit's link
       const { open, message } = linkNotice(location.href.length);
       if (open) share(location.href, message);
       else status.textContent = message;
@@ -62,12 +63,17 @@ new p5((p) => {
     return element('section', { class: 'card share' }, copyCode, copyLink, status, codeBox);
   }
 
-  // Compressing is asynchronous: only the latest edit's link is kept.
-  let edits = 0;
-  async function shareInLink(json) {
+  // The link is made in a task of its own, not in the edit's (at 1,000 spheres it takes a few ms),
+  // and only for the latest edit: quick edits in a row make one link.
+  let edits = 0, linked = Promise.resolve();
+  function shareInLink(json) {
     const edit = ++edits;
-    const url = await sceneLinkURL(location.href, json);
-    if (edit === edits) history.replaceState(null, '', url);
+    linked = (async () => {
+      await new Promise((resolve) => setTimeout(resolve));
+      if (edit !== edits) return;
+      const url = await sceneLinkURL(location.href, json); // compressing is asynchronous too
+      if (edit === edits) history.replaceState(null, '', url);
+    })();
   }
 
   const button = (label, onClick) => {

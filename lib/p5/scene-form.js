@@ -2,6 +2,9 @@
  * The scene form: value boxes (value-box.js) for a whole scene (every
  * sphere's centre, radius, colour, reflection, transparency and emission,
  * every point light) that hand back a new Scene only when the values are good.
+ * A change is checked and applied on its own object (lib/scene-edits.js), not
+ * on the whole scene again: at 1,000 spheres that is what keeps a typed value
+ * or "Add sphere" quick.
  *
  *   const form = p.createSceneForm({ json: sceneToJSON(scene), parent, onChange: (scene, json) => view.setScene(scene) });
  *
@@ -10,8 +13,8 @@
  */
 import { colorToHex } from '../color.js';
 import { readColor, colorText } from '../values.js';
-import { tableColumns, withValue, fieldText } from '../scene-fields.js';
-import { sceneToJSON, sceneFromJSON } from '../serialize.js';
+import { tableColumns, fieldText } from '../scene-fields.js';
+import { SceneEdits } from '../scene-edits.js';
 import { show, checkOptions } from '../check.js';
 import { useStyle, element } from './dom.js';
 import { valueBox } from './value-box.js';
@@ -36,9 +39,9 @@ export const FORM_ROWS = 40;
 /**
  * A form of value boxes for a scene: one table per kind of object (a row per
  * sphere, point light, plane, box), a background colour, add and remove
- * buttons. Each change is checked box by box and then by sceneFromJSON; a bad
- * value gets a message beside its box and changes nothing, a good one calls
- * `onChange(scene, json)`.
+ * buttons. Each change is checked box by box and then on its object with
+ * sceneFromJSON's checks; a bad value gets a message beside its box and
+ * changes nothing, a good one calls `onChange(scene, json)`.
  * @param {import('p5').default} p the sketch (unused: the form goes into `parent`)
  * @param {object} options
  * @param {object} options.json scene JSON (sceneToJSON)
@@ -60,11 +63,13 @@ export class SceneForm {
   #shown = new Map();
   /** Each table on show, by type: `{ rows, body, showUpTo }`. */
   #tables = new Map();
+  /** The scene and its JSON, one change at a time. */
+  #edits;
 
   constructor({ json, parent, onChange }) {
     if (typeof onChange !== 'function') throw new TypeError(`onChange must be a function, got ${show(onChange)}`);
     useStyle();
-    this.json = sceneToJSON(sceneFromJSON(json)); // checked, every field present
+    this.#edits = new SceneEdits(json); // checked, every field present
     this.onChange = onChange;
     this.element = element('div', { class: 'sf-form', 'data-scene-form': '' });
     parent.append(this.element);
@@ -72,12 +77,14 @@ export class SceneForm {
   }
 
   /** The current scene (the last good one). */
-  get scene() { return sceneFromJSON(this.json); }
+  get scene() { return this.#edits.scene; }
+  /** Its JSON; the objects in the order of the rows (see lib/scene-edits.js). */
+  get json() { return this.#edits.json; }
 
   /** Replaces every box from `json` (after add/remove, or a new scene). */
   build() {
     const background = this.#colorBox(colorText(this.json.background), 'background', 'background colour',
-      (value) => this.#try(withValue(this.json, ['background'], value), ''));
+      (value) => this.#try(['background'], value, ''));
     background.element.querySelector('.sf-label').classList.remove('sf-hidden-label'); // no column head above this one
     const top = element('div', { class: 'sf-top' }, background.element, ...this.#addButtons());
     this.#tables.clear();
@@ -87,13 +94,10 @@ export class SceneForm {
 
   /** Adds an object's JSON at the end: one new row (or one more in "not shown"); the other rows stay. */
   add(object) {
-    const before = this.json.objects;
-    this.#commit(sceneFromJSON({ ...this.json, objects: [...before, object] }));
-    const index = this.json.objects.length - 1, o = this.json.objects[index];
+    const index = this.#edits.add(object), o = this.json.objects[index];
+    this.#changed();
     const table = this.#tables.get(o.type);
-    // The scene's order puts point lights after the shapes: when the new object is not last, rows' indices moved.
-    const last = before.every((b, i) => b.type === this.json.objects[i].type && b.name === this.json.objects[i].name);
-    if (!table || !last) return this.build(); // a new table, or indices to renumber
+    if (!table) return this.build(); // the first of its type: a new table
     const showsAll = table.body.children.length === table.rows.length;
     table.rows.push({ o, index });
     table.showUpTo(showsAll ? table.rows.length : table.body.children.length);
@@ -101,8 +105,9 @@ export class SceneForm {
 
   /** Removes the object at `index` of `json.objects`. */
   remove(index) {
-    this.#commit(sceneFromJSON({ ...this.json, objects: this.json.objects.filter((_, i) => i !== index) }));
-    this.build();
+    this.#edits.remove(index);
+    this.#changed();
+    this.build(); // the later rows' indices moved
   }
 
   #addButtons() {
@@ -154,7 +159,7 @@ export class SceneForm {
     const cells = columns.map((c) => {
       const id = `objects[${index}].${c.path.join('.')}`;
       const label = `${who} ${c.label}`;
-      const commit = (value) => this.#try(withValue(this.json, ['objects', index, ...c.path], value), who);
+      const commit = (value) => this.#try(['objects', index, ...c.path], value, who);
       const box = c.kind === 'color'
         ? this.#colorBox(fieldText(o, c), id, label, commit, !c.grey)
         : this.#numberBox(fieldText(o, c), id, label, c.rule, commit);
@@ -206,16 +211,17 @@ export class SceneForm {
     });
   }
 
-  /** Checks a whole new scene and takes it; else returns the message, with the row's name for the path. */
-  #try(json, who) {
+  /** Puts `value` at `path` of the scene's JSON when good; else returns the message, with the row's name for the path. */
+  #try(path, value, who) {
     try {
-      this.#commit(sceneFromJSON(json));
-      return '';
+      this.#edits.set(path, value);
     } catch (error) {
-      // sceneFromJSON names the path: "objects[1].material.color[0] must …" → "Sphere 2: color[0] must …"
+      // sceneFromJSON's checks name the path: "objects[1].material.color[0] must …" → "Sphere 2: color[0] must …"
       const field = error.message.replace(/^objects\[\d+\]\.(material\.)?/, '');
       return who ? `${who}: ${field}` : field;
     }
+    this.#changed();
+    return '';
   }
 
   /** Shows a whole-scene problem beside the box; true when there was none. */
@@ -224,8 +230,7 @@ export class SceneForm {
     return !problem;
   }
 
-  #commit(scene) {
-    this.json = sceneToJSON(scene);
-    this.onChange(scene, this.json);
+  #changed() {
+    this.onChange(this.scene, this.json);
   }
 }

@@ -1,0 +1,99 @@
+/**
+ * A scene and its JSON kept in step one change at a time, for the scene form
+ * (lib/p5/scene-form.js). A new value is checked on its own object, with
+ * sceneFromJSON's checks and messages (objectFromJSON), and the new Scene
+ * reuses every other shape and light as built before: checking and building
+ * 1,000 spheres again for each typed value or "Add sphere" held the page's
+ * main thread 120–400 ms on a busy machine.
+ *
+ * After any edits `edits.scene` is the scene `sceneFromJSON(edits.json)`
+ * builds (tests/unit/scene-edits.test.js checks it over random edits). The
+ * objects of `json` stay in the order of the form's rows (new ones at the
+ * end), so a row's index keeps naming its object. Each edit makes a new
+ * `json` (the old one is left as it was) and a new Scene.
+ *
+ *   const edits = new SceneEdits(sceneToJSON(classScene()));
+ *   edits.set(['objects', 1, 'radius'], 6);   // a bad value throws sceneFromJSON's error; nothing changes
+ *   edits.add({ type: 'sphere', center: [0, 3, -12], radius: 1 });
+ *   view.setScene(edits.scene);
+ */
+import { Scene } from './scene.js';
+import { sceneToJSON, sceneFromJSON, objectToJSON, objectFromJSON } from './serialize.js';
+import { withValue } from './scene-fields.js';
+import { show } from './check.js';
+
+export class SceneEdits {
+  /** The shapes and point lights, in the order of `json.objects`. */
+  #items;
+
+  /** @param {object|string} json scene JSON, checked by sceneFromJSON */
+  constructor(json) {
+    /** The scene's JSON, every field present (as sceneToJSON writes it). */
+    this.json = sceneToJSON(sceneFromJSON(json));
+    this.#items = this.json.objects.map((o, i) => objectFromJSON(o, `objects[${i}]`));
+    /** The scene: what sceneFromJSON(this.json) builds. */
+    this.scene = sceneOf(this.json, this.#items);
+  }
+
+  /**
+   * Puts `value` at `path` of the JSON: `['objects', index, ...field]` (e.g.
+   * `['objects', 2, 'material', 'color']`) or a scene field (`['background']`).
+   * A bad value throws the TypeError/RangeError sceneFromJSON would, and
+   * changes nothing.
+   */
+  set(path, value) {
+    if (!Array.isArray(path) || path.length === 0) throw new TypeError(`path must be a non-empty array like ['objects', 0, 'radius'], got ${show(path)}`);
+    if (path[0] !== 'objects') {
+      const { objects, ...fields } = this.json;
+      const json = { ...withValue(fields, path, value), objects: [] };
+      sceneFromJSON(json); // the scene's own fields, checked as a whole scene's are
+      this.#take({ ...json, objects }, this.#items);
+      return;
+    }
+    const index = this.#index(path[1]);
+    const field = path.slice(2);
+    const o = field.length ? withValue(this.json.objects[index], field, value) : value;
+    const item = objectFromJSON(o, `objects[${index}]`);
+    this.#take({ ...this.json, objects: replaced(this.json.objects, index, objectToJSON(item)) }, replaced(this.#items, index, item));
+  }
+
+  /** Adds an object's JSON at the end (checked as sceneFromJSON checks it); returns its index in `json.objects`. */
+  add(o) {
+    const index = this.#items.length;
+    const item = objectFromJSON(o, `objects[${index}]`);
+    this.#take({ ...this.json, objects: [...this.json.objects, objectToJSON(item)] }, [...this.#items, item]);
+    return index;
+  }
+
+  /** Removes the object at `index` of `json.objects`. */
+  remove(index) {
+    const i = this.#index(index);
+    this.#take({ ...this.json, objects: without(this.json.objects, i) }, without(this.#items, i));
+  }
+
+  #index(index) {
+    if (!Number.isInteger(index) || index < 0 || index >= this.#items.length) {
+      throw new RangeError(`index must be a whole number from 0 to ${this.#items.length - 1}, got ${show(index)}`);
+    }
+    return index;
+  }
+
+  #take(json, items) {
+    const scene = sceneOf(json, items); // before anything changes
+    this.json = json;
+    this.#items = items;
+    this.scene = scene;
+  }
+}
+
+/** A Scene with the scene fields of `json` and `items` added in order, as sceneFromJSON adds them. */
+function sceneOf(json, items) {
+  const fields = { ...json };
+  delete fields.objects;
+  const scene = new Scene(fields);
+  for (const item of items) scene.add(item);
+  return scene;
+}
+
+const replaced = (array, index, value) => array.map((x, i) => (i === index ? value : x));
+const without = (array, index) => array.filter((_, i) => i !== index);

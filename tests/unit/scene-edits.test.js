@@ -1,0 +1,143 @@
+// The scene form's edits, one object at a time: after any sequence of edits the
+// scene is the one sceneFromJSON builds from the JSON, a bad value throws
+// sceneFromJSON's own error and keeps the last good scene, and the picture is
+// the same bytes.
+import { describe, it, expect } from 'vitest';
+import fc from 'fast-check';
+import { Camera, Scene, Sphere, classScene } from '../../lib/index.js';
+import { sceneToJSON, sceneFromJSON, objectToJSON, objectFromJSON } from '../../lib/serialize.js';
+import { COLUMNS, withValue } from '../../lib/scene-fields.js';
+import { SceneEdits } from '../../lib/scene-edits.js';
+import { render } from '../../lib/render.js';
+
+/** A scene with every type, point lights between shapes and an emissive sphere: orders that matter for the lights. */
+const MIXED = {
+  background: [0.2, 0.3, 0.4],
+  objects: [
+    { type: 'sphere', name: 'a', center: [0, 0, -10], radius: 2, material: { color: [1, 0, 0] } },
+    { type: 'pointLight', name: 'p', position: [5, 5, 0], intensity: 0.8 },
+    { type: 'sphere', name: 'sun', center: [-4, 6, -12], radius: 1, material: { color: [0, 0, 0], emission: 1 } },
+    { type: 'plane', point: [0, -2, 0], normal: [0, 1, 0], material: { reflection: 0.3 } },
+    { type: 'pointLight', position: [-5, 5, 0], color: [1, 0.5, 0.5] },
+    { type: 'box', min: [2, -2, -14], max: [4, 0, -12], material: { color: [0, 1, 0] } },
+  ],
+};
+const START = { class: sceneToJSON(classScene()), mixed: MIXED, empty: { objects: [] } };
+
+const number = fc.oneof(
+  fc.double({ min: -20, max: 20, noNaN: true }),
+  fc.constantFrom(0, -0, 1, 0.5, -1, 2, 1.5, NaN, Infinity, -Infinity, 1e300),
+  fc.constantFrom('abc', '', null, [1, 2, 3]),
+);
+const color = fc.oneof(
+  fc.tuple(...Array.from({ length: 3 }, () => fc.double({ min: -0.5, max: 2, noNaN: true }))),
+  fc.constantFrom([0, 0, 0], [1, 1, 1], [2, 2, 2], 'pink', '#3366ff', 'nope', [1, 2], [NaN, 0, 0], 7),
+);
+const xyz = fc.tuple(fc.integer({ min: -10, max: 10 }), fc.integer({ min: -10, max: 10 }), fc.integer({ min: -30, max: 0 }));
+const newObject = fc.oneof(
+  fc.record({ type: fc.constant('sphere'), name: fc.constantFrom('', 'ball', 'light'), center: xyz, radius: fc.constantFrom(0.5, 1, 3),
+    material: fc.record({ color, emission: fc.constantFrom(0, 0, 1, [0.5, 0.5, 0.5]) }) }),
+  fc.record({ type: fc.constant('pointLight'), name: fc.constantFrom('', 'lamp'), position: xyz, color: fc.constantFrom([1, 1, 1], [0.5, 1, 0.2]), intensity: fc.constantFrom(1, 0.5, 2) }),
+  fc.record({ type: fc.constant('box'), min: fc.constant([-1, -1, -9]), max: fc.constant([1, 1, -7]) }),
+  fc.record({ type: fc.constant('sphere'), center: xyz, radius: fc.constantFrom(-1, 0) }), // a bad one
+);
+/** An edit; `pick` chooses the object and the column among those there are when it runs. */
+const edit = fc.oneof(
+  fc.record({ kind: fc.constant('add'), o: newObject }),
+  fc.record({ kind: fc.constant('set'), pick: fc.nat(), column: fc.nat(), number, color }),
+  fc.record({ kind: fc.constant('set'), pick: fc.nat(), column: fc.nat(), number, color }),
+  fc.record({ kind: fc.constant('background'), color }),
+  fc.record({ kind: fc.constant('remove'), pick: fc.nat() }),
+);
+
+/** What sceneFromJSON makes of `json`: the scene's JSON, or the error. */
+function whole(json) {
+  try {
+    return { json: sceneToJSON(sceneFromJSON(json)) };
+  } catch (error) {
+    return { error };
+  }
+}
+
+/** Runs one edit on `edits` and on the whole JSON; the two must agree. */
+function apply(edits, e) {
+  const before = { json: edits.json, scene: edits.scene };
+  const n = before.json.objects.length;
+  let run, expected;
+  if (e.kind === 'add') {
+    expected = whole({ ...before.json, objects: [...before.json.objects, e.o] });
+    run = () => edits.add(e.o);
+  } else if (e.kind === 'background') {
+    expected = whole(withValue(before.json, ['background'], e.color));
+    run = () => edits.set(['background'], e.color);
+  } else {
+    if (n === 0) return;
+    const index = e.pick % n;
+    if (e.kind === 'remove') {
+      expected = whole({ ...before.json, objects: before.json.objects.filter((_, i) => i !== index) });
+      run = () => edits.remove(index);
+    } else {
+      const columns = COLUMNS[before.json.objects[index].type];
+      const c = columns[e.column % columns.length];
+      const path = ['objects', index, ...c.path];
+      const value = c.kind === 'color' ? e.color : e.number;
+      expected = whole(withValue(before.json, path, value));
+      run = () => edits.set(path, value);
+    }
+  }
+  if (expected.error) {
+    expect(run).toThrow(expected.error.constructor);
+    expect(run).toThrow(expected.error.message);
+    expect(edits.json).toBe(before.json); // the last good scene stays
+    expect(edits.scene).toBe(before.scene);
+    return;
+  }
+  run();
+  expect(sceneToJSON(edits.scene)).toEqual(expected.json);
+}
+
+/** The scene is what sceneFromJSON makes of the JSON, light for light, and the JSON is as sceneToJSON writes each object. */
+function expectInStep(edits) {
+  const rebuilt = sceneFromJSON(edits.json);
+  expect(sceneToJSON(edits.scene)).toEqual(sceneToJSON(rebuilt));
+  const lights = (scene) => scene.lights.map((l) => objectToJSON(l.source));
+  expect(lights(edits.scene)).toEqual(lights(rebuilt));
+  expect(edits.json.objects).toEqual(edits.json.objects.map((o, i) => objectToJSON(objectFromJSON(o, `objects[${i}]`))));
+  return rebuilt;
+}
+
+describe('SceneEdits', () => {
+  it('after any sequence of edits is the scene sceneFromJSON makes of its JSON; bad values change nothing and say what sceneFromJSON says', () => {
+    const camera = new Camera({ width: 16, height: 12, fov: 40 });
+    fc.assert(fc.property(fc.constantFrom(...Object.keys(START)), fc.array(edit, { maxLength: 25 }), (start, sequence) => {
+      const edits = new SceneEdits(START[start]);
+      for (const e of sequence) {
+        apply(edits, e);
+        expectInStep(edits);
+      }
+      expect(Buffer.from(render(edits.scene, camera))).toEqual(Buffer.from(render(sceneFromJSON(edits.json), camera)));
+    }), { numRuns: 150 });
+  });
+
+  it('names the field as sceneFromJSON does', () => {
+    const edits = new SceneEdits(START.class);
+    expect(() => edits.set(['objects', 1, 'radius'], -1)).toThrow(/^objects\[1\]\.radius must be greater than 0, got -1$/);
+    expect(() => edits.set(['objects', 3, 'material', 'reflection'], 1.5)).toThrow(/^objects\[3\]\.material\.reflection /);
+    expect(() => edits.set(['background'], 'nope')).toThrow(/^background /);
+    expect(() => edits.set(['objects', 99, 'radius'], 1)).toThrow(RangeError);
+  });
+
+  it('keeps every other shape as built, and leaves the JSON it gave before as it was', () => {
+    const scene = new Scene();
+    for (let i = 0; i < 1000; i++) scene.add(new Sphere([i % 40, Math.floor(i / 40), -45], 0.25));
+    const edits = new SceneEdits(sceneToJSON(scene));
+    const { json, scene: before } = edits;
+    edits.set(['objects', 500, 'radius'], 0.3);
+    edits.add({ type: 'sphere', center: [0, 3, -12], radius: 1 });
+    expect(edits.scene.objects).toHaveLength(1001);
+    expect(edits.scene.objects.filter((o, i) => o !== before.objects[i])).toEqual([edits.scene.objects[500], edits.scene.objects[1000]]);
+    expect(json.objects).toHaveLength(1000);
+    expect(json.objects[500].radius).toBe(0.25);
+    expect(edits.json.objects[500].radius).toBe(0.3);
+  });
+});
