@@ -15,7 +15,7 @@ import { checkOptions } from '../check.js';
  * @param {(scene: object, camera: object) => { passed: boolean, checks: object[] }} options.check e.g. checkTrafficSignal
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where the button and the result go; default the sketch's node
  * @param {string|null} [options.problem] a warning shown above the result (e.g. a bad ?solution= value), as plain text
- * @returns {{ button: HTMLButtonElement, results: HTMLElement, run: () => void }}
+ * @returns {{ button: HTMLButtonElement, results: HTMLElement, run: () => void, destroy: () => void }} `destroy()` (p.remove() calls it) takes them off the page
  * @example
  * const view = p.createTracerView({ scene: makeScene(), camera: makeCamera() });
  * p.createHomeworkCheck({ view, check: checkTrafficSignal }); // a "Check my scene" button and its verdict
@@ -25,11 +25,11 @@ export function createHomeworkCheck(p, options) {
   const host = resolveParent(parent, sketchNode(p));
   const button = element('button', { type: 'button', class: 'rt-button' }, 'Check my scene');
   const results = element('div', { 'data-check-results': '' }, 'Press the button to check your scene against the task.');
-  host.append(button, results);
-  if (problem) host.append(element('p', { class: 'hw-warning', role: 'alert' }, problem));
+  const warning = problem ? element('p', { class: 'hw-warning', role: 'alert' }, problem) : null;
+  host.append(button, results, ...(warning ? [warning] : []));
   const run = () => showCheck(results, check(view.scene, view.camera));
   button.addEventListener('click', run);
-  return { button, results, run };
+  return { button, results, run, destroy: () => { button.remove(); results.remove(); warning?.remove(); } };
 }
 
 /**

@@ -70,7 +70,7 @@ export function createPixelMarks(p, options) {
  * @param {string} options.label the words beside the box
  * @param {(rgb: number[]) => boolean} options.test which pixels to mark (`[r, g, b]`, 0–255)
  * @param {(count: number, total: number) => string} options.describe the line, from the count and the number of pixels
- * @returns {{ draw: () => void }} call draw() from the sketch's draw()
+ * @returns {{ draw: () => void, destroy: () => void }} call draw() from the sketch's draw(); destroy() (p.remove() calls it) takes the box away
  * @example
  * p.createPixelHighlight({
  *   view, name: 'pink', label: 'Show the pink pixels',
@@ -83,7 +83,8 @@ export function createPixelHighlight(p, options) {
   const marks = createPixelMarks(p, { view, name: `${name}-marks` });
   const box = element('input', { type: 'checkbox', [`data-show-${name}`]: '' });
   const count = element('span', { [`data-${name}-count`]: '' });
-  view.figure.after(element('div', { class: 'controls' }, element('label', {}, box, label), count));
+  const controls = element('div', { class: 'controls' }, element('label', {}, box, label), count);
+  view.figure.after(controls);
   let found = null, foundIn = null; // the marked pixels, and the { scene, camera } of their picture
 
   return {
@@ -103,5 +104,6 @@ export function createPixelHighlight(p, options) {
       }
       marks.draw(found);
     },
+    destroy() { controls.remove(); },
   };
 }

@@ -247,6 +247,7 @@ export class SceneView {
     this.#unlisten();
     this.#observer?.disconnect();
     this.figure.remove();
+    this.#picture?.remove(); // p5's remove() leaves a p5.Graphics' hidden canvas on the page
     this.#g?.remove();
   }
 
