@@ -3,7 +3,7 @@ import { readdirSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { includeText, oneFileInDev, apiReference, apiLine } from './scripts/site-plugins.js';
 import { p5OfflineI18n } from './scripts/p5-offline-i18n.js';
-import { reloadItsPagesOnly, syntaxErrorsWhereTheyAre } from './scripts/vite-live-coding.js';
+import { reloadItsPagesOnly, swapSketchesInPlace, syntaxErrorsWhereTheyAre } from './scripts/vite-live-coding.js';
 
 // Every page is an entry of the static build: the gallery, the web editor's
 // steps and each sketch (the API reference is made by a plugin).
@@ -19,10 +19,10 @@ const isolation = { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-E
 export default defineConfig({
   base: './',
   // p5's translations from node_modules, not a CDN (scripts/p5-offline-i18n.js): in the build and the dev server's bundle of p5.
-  // A saved sketch reloads only the pages running it; a syntax error is shown at its line (scripts/vite-live-coding.js).
+  // A saved sketch is swapped in place, or reloads only the pages running it; a syntax error is shown at its line (scripts/vite-live-coding.js).
   // The web editor's page, its one-file build, the API reference and each lesson's
   // "API:" line: scripts/site-plugins.js.
-  plugins: [p5OfflineI18n(), reloadItsPagesOnly(), syntaxErrorsWhereTheyAre(), includeText(), oneFileInDev(), apiReference(), apiLine()],
+  plugins: [p5OfflineI18n(), reloadItsPagesOnly(), swapSketchesInPlace(), syntaxErrorsWhereTheyAre(), includeText(), oneFileInDev(), apiReference(), apiLine()],
   optimizeDeps: { rolldownOptions: { plugins: [p5OfflineI18n()] } },
   build: {
     target: 'es2022',

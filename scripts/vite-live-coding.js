@@ -20,10 +20,21 @@
  * `.html` of the same name beside it (sketches/10-playground.js →
  * sketches/10-playground.html), or the page itself for an inline script.
  * When a root has no such page (a worker), it leaves the update to Vite.
+ *
+ * swapSketchesInPlace: a save of a page's own script swaps it in place (no
+ * reload, so the first preview comes within 100 ms): the script is served
+ * with Vite's HMR hooks, which hand the swap to lib/p5/hot-swap.js. Only a
+ * script that imports nothing but p5 and the kit's lib/, and that calls
+ * nothing outside p5 it cannot undo (timers, workers, the camera…: see
+ * OUTSIDE_P5), is served so; a save of any other
+ * script, or of a module it imports, reloads its pages as before.
  */
 import { existsSync } from 'node:fs';
 import { relative, resolve } from 'node:path';
 import { parseAst } from 'vite';
+
+/** Each page script served with the swap hooks (absolute path → true), for reloadItsPagesOnly. */
+const swappable = new Map();
 
 export function syntaxErrorsWhereTheyAre() {
   let root = process.cwd();
@@ -74,6 +85,8 @@ export function reloadItsPagesOnly() {
     apply: 'serve',
     hotUpdate({ file, modules, server }) {
       if (this.environment.name !== 'client' || modules.length === 0 || !/\.[cm]?js$/.test(file)) return undefined;
+      // A page's own script served with the swap hooks: Vite sends the update, and only pages that run it have it.
+      if (modules.every((mod) => mod.isSelfAccepting && swappable.get(mod.file))) return undefined;
       const pages = pagesOf(modules, server.config.root);
       if (!pages) return undefined;
       for (const page of pages) {
@@ -91,7 +104,7 @@ function pagesOf(modules, root) {
     const mod = stack.pop();
     if (seen.has(mod)) continue;
     seen.add(mod);
-    if (mod.isSelfAccepting) return null; // it can swap itself: Vite's own HMR
+    if (mod.isSelfAccepting && !swappable.get(mod.file)) return null; // it can swap itself: Vite's own HMR
     if (mod.importers.size > 0) {
       stack.push(...mod.importers);
       continue;
@@ -105,4 +118,69 @@ function pagesOf(modules, root) {
     pages.add(relative(root, html).split('\\').join('/'));
   }
   return pages;
+}
+
+/**
+ * Names that reach outside p5 in a way a swap could not undo: a timer would
+ * go on calling the old sketch, a worker or the camera would go on running.
+ * A script that holds any of them reloads its page on a save. (Listeners
+ * are watched on the page instead, by lib/p5/hot-swap.js: one on an element
+ * the swap removes goes with it.)
+ */
+const OUTSIDE_P5 = new Set([
+  'setTimeout', 'setInterval', 'requestAnimationFrame', 'requestIdleCallback',
+  'Worker', 'SharedWorker', 'WebSocket', 'EventSource', 'BroadcastChannel', 'AudioContext', 'webkitAudioContext',
+  'MutationObserver', 'ResizeObserver', 'IntersectionObserver', 'PerformanceObserver',
+  'createCapture', 'createAudio', 'createVideo', 'getUserMedia',
+]);
+
+export function swapSketchesInPlace() {
+  let root = process.cwd();
+  return {
+    name: 'sketchbook:swap-sketches-in-place',
+    apply: 'serve',
+    configResolved(config) { root = config.root; },
+    transform(code, id) {
+      const file = id.split('?')[0];
+      if (id.includes('?') || !/\.m?js$/.test(file) || file.includes('/node_modules/') || id.startsWith('\0')) return null;
+      if (!existsSync(file.replace(/\.m?js$/, '.html'))) return null;
+      const hooks = swapHooks(root, file, code);
+      swappable.set(file, hooks !== null);
+      return hooks;
+    },
+  };
+}
+
+/**
+ * The script with the swap hooks, or null when it cannot be swapped. The
+ * hooks go on its first line (as Vite's own do) and an import after its last,
+ * so every line keeps its number for the mistake panel.
+ */
+export function swapHooks(root, file, code) {
+  let program;
+  try { program = parseAst(code, undefined, file); } catch { return null; }
+  const lib = resolve(import.meta.dirname, '../lib');
+  for (const node of program.body) {
+    if (node.type !== 'ImportDeclaration' && !(node.type.startsWith('Export') && node.source)) continue;
+    const from = node.source.value;
+    if (from === 'p5') continue;
+    if (!from.startsWith('.') && !from.startsWith('/')) return null;
+    const path = from.startsWith('/') ? resolve(root, `.${from}`) : resolve(file, '..', from);
+    if (!path.startsWith(lib + '/')) return null; // the sketch's own module: its saves reload the page
+  }
+  if (reachesOutsideP5(program)) return null;
+  const swap = '/' + relative(root, resolve(lib, 'p5/hot-swap.js')).split('\\').join('/');
+  return `if (import.meta.hot) { import.meta.hot.accept(__sketchbookSwap.swappedIn); import.meta.hot.dispose(__sketchbookSwap.swapOut); } ${code}\nimport * as __sketchbookSwap from ${JSON.stringify(swap)};\n`;
+}
+
+/** Does the program name a function of OUTSIDE_P5, or set a handler (`window.onresize = …`)? */
+function reachesOutsideP5(node) {
+  if (Array.isArray(node)) return node.some(reachesOutsideP5);
+  if (node === null || typeof node !== 'object') return false;
+  if (node.type === 'Identifier' && OUTSIDE_P5.has(node.name)) return true;
+  if (node.type === 'AssignmentExpression' && node.left.type === 'MemberExpression' && /^on[a-z]+$/.test(node.left.property?.name ?? '')) return true;
+  for (const key in node) {
+    if (key !== 'type' && key !== 'start' && key !== 'end' && reachesOutsideP5(node[key])) return true;
+  }
+  return false;
 }

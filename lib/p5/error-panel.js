@@ -9,7 +9,7 @@
  *
  * Importing lib/p5 installs it; the sketch does nothing. The console keeps
  * the error (no preventDefault). The panel sits over the page, so the last
- * good picture stays under it; the next reload (a save) starts without it.
+ * good picture stays under it; the next save (a reload or a swap) starts without it.
  * Text goes in with textContent only: a message may quote anything.
  *
  * body[data-render]: a mistake can stop a view before its picture is done,
@@ -89,6 +89,13 @@ export function showMistake(message, where = null) {
   shown.set(key, { count: 1, countElement });
   if (document.body.dataset.render !== 'done') document.body.dataset.render = 'error';
   return panel;
+}
+
+/** Takes the panel away: a save swapped in a new version of the sketch (hot-swap.js), as a reload would. */
+export function clearMistakes() {
+  shown.clear();
+  panel?.remove();
+  panel = null;
 }
 
 /** "TypeError: radius must be …" for an Error, the value itself for anything else thrown. */

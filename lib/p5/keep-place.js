@@ -26,6 +26,8 @@ const SKIPPED_TYPES = new Set(['button', 'submit', 'reset', 'image', 'file', 'pa
 let made = null;
 /** The place saved before this reload, restored once setup() is done; null on a plain visit. */
 let saved = null;
+/** Ends the scrolling back under way, if any. */
+let stopScrolling = () => {};
 
 /** The page's place now: views (selection, mode), boxes, scroll. */
 export function currentPlace() {
@@ -64,6 +66,21 @@ export function restorePlace(place, now = madeNow()) {
     if (s && s.x < view.width && s.y < view.height && (view.selected?.x !== s.x || view.selected?.y !== s.y)) view.select(s.x, s.y);
   });
   if (place.scroll) scrollBack(place.scroll);
+}
+
+/**
+ * A save is swapping the sketch in place (hot-swap.js): the place now is
+ * restored after the new setup(), as after a reload, and written for the
+ * reload that follows if the swap fails. A page whose setup() had failed
+ * keeps the place from before its mistake.
+ */
+export function keepPlaceForSwap() {
+  stopScrolling(); // the new sketch scrolls back again
+  if (made) {
+    saved = { ...currentPlace(), made };
+    try { sessionStorage.setItem(storageKey(), JSON.stringify(saved)); } catch { /* storage full or off */ }
+  }
+  made = null; // until the new setup() is done: the pagehide of a failed swap keeps this place
 }
 
 /** Each view's mode and each box's value as setup() left them. */
@@ -106,14 +123,19 @@ function isTracerView(view) {
 function scrollBack({ x, y }) {
   window.scrollTo(x, y);
   let tries = 0;
+  const reader = new AbortController(); // its listeners go once the scrolling is over: a swap (hot-swap.js) restores again and again
   const again = () => {
-    if (window.scrollY === y && window.scrollX === x) return;
+    if ((window.scrollY === y && window.scrollX === x) || tries === Infinity) return reader.abort();
     window.scrollTo(x, y);
     if (++tries < 30) requestAnimationFrame(again);
+    else reader.abort();
+    return undefined;
   };
   requestAnimationFrame(again);
-  window.addEventListener('wheel', () => { tries = Infinity; }, { once: true, passive: true });
-  window.addEventListener('keydown', () => { tries = Infinity; }, { once: true });
+  const stop = () => { tries = Infinity; reader.abort(); };
+  stopScrolling = stop;
+  window.addEventListener('wheel', stop, { once: true, passive: true, signal: reader.signal });
+  window.addEventListener('keydown', stop, { once: true, signal: reader.signal });
 }
 
 /** Was this page load a reload (F5, or the dev server's live reload)? */

@@ -6,6 +6,7 @@
  */
 import { writeFileSync, rmSync } from 'node:fs';
 import { resolve } from 'node:path';
+import { expect } from '@playwright/test';
 
 const DIR = resolve('tests/e2e/pages');
 
@@ -83,22 +84,28 @@ export function liveSketch(slug, source) {
 }
 
 /**
- * Saves `text` as the sketch and waits for the page's reload to settle: an
- * editor's save can reach the file watcher as two changes, so a second
- * reload may follow the first; it returns once no load came for `quietMs`.
+ * Saves `text` as the sketch and waits for the page to take it: a swap in
+ * place (lib/p5/hot-swap.js counts them in window.__sketchbookSwaps) or a
+ * reload. An editor's save can reach the file watcher as two changes, so a
+ * second update may follow the first; it returns once none came for
+ * `quietMs`. Returns how the page took the save: 'swap' or 'reload'.
  */
-export async function saveAndWaitForReload(page, sketch, text, quietMs = 800) {
+export async function saveAndWaitForUpdate(page, sketch, text, quietMs = 800) {
   let loads = 0;
   const count = () => { loads += 1; };
+  const swaps = () => page.evaluate(() => window.__sketchbookSwaps ?? 0).catch(() => -1); // -1: the page is going away
   page.on('load', count);
   try {
-    const first = page.waitForEvent('load');
+    const before = await swaps();
     sketch.save(text);
-    await first;
-    for (let seen = -1; seen !== loads;) {
-      seen = loads;
+    let now = before;
+    await expect.poll(async () => { now = await swaps(); return loads > 0 || now > before; }, { timeout: 15_000 }).toBe(true);
+    for (let seen = ''; seen !== `${loads}:${now}`;) {
+      seen = `${loads}:${now}`;
       await page.waitForTimeout(quietMs);
+      now = await swaps();
     }
+    return loads > 0 ? 'reload' : 'swap';
   } finally {
     page.off('load', count);
   }

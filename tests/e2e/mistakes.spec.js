@@ -6,7 +6,7 @@
  */
 import { test, expect } from '@playwright/test';
 import { waitForDone, clickPixel } from './helpers.js';
-import { liveSketch, sketchSource, lineOf, saveAndWaitForReload } from './live-sketch.js';
+import { liveSketch, sketchSource, lineOf, saveAndWaitForUpdate } from './live-sketch.js';
 
 const FIXED = sketchSource();
 
@@ -96,7 +96,7 @@ SYNTAX.forEach((mistake, i) => {
       await expect(panel.locator('[data-error-source]')).toContainText(`${line} │ ${text}`);
       expect(consoleErrors.some((e) => e.startsWith('SyntaxError') && e.includes(`${sketch.file}:${line}:`))).toBe(true);
 
-      await saveAndWaitForReload(page, sketch, FIXED);
+      await saveAndWaitForUpdate(page, sketch, FIXED);
       await waitForDone(page);
       await expect(panel).toHaveCount(0);
       await expectPicture(page);
@@ -128,7 +128,7 @@ MISTAKES.forEach((mistake, i) => {
       await expect(page.locator('body')).toHaveAttribute('data-render', mistake.picture ? 'done' : 'error');
       if (mistake.picture) await expectPicture(page); // the last good picture stays under the panel
 
-      await saveAndWaitForReload(page, sketch, FIXED);
+      await saveAndWaitForUpdate(page, sketch, FIXED);
       await waitForDone(page);
       await expect(panel).toHaveCount(0);
       await expectPicture(page);

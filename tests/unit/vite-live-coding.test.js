@@ -1,6 +1,6 @@
 import { describe, it, expect } from 'vitest';
 import { resolve } from 'node:path';
-import { syntaxErrorsWhereTheyAre } from '../../scripts/vite-live-coding.js';
+import { syntaxErrorsWhereTheyAre, swapHooks } from '../../scripts/vite-live-coding.js';
 
 const ROOT = resolve('.');
 const plugin = syntaxErrorsWhereTheyAre();
@@ -30,5 +30,31 @@ describe('syntaxErrorsWhereTheyAre', () => {
     try { transform(BROKEN, resolve('lib/some-helper.js')); } catch (error) { thrown = error; }
     expect(thrown.message).toBe('Syntax error: Unterminated string');
     expect(thrown.pos).toBe(BROKEN.indexOf("'abc"));
+  });
+});
+
+describe('swapHooks: which page scripts a save swaps in place', () => {
+  const SKETCH = "import p5 from 'p5';\nimport { Scene } from '../lib/index.js';\nimport '../lib/p5/index.js';\nnew p5((p) => { p.setup = () => new Scene(); }, 'sketch');\n";
+  const file = resolve('sketches/11-my-sketch.js');
+
+  it('a sketch importing p5 and the kit alone gets the hooks, on its first line, every line keeping its number', () => {
+    const code = swapHooks(ROOT, file, SKETCH);
+    const lines = code.split('\n');
+    expect(lines[0]).toMatch(/^if \(import\.meta\.hot\) \{ import\.meta\.hot\.accept\(__sketchbookSwap\.swappedIn\); import\.meta\.hot\.dispose\(__sketchbookSwap\.swapOut\); \} import p5 from 'p5';$/);
+    expect(lines.slice(1, 4)).toEqual(SKETCH.split('\n').slice(1, 4));
+    expect(code).toContain('import * as __sketchbookSwap from "/lib/p5/hot-swap.js";');
+  });
+
+  it('a sketch importing a module of its own, or a package other than p5, reloads instead', () => {
+    expect(swapHooks(ROOT, file, `import { helper } from './helper.js';\n${SKETCH}`)).toBeNull();
+    expect(swapHooks(ROOT, file, `import confetti from 'confetti';\n${SKETCH}`)).toBeNull();
+    expect(swapHooks(ROOT, file, `export { helper } from './helper.js';\n${SKETCH}`)).toBeNull();
+  });
+
+  it('a sketch calling what a swap cannot undo (timers, workers, the camera, a window handler) reloads instead', () => {
+    for (const call of ['setTimeout(() => {}, 10);', 'setInterval(f, 10);', 'requestAnimationFrame(f);', 'new Worker(url);', 'p.createCapture(p.VIDEO);', 'window.onresize = f;']) {
+      expect(swapHooks(ROOT, file, `${SKETCH}${call}\n`), call).toBeNull();
+    }
+    expect(swapHooks(ROOT, file, `${SKETCH}// setTimeout in a comment is nothing\nconst view = { timeout: 1 };\n`)).not.toBeNull();
   });
 });
