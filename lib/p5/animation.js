@@ -4,9 +4,9 @@
  * Workers (ParallelRenderer: the page only copies the finished frame onto the
  * view's canvas), with a frame and FPS counter. On the workers the frames are
  * pipelined: while draw() shows frame n, the workers already trace frame n+1
- * (the moment of the next draw()), and up to PIPELINE frames are under way. While it plays the page says
- * `data-render="rendering"`; paused, once the last frame is on screen, "done",
- * and a click on a pixel explains that frame.
+ * (the moment of the next draw()), up to PIPELINE frames under way. While it
+ * plays the page says `data-render="rendering"`; paused, once the last frame
+ * is on screen, "done", and a click on a pixel explains that frame.
  *
  *   const movie = new SceneAnimation(view, { sceneAt, camera, stats: element });
  *   movie.start('main');                      // or 'workers'; movie.stop() hands the view back
@@ -105,8 +105,9 @@ export class SceneAnimation {
   /** Frames posted to the workers and not yet back; the newest one back, `{ buffer, t }`, not yet shown. */
   #inFlight = 0;
   #arrived = null;
-  /** The workers' frame on screen; bumped by start() and stop(), so frames of an earlier run are dropped. */
+  /** The workers' frame on screen. */
   #workerFrame = null;
+  /** Bumped by start() and stop(): frames of an earlier run are dropped. */
   #run = 0;
 
   /**
