@@ -7,7 +7,9 @@
  * main thread 120–400 ms on a busy machine.
  *
  * After any edits `edits.scene` is the scene `sceneFromJSON(edits.json)`
- * builds (tests/unit/scene-edits.test.js checks it over random edits). The
+ * builds, to the last bit (tests/unit/scene-edits.test.js checks it over
+ * random edits), and `json` is what the whole scene's check and sceneToJSON
+ * would make of the change, in the rows' order. The
  * objects of `json` stay in the order of the form's rows (new ones at the
  * end), so a row's index keeps naming its object. Each edit makes a new
  * `json` (the old one is left as it was) and a new Scene.
@@ -45,23 +47,21 @@ export class SceneEdits {
     if (!Array.isArray(path) || path.length === 0) throw new TypeError(`path must be a non-empty array like ['objects', 0, 'radius'], got ${show(path)}`);
     if (path[0] !== 'objects') {
       const { objects, ...fields } = this.json;
-      const json = { ...withValue(fields, path, value), objects: [] };
-      sceneFromJSON(json); // the scene's own fields, checked as a whole scene's are
-      this.#take({ ...json, objects }, this.#items);
+      const scene = sceneFromJSON({ ...withValue(fields, path, value), objects: [] }); // checked as a whole scene's fields are
+      this.#take({ ...sceneToJSON(scene), objects }, this.#items);
       return;
     }
     const index = this.#index(path[1]);
     const field = path.slice(2);
-    const o = field.length ? withValue(this.json.objects[index], field, value) : value;
-    const item = objectFromJSON(o, `objects[${index}]`);
-    this.#take({ ...this.json, objects: replaced(this.json.objects, index, objectToJSON(item)) }, replaced(this.#items, index, item));
+    const { o, item } = checked(field.length ? withValue(this.json.objects[index], field, value) : value, `objects[${index}]`);
+    this.#take({ ...this.json, objects: replaced(this.json.objects, index, o) }, replaced(this.#items, index, item));
   }
 
   /** Adds an object's JSON at the end (checked as sceneFromJSON checks it); returns its index in `json.objects`. */
   add(o) {
     const index = this.#items.length;
-    const item = objectFromJSON(o, `objects[${index}]`);
-    this.#take({ ...this.json, objects: [...this.json.objects, objectToJSON(item)] }, [...this.#items, item]);
+    const checkedObject = checked(o, `objects[${index}]`);
+    this.#take({ ...this.json, objects: [...this.json.objects, checkedObject.o] }, [...this.#items, checkedObject.item]);
     return index;
   }
 
@@ -84,6 +84,16 @@ export class SceneEdits {
     this.#items = items;
     this.scene = scene;
   }
+}
+
+/**
+ * An object's JSON as sceneToJSON writes it (every field, colours as numbers),
+ * and the shape or light built from that JSON: sceneFromJSON(json) then builds
+ * the same, to the last bit (a plane's normal is normalised again on reading).
+ */
+function checked(json, path) {
+  const o = objectToJSON(objectFromJSON(json, path));
+  return { o, item: objectFromJSON(o, path) };
 }
 
 /** A Scene with the scene fields of `json` and `items` added in order, as sceneFromJSON adds them. */

@@ -103,12 +103,16 @@ export function reflect(out, d, n) {
 /**
  * `out` = the unit vector along `a`, scaled by its largest component first so
  * |a| neither overflows (1e200) nor underflows (1e-170); throws a RangeError
- * naming `field` when `a` is zero.
+ * naming `field` when `a` is zero. Below about 1e-308, 1/m is Infinity (and
+ * 0 · Infinity NaN): such a vector is divided by m instead.
  */
 export function toUnit(out, a, field) {
   const m = Math.max(Math.abs(a.x), Math.abs(a.y), Math.abs(a.z));
   if (!(m > 0)) throw new RangeError(`${field} must not be zero-length, got [0, 0, 0]`);
-  return normalize(out, scale(out, a, 1 / m));
+  const s = 1 / m;
+  if (Number.isFinite(s)) return normalize(out, scale(out, a, s));
+  out.x = a.x / m; out.y = a.y / m; out.z = a.z / m;
+  return normalize(out, out);
 }
 
 /**

@@ -10,6 +10,11 @@ describe('Plane', () => {
     expect(p.normalAt({ x: 3, y: 4, z: 0 })).toEqual({ x: 0, y: 0, z: 1 });
   });
 
+  it('normalises a normal too short for 1/|n| (5e-324), not into NaN', () => {
+    expect(new Plane([0, 0, 0], [0, 5e-324, 0]).normal).toEqual({ x: 0, y: 1, z: 0 });
+    expect(new Plane([0, 0, 0], [-5e-324, 0, 5e-324]).normal).toEqual(new Plane([0, 0, 0], [-1, 0, 1]).normal);
+  });
+
   it('a ray straight down meets the floor at t = height (hand-checked: 2)', () => {
     expect(floor.hit(new Ray([0, 0, 0], [0, -1, 0]))).toBe(2);
     expect(floor.hit(new Ray([5, 10, -3], [0, -1, 0]))).toBe(12);

@@ -39,6 +39,7 @@ const newObject = fc.oneof(
     material: fc.record({ color, emission: fc.constantFrom(0, 0, 1, [0.5, 0.5, 0.5]) }) }),
   fc.record({ type: fc.constant('pointLight'), name: fc.constantFrom('', 'lamp'), position: xyz, color: fc.constantFrom([1, 1, 1], [0.5, 1, 0.2]), intensity: fc.constantFrom(1, 0.5, 2) }),
   fc.record({ type: fc.constant('box'), min: fc.constant([-1, -1, -9]), max: fc.constant([1, 1, -7]) }),
+  fc.record({ type: fc.constant('plane'), point: fc.constant([0, -3, 0]), normal: fc.constantFrom([0, 1, 0], [0.3, 2, 0.1], [0, 0, 0]) }),
   fc.record({ type: fc.constant('sphere'), center: xyz, radius: fc.constantFrom(-1, 0) }), // a bad one
 );
 /** An edit; `pick` chooses the object and the column among those there are when it runs. */
@@ -50,60 +51,72 @@ const edit = fc.oneof(
   fc.record({ kind: fc.constant('remove'), pick: fc.nat() }),
 );
 
-/** What sceneFromJSON makes of `json`: the scene's JSON, or the error. */
-function whole(json) {
+/** The error sceneFromJSON throws for the whole scene `json`, or null. */
+function wholeError(json) {
   try {
-    return { json: sceneToJSON(sceneFromJSON(json)) };
+    sceneFromJSON(json);
+    return null;
   } catch (error) {
-    return { error };
+    return error;
   }
 }
 
-/** Runs one edit on `edits` and on the whole JSON; the two must agree. */
+/** An object's JSON as sceneToJSON writes it. */
+const written = (o) => objectToJSON(objectFromJSON(o, 'o'));
+
+/**
+ * Runs one edit on `edits`. The whole scene's check (sceneFromJSON of the
+ * JSON with the change) says whether it must be taken, and with what message
+ * not. The JSON after it: the one object (or field) changed, as sceneToJSON
+ * writes it, the others as they were.
+ */
 function apply(edits, e) {
   const before = { json: edits.json, scene: edits.scene };
-  const n = before.json.objects.length;
-  let run, expected;
+  const { objects, ...fields } = before.json;
+  let run, raw, expected;
   if (e.kind === 'add') {
-    expected = whole({ ...before.json, objects: [...before.json.objects, e.o] });
+    raw = { ...before.json, objects: [...objects, e.o] };
+    expected = () => ({ ...before.json, objects: [...objects, written(e.o)] });
     run = () => edits.add(e.o);
   } else if (e.kind === 'background') {
-    expected = whole(withValue(before.json, ['background'], e.color));
+    raw = withValue(before.json, ['background'], e.color);
+    expected = () => ({ ...sceneToJSON(sceneFromJSON({ ...fields, background: e.color })), objects });
     run = () => edits.set(['background'], e.color);
   } else {
-    if (n === 0) return;
-    const index = e.pick % n;
+    if (objects.length === 0) return;
+    const index = e.pick % objects.length;
     if (e.kind === 'remove') {
-      expected = whole({ ...before.json, objects: before.json.objects.filter((_, i) => i !== index) });
+      raw = { ...before.json, objects: objects.filter((_, i) => i !== index) };
+      expected = () => raw;
       run = () => edits.remove(index);
     } else {
-      const columns = COLUMNS[before.json.objects[index].type];
+      const columns = COLUMNS[objects[index].type];
       const c = columns[e.column % columns.length];
       const path = ['objects', index, ...c.path];
       const value = c.kind === 'color' ? e.color : e.number;
-      expected = whole(withValue(before.json, path, value));
+      raw = withValue(before.json, path, value);
+      expected = () => ({ ...before.json, objects: objects.map((o, i) => (i === index ? written(raw.objects[index]) : o)) });
       run = () => edits.set(path, value);
     }
   }
-  if (expected.error) {
-    expect(run).toThrow(expected.error.constructor);
-    expect(run).toThrow(expected.error.message);
+  const error = wholeError(raw);
+  if (error) {
+    expect(run).toThrow(error.constructor);
+    expect(run).toThrow(error.message);
     expect(edits.json).toBe(before.json); // the last good scene stays
     expect(edits.scene).toBe(before.scene);
     return;
   }
   run();
-  expect(sceneToJSON(edits.scene)).toEqual(expected.json);
+  expect(edits.json).toEqual(expected());
 }
 
-/** The scene is what sceneFromJSON makes of the JSON, light for light, and the JSON is as sceneToJSON writes each object. */
+/** The scene is what sceneFromJSON makes of the JSON, shape for shape and light for light. */
 function expectInStep(edits) {
   const rebuilt = sceneFromJSON(edits.json);
   expect(sceneToJSON(edits.scene)).toEqual(sceneToJSON(rebuilt));
   const lights = (scene) => scene.lights.map((l) => objectToJSON(l.source));
   expect(lights(edits.scene)).toEqual(lights(rebuilt));
-  expect(edits.json.objects).toEqual(edits.json.objects.map((o, i) => objectToJSON(objectFromJSON(o, `objects[${i}]`))));
-  return rebuilt;
 }
 
 describe('SceneEdits', () => {
