@@ -14,6 +14,7 @@ import { FORM_ROWS } from '../../lib/p5/scene-form.js';
 
 const SPHERES = 1000;
 const LONG_TASK_LIMIT = 250; // ms, the median step: the goal is 50, with room for a loaded two-core machine
+const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
 
 /** 1,000 spheres: 999 small ones in a wall in front of the camera, and a light sphere above (an emissive sphere is a light). */
 function wall() {
@@ -81,24 +82,42 @@ test.describe('1,000 spheres in sketch 05', () => {
       await expect(panel).toHaveAttribute('data-x', String(80 + i));
       steps.push(await longestTaskSince(page));
     }
-    const arrows = [...steps].sort((a, b) => a - b)[2];
+    const arrows = median(steps);
 
-    // Adding a sphere: a row when its table shows all its rows, else the page of rows again.
-    await longestTaskSince(page);
+    // Adding a sphere: a row when its table shows all its rows, else the page of rows again; the scene is not checked and built whole again.
+    // (Located by its data-add, not by role: finding a button by role walks the whole page's accessibility tree, in the page's time.)
     const firstRow = await rows.first().elementHandle();
-    await page.getByRole('button', { name: 'Add sphere' }).click();
-    await expect(page.locator('[data-show-more="sphere"]')).toHaveText(`Show ${FORM_ROWS} more (${SPHERES + 1 - 2 * FORM_ROWS} not shown)`);
-    const adding = await longestTaskSince(page);
-    await expect(rows).toHaveCount(2 * FORM_ROWS); // the new row is among those not shown yet…
+    const adds = [];
+    for (let i = 1; i <= 3; i++) {
+      await longestTaskSince(page);
+      await page.locator('[data-add="Add sphere"]').click();
+      await expect(page.locator('[data-show-more="sphere"]')).toHaveText(`Show ${FORM_ROWS} more (${SPHERES + i - 2 * FORM_ROWS} not shown)`);
+      adds.push(await longestTaskSince(page));
+    }
+    await expect(rows).toHaveCount(2 * FORM_ROWS); // the new rows are among those not shown yet…
     expect(await firstRow.evaluate((row) => row.isConnected)).toBe(true); // …and the shown rows were not built again
+
+    // Typing a value into one box (Enter): the picture is traced again with it.
+    const typed = [];
+    for (const value of ['0.3', '0.35', '0.4']) {
+      const radius = page.locator('input[name="objects[5].radius"]');
+      await radius.fill(value);
+      await longestTaskSince(page);
+      await radius.press('Enter');
+      await waitForDone(page, 60_000);
+      typed.push(await longestTaskSince(page));
+    }
+    await expect(page.locator('[data-message-for="objects[5].radius"]')).toBeEmpty();
 
     // On demand: every sphere.
     await panel.locator('[data-show-all-spheres]').first().click();
-    await expect(quadraticRows).toHaveCount(SPHERES + 1);
+    await expect(quadraticRows).toHaveCount(SPHERES + 3);
     const all = await longestTaskSince(page);
 
-    test.info().annotations.push({ type: 'longest task (ms)', description: `loading ${loading}, click ${click}, arrow steps ${steps.join('/')} (median ${arrows}), Add sphere ${adding}, every row on demand ${all}` });
+    test.info().annotations.push({ type: 'longest task (ms)', description: `loading ${loading}, click ${click}, arrow steps ${steps.join('/')} (median ${arrows}), Add sphere ${adds.join('/')} (median ${median(adds)}), a typed value ${typed.join('/')} (median ${median(typed)}), every row on demand ${all}` });
     expect(arrows).toBeLessThan(LONG_TASK_LIMIT);
+    expect(median(adds)).toBeLessThan(LONG_TASK_LIMIT);
+    expect(median(typed)).toBeLessThan(LONG_TASK_LIMIT);
     expect(errors).toEqual([]);
   });
 
