@@ -19,8 +19,9 @@
  *      for byte;
  *   4. a save while a sketch is open in the Vite dev server (a second server,
  *      on --save-port N or BENCH_SAVE_PORT, default the port + 1): the time
- *      from writing the sketch file to the reloaded page's first coarse
- *      preview, and whether the selected pixel came back (see saves());
+ *      from writing the sketch file to the first coarse preview, the sketch
+ *      swapped in place and, side by side, the page reloaded; and whether
+ *      the selected pixel came back (see saves());
  *   5. the 3D scene view's frame rate and cost (see view3d());
  *   6. sketch 07's animated example at 320×240 on the page's thread and on 2
  *      workers in turns: frames per second on the canvas, and what a frame
@@ -30,7 +31,7 @@
  *
  * Options: --dev (the dev server instead of build + preview); --runs N (worker
  * timings per case, default 15); --rounds N (animation rounds per thread,
- * default 5); --only progressive, workers, animation or view3d (one part
+ * default 5); --only progressive, workers, animation, saves or view3d (one part
  * alone); --port N or BENCH_PORT=N (the server's port, default 5178);
  * BENCH_TRACE=file writes the Chromium trace of part 1 (open it in
  * ui.perfetto.dev), and BENCH_TRACE_CATEGORIES=devtools.timeline,v8 adds
@@ -52,7 +53,7 @@ const PAGE = 'bench/browser/bench.html';
 const VIEW3D_PAGE = 'bench/browser/view3d.html';
 const ONLY_VIEW3D = option('--only') === 'view3d'; // `npm run bench:browser -- --only view3d`: section 5 alone
 const DEV = process.argv.includes('--dev');
-const ONLY = option('--only'); // 'progressive', 'workers', 'animation' or 'view3d': one part alone
+const ONLY = option('--only'); // 'progressive', 'workers', 'animation', 'saves' or 'view3d': one part alone
 const TASK_LIMIT_MS = 16;
 const CHANGES = 12;           // per way of making a change
 const RUNS = Number(option('--runs') ?? 15), WARMUP = 3;   // worker timings (--runs N)
@@ -223,18 +224,22 @@ async function workers(browser, base, errors) {
 const SAVES = 9, SAVE_WARMUP = 2;
 const SAVE_PORT = port(option('--save-port') ?? process.env.BENCH_SAVE_PORT ?? String(PORT + 1));
 const LIVE = 'bench/browser/live-save'; // .html and .js, written here and removed after (ignored by git)
+/** A call outside p5: the dev server does not swap a script that holds one, so a save of this copy reloads its page. */
+const RELOADS = '\nsetTimeout(() => {}, 0); // a timer: saves of this copy reload the page\n';
 
 /**
  * Sketch 10 (the playground) copied beside the bench page and opened in the
  * dev server; a pixel is selected; then the file is saved SAVES times (a
- * comment changes), as an editor does. Each time: Node's clock when the file
- * is written; in the page (an init script), the clock when the dev server's
- * reload message arrives on its socket and at the first putImageData of traced
- * pixels into the tracer canvas (the first coarse preview); and whether the
- * selected pixel came back. Both clocks are the epoch in ms on one machine.
+ * comment changes), as an editor does: swapped in place (lib/p5/hot-swap.js),
+ * or, for the copy `how` = 'reload' (a timer in it), by a reload of the page.
+ * Each time: Node's clock when the file is written; in the page (an init
+ * script), the clock when the dev server's message arrives on its socket and
+ * at the first putImageData of traced pixels into the tracer canvas (the
+ * first coarse preview); and whether the selected pixel came back. Both
+ * clocks are the epoch in ms on one machine.
  */
-async function saves(browser, base, errors) {
-  const js = readFileSync(resolve(ROOT, 'sketches/10-playground.js'), 'utf8').replaceAll("'../lib/", "'../../lib/");
+async function saves(browser, base, errors, how) {
+  const js = readFileSync(resolve(ROOT, 'sketches/10-playground.js'), 'utf8').replaceAll("'../lib/", "'../../lib/") + (how === 'reload' ? RELOADS : '');
   const html = readFileSync(resolve(ROOT, 'sketches/10-playground.html'), 'utf8')
     .replace('./sketch.css', '../../sketches/sketch.css').replace('./10-playground.js', './live-save.js');
   writeFileSync(resolve(ROOT, `${LIVE}.html`), html);
@@ -249,13 +254,13 @@ async function saves(browser, base, errors) {
           window.firstPreview = performance.timeOrigin + performance.now();
         }
       };
-      // The dev server's word that the file changed: the first 'full-reload' message on Vite's socket.
+      // The dev server's word that the file changed: a 'full-reload' or an 'update' message on Vite's socket.
       const NativeSocket = window.WebSocket;
       window.WebSocket = class extends NativeSocket {
         constructor(...args) {
           super(...args);
           this.addEventListener('message', (event) => {
-            if (String(event.data).includes('"full-reload"')) sessionStorage.setItem('bench:arrived', String(performance.timeOrigin + performance.now()));
+            if (/"(full-reload|update)"/.test(String(event.data))) sessionStorage.setItem('bench:arrived', String(performance.timeOrigin + performance.now()));
           });
         }
       };
@@ -269,19 +274,22 @@ async function saves(browser, base, errors) {
     await canvas.click({ position: { x: (10.5 * box.width) / 64, y: (12.5 * box.height) / 48 } });
     const results = [];
     for (let i = 0; i < SAVES + SAVE_WARMUP; i++) {
-      const loaded = page.waitForEvent('load');
+      let loaded = false;
+      page.once('load', () => { loaded = true; });
+      const swapsBefore = await page.evaluate(() => { window.firstPreview = 0; return window.__sketchbookSwaps ?? 0; });
       const written = Date.now();
       writeFileSync(resolve(ROOT, `${LIVE}.js`), `${js}\n// save ${i}\n`);
-      await loaded;
-      await page.waitForFunction(() => window.firstPreview, null, { timeout: 30_000, polling: 'raf' });
+      await page.waitForFunction((n) => window.firstPreview && (window.__sketchbookSwaps ?? 0) !== n, swapsBefore, { timeout: 30_000, polling: 'raf' })
+        .catch(() => page.waitForFunction(() => window.firstPreview, null, { timeout: 30_000, polling: 'raf' })); // a reload: a new page
       const r = await page.evaluate(() => ({
         arrived: Number(sessionStorage.getItem('bench:arrived')), start: performance.timeOrigin, preview: window.firstPreview,
       }));
       await page.waitForSelector('body[data-render="done"]', { timeout: 60_000 });
       const answer = await page.locator('[data-answer]').textContent();
-      if (i >= SAVE_WARMUP) results.push({ ...r, written, kept: answer.startsWith('Pixel: 10,12;') });
+      if (i >= SAVE_WARMUP) results.push({ ...r, written, kept: answer.startsWith('Pixel: 10,12;'), how: loaded ? 'reload' : 'swap' });
       await page.waitForTimeout(300); // a teacher does not save twice in 300 ms
     }
+    if (results.some((r) => r.how !== how)) errors.push(`part 4: a save meant to ${how} did not (${results.map((r) => r.how).join(', ')})`);
     return results;
   } finally {
     await context.close();
@@ -290,16 +298,18 @@ async function saves(browser, base, errors) {
   }
 }
 
-function reportSaves(results) {
-  console.log(`\n4. A save while the sketch is open (Vite dev server, sketch 10 at 64×48, ${results.length} saves after ${SAVE_WARMUP} warm-up)`);
-  const column = (label, values) => [label, ms(median(values)), ms(Math.min(...values)), ms(Math.max(...values))];
-  table(['first coarse preview (ms)', 'median', 'min', 'max'], [
-    column('from the file written', results.map((r) => r.preview - r.written)),
-    column('from the save arriving at the page', results.map((r) => r.preview - r.arrived)),
-    column('from the reloaded page\'s start', results.map((r) => r.preview - r.start)),
-  ], [36, 8, 8, 8]);
-  console.log(`   selected pixel kept: ${results.filter((r) => r.kept).length} of ${results.length}`);
-  console.log('   (arriving: the dev server\'s reload message reaches the page; file written to arriving: its file watcher)');
+function reportSaves(swapped, reloaded) {
+  console.log(`\n4. A save while the sketch is open (Vite dev server, sketch 10 at 64×48, ${swapped.length} saves each after ${SAVE_WARMUP} warm-up; load average ${loadavg()[0].toFixed(1)})`);
+  const cells = (values) => [ms(median(values)), ms(Math.min(...values)), ms(Math.max(...values))];
+  const row2 = (label, f) => [label, ...cells(swapped.map(f)), ...cells(reloaded.map(f))];
+  table(['first coarse preview (ms)', 'swap: median', 'min', 'max', 'reload: median', 'min', 'max'], [
+    row2('from the file written', (r) => r.preview - r.written),
+    row2('from the save arriving at the page', (r) => r.preview - r.arrived),
+  ], [36, 13, 7, 7, 15, 7, 7]);
+  console.log(`   reloaded page's start to its first preview: median ${ms(median(reloaded.map((r) => r.preview - r.start)))}`);
+  console.log(`   selected pixel kept: swap ${swapped.filter((r) => r.kept).length} of ${swapped.length}, reload ${reloaded.filter((r) => r.kept).length} of ${reloaded.length}`);
+  console.log('   (swap: the script swapped in place, lib/p5/hot-swap.js; reload: the same sketch with a timer in it, which the dev server does not swap;');
+  console.log('    arriving: the dev server\'s message reaches the page; file written to arriving: its file watcher)');
 }
 
 /* ---------------- report ---------------- */
@@ -452,10 +462,11 @@ try {
     if (w.width) reportWorkers(w);
     if (w.cases.some((c) => c.differing !== 0)) errors.push('a worker picture differs from render()');
     if (!ONLY || ONLY === 'animation') reportAnimation(await animation(browser, base, errors));
-    if (!ONLY) {
+    if (!ONLY || ONLY === 'saves') {
       const devServer = DEV && SAVE_PORT === PORT ? null : await startServer(null, SAVE_PORT);
       try {
-        reportSaves(await saves(browser, `http://localhost:${SAVE_PORT}/`, errors));
+        const saveBase = `http://localhost:${SAVE_PORT}/`;
+        reportSaves(await saves(browser, saveBase, errors, 'swap'), await saves(browser, saveBase, errors, 'reload'));
       } finally {
         devServer?.kill(); // the dev server this script started for part 4, by its PID
       }

@@ -163,7 +163,7 @@ function buildPanel() {
   const box = element('aside', { class: 'rt-error', 'data-error': '', role: 'alert', 'aria-live': 'assertive' },
     element('div', { class: 'rt-error-head' }, element('strong', {}, 'Mistake in the sketch'), hide),
     element('div', { class: 'rt-error-list' }),
-    element('p', { class: 'rt-error-hint' }, 'Fix it and save: the page reloads. The browser console (F12) has the whole story.'));
+    element('p', { class: 'rt-error-hint' }, 'Fix it and save: the panel goes. The browser console (F12) has the whole story.'));
   hide.addEventListener('click', () => { box.hidden = true; });
   document.body.append(box);
   return box;

@@ -2,7 +2,7 @@
  * The mistake on the page: a sketch built from the README's recipe, with one
  * kind of mistake each, shows the panel [data-error] with the message and the
  * sketch's own file:line (the console keeps the error too); after a fix is
- * saved, the page reloads without the panel and traces its picture.
+ * saved (swapped in place or reloaded), the panel is gone and the picture traced.
  */
 import { test, expect } from '@playwright/test';
 import { waitForDone, clickPixel } from './helpers.js';
