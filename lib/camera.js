@@ -8,6 +8,7 @@ import { toVec3, Vec3, normalize } from './vec3.js';
 import { finiteNumber, numberInRange, positiveInteger, checkOptions } from './check.js';
 import { Ray } from './ray.js';
 import { RAD_PER_DEG } from './constants.js';
+import { clamp } from './numbers.js';
 
 /** The camera size limit: at most 16384 pixels a side (a canvas's limit) and 4096 × 4096 pixels in all (a 64 MB frame). */
 export const MAX_CAMERA_SIDE = 16384;
@@ -112,5 +113,15 @@ export class Camera {
 
 /** The horizontal and vertical angles (degrees) of a unit direction. */
 export function angles(d) {
-  return { h: Math.atan2(d.x, -d.z) / RAD_PER_DEG, v: Math.asin(Math.max(-1, Math.min(1, d.y))) / RAD_PER_DEG };
+  return { h: horizontalAngle(d), v: verticalAngle(d) };
+}
+
+/** H, degrees: how far left (−) or right (+) of straight ahead (−z) a direction points, atan2(dx, −dz). */
+export function horizontalAngle(d) {
+  return Math.atan2(d.x, -d.z) / RAD_PER_DEG;
+}
+
+/** V, degrees: how far below (−) or above (+) the horizon a unit direction points, asin(dy). */
+export function verticalAngle(d) {
+  return Math.asin(clamp(d.y, -1, 1)) / RAD_PER_DEG; // dy a hair over 1 after normalising: no NaN
 }

@@ -9,11 +9,10 @@
  */
 import { Ray } from './ray.js';
 import { copy, scaleAndAdd, Vec3 } from './vec3.js';
-import { angles } from './camera.js';
+import { angles, horizontalAngle, verticalAngle } from './camera.js';
 import { intersectQuadratic, Sphere } from './shapes/sphere.js';
 import { nearestHit } from './trace.js';
 import { renderPixel } from './render.js';
-import { DEG_PER_RAD } from './constants.js';
 import { toHex, colorToHex } from './color.js';
 import { formatRounded, formatPowerOfTen } from './format.js';
 
@@ -85,13 +84,13 @@ const SHADERS = {
 
   h(scene, camera, x, y, target) {
     primaryRay(camera, x, y);
-    const h = Math.atan2(_ray.direction.x, -_ray.direction.z) * DEG_PER_RAD;
+    const h = horizontalAngle(_ray.direction);
     put(target, camera, x, y, angleColor(h, angleRange(camera).h, _rgb));
   },
 
   v(scene, camera, x, y, target) {
     primaryRay(camera, x, y);
-    const v = Math.asin(Math.max(-1, Math.min(1, _ray.direction.y))) * DEG_PER_RAD;
+    const v = verticalAngle(_ray.direction);
     put(target, camera, x, y, angleColor(v, angleRange(camera).v, _rgb));
   },
 
