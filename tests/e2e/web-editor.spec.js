@@ -70,7 +70,10 @@ for (const how of ['http', 'file']) {
     const canvas = page.locator('[data-tracer]');
     await expect(canvas).toHaveAttribute('data-width', '64');
     await expect(canvas).toHaveAttribute('data-height', '48');
-    await expectCanvasScreenshot(canvas, 'web-editor-starter.png'); // the same picture both ways
+    // The reference picture: the web-editor starter's 64×48 view, a pink sphere lit from the upper
+    // left with a blue one behind it on a pale-blue sky, at 10 screen pixels per traced pixel.
+    // Both ways (http and file://) must give exactly this picture.
+    await expectCanvasScreenshot(canvas, 'web-editor-starter.png');
 
     await clickPixel(canvas, 30, 22);
     const inspector = page.locator('[data-inspector]');
