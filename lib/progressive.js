@@ -11,8 +11,8 @@
  * default shader, each primary ray is tested only against its tile's
  * candidate shapes, as `render` does (lib/bounds.js).
  */
-import { renderPixel } from './render.js';
-import { tileCandidates, TILE } from './bounds.js';
+import { renderPixel, renderPackedPixel, prepareFrame } from './render.js';
+import { TILE } from './bounds.js';
 import { positiveInteger, finiteNumber, show, checkOptions } from './check.js';
 
 /** The render orders a ProgressiveRenderer knows. */
@@ -122,7 +122,7 @@ export class ProgressiveRenderer {
       this.buffer = new Uint8ClampedArray(size);
       this.#words = new Uint32Array(this.buffer.buffer);
     }
-    this.#tiles = shader === renderPixel ? tileCandidates(scene, camera) : null;
+    this.#tiles = shader === renderPixel ? prepareFrame(scene, camera) : null; // also packs the scene for the fast path
 
     this.#passes = mode === 'coarse' ? COARSE_PASSES : FULL_RESOLUTION;
     this.#passIndex = 0;
@@ -244,8 +244,9 @@ export class ProgressiveRenderer {
   #tracePixel(x, y, size) {
     const tiles = this.#tiles;
     if (tiles) {
-      const objects = tiles.lists[Math.floor(y / TILE) * tiles.columns + Math.floor(x / TILE)];
-      renderPixel(this.scene, this.camera, x, y, this.buffer, objects);
+      const tile = Math.floor(y / TILE) * tiles.columns + Math.floor(x / TILE);
+      if (tiles.packed) renderPackedPixel(tiles, tile, this.camera, x, y, this.buffer);
+      else renderPixel(this.scene, this.camera, x, y, this.buffer, tiles.lists[tile]);
     } else {
       this.shader(this.scene, this.camera, x, y, this.buffer);
     }

@@ -9,6 +9,7 @@ import { tileCandidates, TILE } from './bounds.js';
 import { Scene } from './scene.js';
 import { Camera } from './camera.js';
 import { show, pixelCoordinate } from './check.js';
+import { packScene, tracePrimary } from './kernel.js';
 
 const _ray = new Ray();
 const _color = [0.5, 0.5, 0.5]; // doubles from the start (one array shape)
@@ -39,21 +40,44 @@ export function render(scene, camera, target, rows) {
     pixelCoordinate(y1, 'rows.y1', camera.height + 1);
     if (y1 < y0) throw new RangeError(`rows.y1 must not be less than rows.y0, got y0 = ${y0}, y1 = ${y1}`);
   }
-  return renderRows(scene, camera, target, y0, y1, tileCandidates(scene, camera, y0, y1));
+  return renderRows(scene, camera, target, y0, y1, prepareFrame(scene, camera, y0, y1));
 }
 
 /**
- * Rows y0 ≤ y < y1 of the frame into `target`, with the tiles' candidate
- * shapes already worked out (`tileCandidates(scene, camera)` covering those
- * rows): a worker finds them once per scene, then renders band after band.
+ * What rendering a frame of this scene works out once, before any pixel: the
+ * shapes that can be under each tile (lib/bounds.js) and the scene packed for
+ * the fast path (lib/kernel.js; null when a shape is not a plain Sphere, Plane
+ * or Box), with tile t's shapes as indices into it, `candidates[starts[t] …
+ * starts[t + 1])`. Good until the scene or camera changes: a worker prepares
+ * once per change, then renders band after band.
+ * @returns {{ columns: number, lists: object[][], packed: import('./kernel.js').PackedScene|null, candidates: Int32Array|null, starts: Int32Array|null }}
  */
-export function renderRows(scene, camera, target, y0, y1, { columns, lists }) {
-  const { width } = camera;
+export function prepareFrame(scene, camera, y0 = 0, y1 = camera.height) {
+  const { columns, lists } = tileCandidates(scene, camera, y0, y1);
+  const packed = packScene(scene);
+  if (!packed) return { columns, lists, packed, candidates: null, starts: null };
+  const starts = new Int32Array(lists.length + 1);
+  for (let t = 0; t < lists.length; t++) starts[t + 1] = starts[t] + (lists[t]?.length ?? 0); // (rows left out: no list)
+  const candidates = new Int32Array(starts[lists.length]);
+  for (let t = 0; t < lists.length; t++) {
+    for (let n = 0; n < (lists[t]?.length ?? 0); n++) candidates[starts[t] + n] = packed.index.get(lists[t][n]);
+  }
+  return { columns, lists, packed, candidates, starts };
+}
+
+/**
+ * Rows y0 ≤ y < y1 of the frame into `target`, with what `prepareFrame`
+ * worked out for those rows.
+ */
+export function renderRows(scene, camera, target, y0, y1, frame) {
+  const { width } = camera, { columns } = frame;
   copy(_ray.origin, camera.position); // every primary ray starts at the eye
   for (let ty = Math.floor(y0 / TILE) * TILE; ty < y1; ty += TILE) {
     for (let tx = 0; tx < width; tx += TILE) {
-      const objects = lists[(ty / TILE) * columns + tx / TILE];
-      renderTile(scene, camera, target, objects, tx, Math.max(ty, y0), Math.min(tx + TILE, width), Math.min(ty + TILE, y1));
+      const tile = (ty / TILE) * columns + tx / TILE;
+      const x0 = tx, x1 = Math.min(tx + TILE, width), y = Math.max(ty, y0), yEnd = Math.min(ty + TILE, y1);
+      if (frame.packed) renderPackedTile(frame, tile, camera, target, x0, y, x1, yEnd);
+      else renderTile(scene, camera, target, frame.lists[tile], x0, y, x1, yEnd);
     }
   }
   return target;
@@ -68,6 +92,24 @@ function renderTile(scene, camera, target, objects, x0, y0, x1, y1) {
       writePixel(target, i, _color);
     }
   }
+}
+
+/** renderTile by the fast path: the same pixels, by lib/kernel.js. */
+function renderPackedTile(frame, tile, camera, target, x0, y0, x1, y1) {
+  for (let y = y0; y < y1; y++) {
+    for (let x = x0, i = (y * camera.width + x0) * 4; x < x1; x++, i += 4) renderPackedPixel(frame, tile, camera, x, y, target, i);
+  }
+}
+
+/**
+ * Pixel (x, y) of tile `tile` by the fast path, with what `prepareFrame`
+ * worked out (`frame.packed` not null): renderPixel's bytes, sooner. They go
+ * to `target` at `i`, the pixel's own place when left out.
+ */
+export function renderPackedPixel(frame, tile, camera, x, y, target, i = (y * camera.width + x) * 4) {
+  const d = camera.directionAt(x, y, _ray.direction);
+  const color = tracePrimary(frame.packed, camera.position, d.x, d.y, d.z, frame.candidates, frame.starts[tile], frame.starts[tile + 1]);
+  writePixel(target, i, color);
 }
 
 /**

@@ -5,6 +5,9 @@ import { toVec3, toUnit, Vec3, copy } from '../vec3.js';
 import { shapeOptions } from '../material.js';
 import { EPSILON } from '../constants.js';
 
+/** |n·d| below this: the ray runs along the plane and misses it. */
+export const PARALLEL = 1e-12;
+
 export class Plane {
   /**
    * @param {number[]|{x,y,z}} point any point on the plane
@@ -27,7 +30,7 @@ export class Plane {
   hit(ray, tMin = EPSILON) {
     const n = this.normal, d = ray.direction, o = ray.origin, p = this.point;
     const denom = n.x * d.x + n.y * d.y + n.z * d.z;
-    if (Math.abs(denom) < 1e-12) return Infinity;
+    if (Math.abs(denom) < PARALLEL) return Infinity;
     const t = ((p.x - o.x) * n.x + (p.y - o.y) * n.y + (p.z - o.z) * n.z) / denom;
     return t > tMin ? t : Infinity;
   }

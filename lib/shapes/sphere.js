@@ -15,7 +15,7 @@ export { EPSILON };
  * r² + L·L: the size of the terms whose difference it is, so rounding never
  * makes the two routes disagree, for a tiny far sphere as for a huge one.
  */
-const TANGENT = 1e-12;
+export const TANGENT = 1e-12;
 
 export class Sphere {
   /**

@@ -4,8 +4,8 @@
  */
 import { positiveInteger } from '../check.js';
 import { sceneFromJSON, cameraFromJSON } from '../serialize.js';
-import { renderRows } from '../render.js';
-import { tileCandidates, TILE } from '../bounds.js';
+import { renderRows, prepareFrame } from '../render.js';
+import { TILE } from '../bounds.js';
 
 /**
  * Deals a frame's rows to `parts` workers: bands of `rowsPerBand` rows, handed
@@ -85,7 +85,7 @@ export function workerHandler({ now = () => performance.now() } = {}) {
         version = null; // until the new scene is whole
         scene = sceneFromJSON(job.scene);
         camera = cameraFromJSON(job.camera);
-        tiles = tileCandidates(scene, camera);
+        tiles = prepareFrame(scene, camera);
         version = job.version;
       }
       if (job.version !== version) throw new Error(`scene version ${job.version} never arrived (have ${version})`);

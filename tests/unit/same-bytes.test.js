@@ -9,7 +9,11 @@
 import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
 import { Camera, Scene, Sphere, Plane, Box, PointLight, render, inspectPixel } from '../../lib/index.js';
-import { renderPixel } from '../../lib/render.js';
+import { renderPixel, prepareFrame } from '../../lib/render.js';
+import { packScene, tracePrimary } from '../../lib/kernel.js';
+import { trace } from '../../lib/trace.js';
+import { Ray } from '../../lib/ray.js';
+import { Vec3 } from '../../lib/vec3.js';
 import { MODES, modeShader } from '../../lib/modes.js';
 import { ProgressiveRenderer, ORDERS } from '../../lib/progressive.js';
 
@@ -48,7 +52,8 @@ const box = fc.tuple(place, size, size, size, material)
 const light = fc.tuple(point(20), color, fc.double({ min: 0, max: 2, noNaN: true }))
   .map(([position, c, intensity]) => new PointLight(position, c, intensity));
 
-const scene = fc.record({
+/** A scene's switches, and its items drawn from `item`. */
+const sceneOf = (item) => fc.record({
   background: color,
   ambient: sometimes(unit),
   shadows: fc.boolean(),
@@ -56,9 +61,12 @@ const scene = fc.record({
   maxDepth: fc.integer({ min: 0, max: 4 }),
   bias: fc.constantFrom(1e-4, 0, 0.01),
   epsilon: fc.constantFrom(1e-6, 0),
-  items: fc.array(fc.oneof({ weight: 5, arbitrary: sphere }, { weight: 1, arbitrary: plane }, { weight: 3, arbitrary: box }, { weight: 2, arbitrary: light }),
-    { minLength: 1, maxLength: 7 }),
-}).map(({ items, ...options }) => items.reduce((s, item) => s.add(item), new Scene(options)));
+  items: fc.array(item, { minLength: 1, maxLength: 7 }),
+}).map(({ items, ...options }) => items.reduce((s, it) => s.add(it), new Scene(options)));
+
+const scene = sceneOf(fc.oneof({ weight: 5, arbitrary: sphere }, { weight: 1, arbitrary: plane }, { weight: 3, arbitrary: box }, { weight: 2, arbitrary: light }));
+/** The lesson's scenes: spheres only (the fast path then skips asking each shape its kind), lit by their glow and point lights. */
+const sphereScene = sceneOf(fc.oneof({ weight: 3, arbitrary: sphere }, { weight: 1, arbitrary: light }));
 
 /** Small frames of a few tiles (16 px), rarely whole ones; from anywhere looking anywhere, or from near the origin looking ahead. */
 const camera = fc.record({
@@ -127,10 +135,58 @@ describe('the same bytes as the plain reference, for random scenes and cameras (
     }), { ...RUNS, numRuns: 150 });
   });
 
+  it('render() takes the fast path (lib/kernel.js) for scenes of plain shapes, and for spheres only gives the same bytes', () => {
+    fc.assert(fc.property(scene, camera, (s, cam) => {
+      expect(prepareFrame(s, cam).packed).not.toBeNull(); // so the tests above compare lib/kernel.js with trace.js
+    }), { ...RUNS, numRuns: 50 });
+    fc.assert(fc.property(sphereScene, camera, (s, cam) => {
+      expect(firstDifference(render(s, cam), pixelByPixel(s, cam))).toBe(-1);
+    }), RUNS);
+  });
+
   it("a ProgressiveRenderer's finished buffer is render()'s, in every order", () => {
     fc.assert(fc.property(scene, camera, (s, cam) => {
       const expected = render(s, cam);
       for (const order of ORDERS) expect(firstDifference(progressively(s, cam, order), expected), order).toBe(-1);
     }), { ...RUNS, numRuns: 150 });
+  });
+});
+
+describe('a shape of its own class (a subclass with its own hit test)', () => {
+  /** A sphere that hides itself from rays starting left of x = 0: only its own `hit` knows. */
+  class HalfSeen extends Sphere {
+    hit(ray, tMin) {
+      return ray.origin.x < 0 ? Infinity : super.hit(ray, tMin);
+    }
+  }
+
+  it('is not packed for the fast path: render() asks the shape itself, as trace.js does', () => {
+    const scene = new Scene({ background: [0, 0, 1] }).add(new HalfSeen([0, 0, -10], 3, { color: [1, 0, 0], emission: [1, 0, 0] }));
+    expect(packScene(scene)).toBeNull();
+    const seen = render(scene, new Camera({ width: 8, height: 8, position: [1, 0, 0] }));
+    const hidden = render(scene, new Camera({ width: 8, height: 8, position: [-1, 0, 0] }));
+    const middle = (4 * 8 + 4) * 4;
+    expect([...seen.subarray(middle, middle + 3)]).toEqual([255, 0, 0]);
+    expect([...hidden.subarray(middle, middle + 3)]).toEqual([0, 0, 255]);
+    expect(firstDifference(seen, pixelByPixel(scene, new Camera({ width: 8, height: 8, position: [1, 0, 0] })))).toBe(-1);
+  });
+});
+
+describe('the fast path on exact edges and corners, where ties decide', () => {
+  it("a ray that meets a box on an edge or corner gets trace.js's normal, so trace.js's colour", () => {
+    // Lit from +x only: the x face's normal is lit, the y or z face's is not.
+    const scene = new Scene({ background: [0, 0, 0] })
+      .add(new Box([-1, -1, -1], [1, 1, 1], { color: [1, 1, 1] }))
+      .add(new PointLight([10, 0.5, 0.25]));
+    const packed = packScene(scene);
+    const rays = [ // each ends exactly on an edge or corner of the box, along an axis
+      [[3, 1, 0], [-1, 0, 0]], [[3, -1, 0], [-1, 0, 0]], [[3, 1, 1], [-1, 0, 0]], [[1, 3, 0], [0, -1, 0]],
+      [[0, 1, 3], [0, 0, -1]], [[1, 1, 3], [0, 0, -1]], [[-3, 1, 0], [1, 0, 0]],
+    ];
+    for (const [origin, direction] of rays) {
+      const expected = trace(scene, new Ray(origin, direction), [0, 0, 0]);
+      const color = tracePrimary(packed, new Vec3(...origin), ...direction, packed.all, 0, packed.count);
+      expect([...color.subarray(0, 3)], `from ${origin} along ${direction}`).toEqual(expected);
+    }
   });
 });

@@ -1,0 +1,320 @@
+/**
+ * render()'s fast path: the story of trace.js — nearest hit, light the point,
+ * mirror and glass — step for step and in the same floating-point order, but
+ * with the scene packed into typed arrays and each ray's numbers in local
+ * variables, so no step reads through a chain of objects.
+ *
+ * Same bytes as trace.js, proven by tests/unit/same-bytes.test.js over random
+ * scenes (spheres, planes, boxes, lights, mirrors, glass). trace.js stays the
+ * lesson's readable version and the one the inspector runs; a change to the
+ * lighting goes into both. Full shading of the class scene is about 1.2× faster
+ * this way (docs/performance.md). Shapes of other classes (a subclass with its
+ * own `hit`) are not packed: `packScene` says no and render() uses trace.js.
+ */
+import { Sphere, TANGENT } from './shapes/sphere.js';
+import { Plane, PARALLEL } from './shapes/plane.js';
+import { Box } from './shapes/box.js';
+
+const SPHERE = 0, PLANE = 1, BOX = 2;
+
+/** Numbers per shape in `shapes`: sphere cx cy cz radius; plane px py pz nx ny nz; box min xyz, max xyz. */
+const SHAPE = 6;
+/** Numbers per material: r g b, emission r g b, reflection, transparency, ior, specular, shininess. */
+const MATERIAL = 11;
+/** Numbers per light: x y z, emission r g b, index of its shape (−1 for a point light). */
+const LIGHT = 7;
+
+/** The deepest bounce a scene allows (Scene's maxDepth is 0–16), plus the primary ray. */
+const LEVELS = 17;
+/** The ray being traced at each bounce depth: origin xyz, direction xyz. */
+const rays = new Float64Array(LEVELS * 6);
+/**
+ * Colours: slot 0 is the pixel's; the bounce at depth d writes what its mirror
+ * ray brings back at (d + 1)·6 and what its glass lets through at (d + 1)·6 + 3.
+ */
+const colors = new Float64Array((LEVELS + 1) * 6);
+
+/**
+ * The scene in numbers: its shapes, their materials and its lights in typed
+ * arrays, in the scene's order (ties between shapes resolve as in trace.js).
+ */
+export class PackedScene {
+  constructor(scene) {
+    const { objects, lights } = scene;
+    this.count = objects.length;
+    this.kinds = new Uint8Array(objects.length);
+    this.shapes = new Float64Array(objects.length * SHAPE);
+    this.materials = new Float64Array(objects.length * MATERIAL);
+    this.index = new Map(objects.map((object, i) => [object, i]));
+    objects.forEach((object, i) => this.#packShape(object, i));
+    this.lightCount = lights.length;
+    this.lights = new Float64Array(lights.length * LIGHT);
+    lights.forEach((light, i) => {
+      const { position: p, emission: e } = light;
+      this.lights.set([p.x, p.y, p.z, e[0], e[1], e[2], light.object ? this.index.get(light.object) ?? -1 : -1], i * LIGHT);
+    });
+    this.background = Float64Array.from(scene.background);
+    this.ambient = scene.ambient;
+    this.shadows = scene.shadows;
+    this.specular = scene.specular;
+    this.bias = scene.bias;
+    this.epsilon = scene.epsilon;
+    this.maxDepth = scene.maxDepth;
+    /** Every shape's index, in order: the list a mirror, glass or shadow ray tests. */
+    this.all = Int32Array.from(objects.keys());
+    /**
+     * The shapes' hit test: with only spheres (the lesson's scenes) the sphere
+     * test itself, which saves asking each shape its kind (about 6 %).
+     */
+    this.hit = this.kinds.every((kind) => kind === SPHERE) ? hitSphere : hitShape;
+  }
+
+  #packShape(object, i) {
+    const s = i * SHAPE, m = object.material;
+    if (object instanceof Sphere) {
+      this.kinds[i] = SPHERE;
+      this.shapes.set([object.center.x, object.center.y, object.center.z, object.radius], s);
+    } else if (object instanceof Plane) {
+      this.kinds[i] = PLANE;
+      this.shapes.set([object.point.x, object.point.y, object.point.z, object.normal.x, object.normal.y, object.normal.z], s);
+    } else {
+      this.kinds[i] = BOX;
+      this.shapes.set([object.min.x, object.min.y, object.min.z, object.max.x, object.max.y, object.max.z], s);
+    }
+    this.materials.set([...m.color, ...m.emission, m.reflection, m.transparency, m.ior, m.specular, m.shininess], i * MATERIAL);
+  }
+}
+
+/** The scene packed, or null when a shape is not exactly a Sphere, Plane or Box (trace.js handles those). */
+export function packScene(scene) {
+  const known = scene.objects.every((o) => o.constructor === Sphere || o.constructor === Plane || o.constructor === Box);
+  return known ? new PackedScene(scene) : null;
+}
+
+/**
+ * The colour of the primary ray from `origin` along (dx, dy, dz), tested first
+ * against the shapes `candidates[from … to)` (indices, in scene order):
+ * trace(scene, ray, color, undefined, 0, those shapes) in numbers.
+ * @returns {Float64Array} [r, g, b] in its first three entries (reused: read it before the next call)
+ */
+export function tracePrimary(k, origin, dx, dy, dz, candidates, from, to) {
+  rays[0] = origin.x; rays[1] = origin.y; rays[2] = origin.z;
+  rays[3] = dx; rays[4] = dy; rays[5] = dz;
+  traceRay(k, 0, 0, candidates, from, to);
+  return colors;
+}
+
+/**
+ * The hit being shaded, as trace.js's frame holds it: the point P, the unit
+ * normal N facing the ray, the ray's direction, and 1 when it meets the
+ * surface from inside. Numbers pass between the steps here, not as arguments:
+ * a double handed to a function the engine did not inline is boxed, per call.
+ */
+const surface = new Float64Array(10);
+const P = 0, N = 3, D = 6, INSIDE = 9;
+
+/** trace(): the ray at `depth` in `rays`; its colour into `colors[out …]`. */
+function traceRay(k, depth, out, candidates, from, to) {
+  const r = depth * 6, ox = rays[r], oy = rays[r + 1], oz = rays[r + 2], dx = rays[r + 3], dy = rays[r + 4], dz = rays[r + 5];
+  let t = Infinity, object = -1;
+  for (let n = from; n < to; n++) { // nearestHit
+    const i = candidates[n], ti = k.hit(k, i, ox, oy, oz, dx, dy, dz, k.epsilon);
+    if (ti < t) { t = ti; object = i; }
+  }
+  if (object < 0) {
+    colors[out] = k.background[0]; colors[out + 1] = k.background[1]; colors[out + 2] = k.background[2];
+    return;
+  }
+  surface[P] = ox + dx * t; surface[P + 1] = oy + dy * t; surface[P + 2] = oz + dz * t; // P = Ro + Rd·t
+  surface[D] = dx; surface[D + 1] = dy; surface[D + 2] = dz;
+  surfaceAt(k, object);
+  lightPoint(k, object, out);
+  const m = object * MATERIAL, reflection = k.materials[m + 6], transparency = k.materials[m + 7];
+  if (depth < k.maxDepth && (reflection > 0 || transparency > 0)) mirrorAndGlass(k, object, depth, out);
+}
+
+/** surfaceAt: the unit normal at P, turned to face the ray, into `surface`. */
+function surfaceAt(k, object) {
+  normalAt(k, object);
+  const dx = surface[D], dy = surface[D + 1], dz = surface[D + 2];
+  const inside = dx * surface[N] + dy * surface[N + 1] + dz * surface[N + 2] > 0;
+  if (inside) { surface[N] = -surface[N]; surface[N + 1] = -surface[N + 1]; surface[N + 2] = -surface[N + 2]; } // shade the side the ray sees
+  surface[INSIDE] = inside ? 1 : 0;
+}
+
+/**
+ * mirrorAndGlass: the mirror ray and the glass ray, both traced at depth + 1,
+ * mixed into `colors[out …]` with the Fresnel share (Schlick).
+ */
+function mirrorAndGlass(k, object, depth, out) {
+  const Px = surface[P], Py = surface[P + 1], Pz = surface[P + 2]; // read before the rays below overwrite them
+  const Nx = surface[N], Ny = surface[N + 1], Nz = surface[N + 2];
+  const dx = surface[D], dy = surface[D + 1], dz = surface[D + 2];
+  const m = object * MATERIAL, reflection = k.materials[m + 6], transparency = k.materials[m + 7], ior = k.materials[m + 8];
+  const cosi = -(dx * Nx + dy * Ny + dz * Nz);
+  const eta = surface[INSIDE] === 1 ? ior : 1 / ior;
+  let refracts = false, Tx = 0, Ty = 0, Tz = 0;
+  if (transparency > 0) { // refractDirection: Snell's law, none on total internal reflection
+    const kk = 1 - eta * eta * (1 - cosi * cosi);
+    if (!(kk < 0)) { // (as refractDirection: a NaN is not total internal reflection)
+      const s = eta * cosi - Math.sqrt(kk);
+      Tx = eta * dx + s * Nx; Ty = eta * dy + s * Ny; Tz = eta * dz + s * Nz;
+      refracts = true;
+    }
+  }
+  const fresnel = transparency > 0 ? (refracts ? schlick(cosi, ior) : 1) : 0;
+
+  const next = (depth + 1) * 6, bias = k.bias, mirrored = next, through = next + 3;
+  const twice = 2 * (dx * Nx + dy * Ny + dz * Nz); // reflect: d − 2(d·n)n
+  rays[next] = Px + Nx * bias; rays[next + 1] = Py + Ny * bias; rays[next + 2] = Pz + Nz * bias;
+  rays[next + 3] = dx - twice * Nx; rays[next + 4] = dy - twice * Ny; rays[next + 5] = dz - twice * Nz;
+  traceRay(k, depth + 1, mirrored, k.all, 0, k.count);
+  if (refracts) {
+    rays[next] = Px + Nx * -bias; rays[next + 1] = Py + Ny * -bias; rays[next + 2] = Pz + Nz * -bias; // start just inside
+    rays[next + 3] = Tx; rays[next + 4] = Ty; rays[next + 5] = Tz;
+    traceRay(k, depth + 1, through, k.all, 0, k.count);
+  } else {
+    colors[through] = 0; colors[through + 1] = 0; colors[through + 2] = 0;
+  }
+  for (let c = 0; c < 3; c++) {
+    const color = k.materials[m + c];
+    const opaque = (1 - reflection) * colors[out + c] + reflection * color * colors[mirrored + c];
+    colors[out + c] = (1 - transparency) * opaque + transparency * (fresnel * colors[mirrored + c] + (1 - fresnel) * color * colors[through + c]);
+  }
+}
+
+/** Schlick's approximation, as trace.js computes it. */
+function schlick(cosi, ior) {
+  const r0 = ((1 - ior) / (1 + ior)) ** 2;
+  const k = 1 - cosi, k2 = k * k;
+  return r0 + (1 - r0) * k2 * k2 * k;
+}
+
+/**
+ * lightPoint: emission + ambient + each light the point can see, into
+ * `colors[out …]`; the shadow ray starts off the surface and stops short of the light.
+ */
+function lightPoint(k, object, out) {
+  const Px = surface[P], Py = surface[P + 1], Pz = surface[P + 2];
+  const Nx = surface[N], Ny = surface[N + 1], Nz = surface[N + 2];
+  const mat = k.materials, m = object * MATERIAL, ambient = k.ambient, lights = k.lights, bias = k.bias;
+  const red = mat[m], green = mat[m + 1], blue = mat[m + 2];
+  let cr = mat[m + 3] + ambient * red, cg = mat[m + 4] + ambient * green, cb = mat[m + 5] + ambient * blue;
+  for (let l = 0; l < k.lightCount * LIGHT; l += LIGHT) {
+    const lightObject = lights[l + 6];
+    if (lightObject === object) continue; // a light does not light itself
+    const x = lights[l] - Px, y = lights[l + 1] - Py, z = lights[l + 2] - Pz;
+    const distance = Math.sqrt(x * x + y * y + z * z), inverse = 1 / distance;
+    const Lx = x * inverse, Ly = y * inverse, Lz = z * inverse;
+    const cos = Nx * Lx + Ny * Ly + Nz * Lz; // Lambert
+    if (cos <= 0) continue;
+    const transmission = k.shadows
+      ? shadowRay(k, Px + Nx * bias, Py + Ny * bias, Pz + Nz * bias, Lx, Ly, Lz, distance - bias, lightObject)
+      : 1;
+    if (transmission === 0) continue;
+    const diffuse = cos * transmission;
+    const highlight = k.specular ? specular(mat[m + 9], mat[m + 10], Lx, Ly, Lz) * transmission : 0;
+    cr += lights[l + 3] * (red * diffuse + highlight);
+    cg += lights[l + 4] * (green * diffuse + highlight);
+    cb += lights[l + 5] * (blue * diffuse + highlight);
+  }
+  colors[out] = cr; colors[out + 1] = cg; colors[out + 2] = cb;
+}
+
+/** How much light gets through from the shadow ray's origin to `reach` along it (1 clear, 0 blocked). */
+function shadowRay(k, ox, oy, oz, dx, dy, dz, reach, lightObject) {
+  let transmission = 1;
+  for (let i = 0; i < k.count; i++) {
+    if (i === lightObject || k.hit(k, i, ox, oy, oz, dx, dy, dz, k.epsilon) >= reach) continue;
+    transmission *= k.materials[i * MATERIAL + 7];
+    if (transmission === 0) return 0;
+  }
+  return transmission;
+}
+
+/** Phong: specular·(R·V)^shininess, R the light (toward Lx, Ly, Lz) mirrored about the normal. */
+function specular(strength, shininess, Lx, Ly, Lz) {
+  if (!(strength > 0)) return 0;
+  const Nx = surface[N], Ny = surface[N + 1], Nz = surface[N + 2];
+  const twice = 2 * (Lx * Nx + Ly * Ny + Lz * Nz);
+  const rv = (Lx - twice * Nx) * surface[D] + (Ly - twice * Ny) * surface[D + 1] + (Lz - twice * Nz) * surface[D + 2];
+  return rv > 0 ? strength * Math.pow(rv, shininess) : 0;
+}
+
+/** Shape `i`'s smallest t > tMin along the ray, or Infinity: its class's `hit`, in numbers. */
+function hitShape(k, i, ox, oy, oz, dx, dy, dz, tMin) {
+  const kind = k.kinds[i], s = k.shapes, b = i * SHAPE;
+  if (kind === SPHERE) return hitSphere(k, i, ox, oy, oz, dx, dy, dz, tMin);
+  if (kind === PLANE) return hitPlane(s, b, ox, oy, oz, dx, dy, dz, tMin);
+  return hitBox(s, b, ox, oy, oz, dx, dy, dz, tMin);
+}
+
+/** Sphere#hit: the geometric route (L, tca, d², thc). */
+function hitSphere(k, i, ox, oy, oz, dx, dy, dz, tMin) {
+  const s = k.shapes, b = i * SHAPE, radius = s[b + 3], r2 = radius * radius;
+  const Lx = s[b] - ox, Ly = s[b + 1] - oy, Lz = s[b + 2] - oz;
+  const tca = Lx * dx + Ly * dy + Lz * dz;
+  const LL = Lx * Lx + Ly * Ly + Lz * Lz;
+  const gap = r2 - (LL - tca * tca); // r² − d²
+  const band = TANGENT * (r2 + LL);
+  if (gap < -band) return Infinity;
+  const thc = gap <= band ? 0 : Math.sqrt(gap);
+  if (tca - thc > tMin) return tca - thc;
+  return tca + thc > tMin ? tca + thc : Infinity;
+}
+
+/** Plane#hit. */
+function hitPlane(s, b, ox, oy, oz, dx, dy, dz, tMin) {
+  const nx = s[b + 3], ny = s[b + 4], nz = s[b + 5];
+  const denom = nx * dx + ny * dy + nz * dz;
+  if (Math.abs(denom) < PARALLEL) return Infinity;
+  const t = ((s[b] - ox) * nx + (s[b + 1] - oy) * ny + (s[b + 2] - oz) * nz) / denom;
+  return t > tMin ? t : Infinity;
+}
+
+/** Box#hit: the slabs, x then y then z. */
+function hitBox(s, b, ox, oy, oz, dx, dy, dz, tMin) {
+  slab[0] = -Infinity; slab[1] = Infinity;
+  if (!clipSlab(s[b], s[b + 3], ox, dx) || !clipSlab(s[b + 1], s[b + 4], oy, dy) || !clipSlab(s[b + 2], s[b + 5], oz, dz)) return Infinity;
+  const tNear = slab[0], tFar = slab[1];
+  if (tNear > tMin) return tNear;
+  return tFar > tMin ? tFar : Infinity; // the ray starts inside
+}
+
+/** [tNear, tFar] of the box's slabs so far. */
+const slab = new Float64Array(2);
+
+/** Narrows `slab` by one axis' slab min…max; false when the ray misses it. */
+function clipSlab(min, max, o, d) {
+  if (d === 0) return !(o < min || o > max); // parallel: inside this slab or never
+  let t1 = (min - o) / d, t2 = (max - o) / d;
+  if (t1 > t2) { const swap = t1; t1 = t2; t2 = swap; }
+  if (t1 > slab[0]) slab[0] = t1;
+  if (t2 < slab[1]) slab[1] = t2;
+  return !(slab[0] > slab[1]);
+}
+
+/** The unit normal of shape `object` at P, facing out, into `surface`: its class's `normalAt`. */
+function normalAt(k, object) {
+  const s = k.shapes, b = object * SHAPE, kind = k.kinds[object];
+  if (kind === SPHERE) {
+    const x = surface[P] - s[b], y = surface[P + 1] - s[b + 1], z = surface[P + 2] - s[b + 2];
+    const length = Math.sqrt(x * x + y * y + z * z), scale = length > 0 ? 1 / length : 0;
+    surface[N] = x * scale; surface[N + 1] = y * scale; surface[N + 2] = z * scale;
+  } else if (kind === PLANE) {
+    surface[N] = s[b + 3]; surface[N + 1] = s[b + 4]; surface[N + 2] = s[b + 5];
+  } else {
+    boxNormal(s, b);
+  }
+}
+
+/** Box#normalAt: the axis of the nearest face, x then y then z, min face before max face. */
+function boxNormal(s, b) {
+  let best = Infinity;
+  surface[N] = 0; surface[N + 1] = 1; surface[N + 2] = 0;
+  for (let a = 0; a < 3; a++) {
+    const toMin = Math.abs(surface[P + a] - s[b + a]), toMax = Math.abs(surface[P + a] - s[b + 3 + a]);
+    if (toMin < best) { best = toMin; surface[N] = 0; surface[N + 1] = 0; surface[N + 2] = 0; surface[N + a] = -1; }
+    if (toMax < best) { best = toMax; surface[N] = 0; surface[N + 1] = 0; surface[N + 2] = 0; surface[N + a] = 1; }
+  }
+}
