@@ -53,6 +53,7 @@ export class PackedScene {
       const { position: p, emission: e } = light;
       this.lights.set([p.x, p.y, p.z, e[0], e[1], e[2], light.object ? this.index.get(light.object) ?? -1 : -1], i * LIGHT);
     });
+    this.apart = this.#apart(objects, lights);
     this.background = Float64Array.from(scene.background);
     this.ambient = scene.ambient;
     this.shadows = scene.shadows;
@@ -69,6 +70,16 @@ export class PackedScene {
     this.hit = this.kinds.every((kind) => kind === SPHERE) ? hitSphere : hitShape;
   }
 
+  #apart(objects, lights) {
+    const apart = new Float64Array(lights.length * objects.length).fill(-Infinity);
+    lights.forEach(({ position: p }, l) => objects.forEach((object, i) => {
+      if (!(object instanceof Sphere)) return;
+      const c = object.center, D = Math.hypot(c.x - p.x, c.y - p.y, c.z - p.z), r = object.radius;
+      apart[l * objects.length + i] = D - r - APART_MARGIN * (D + r + 1);
+    }));
+    return apart;
+  }
+
   #packShape(object, i) {
     const s = i * SHAPE, m = object.material;
     if (object instanceof Sphere) {
@@ -83,6 +94,24 @@ export class PackedScene {
     }
     this.materials.set([...m.color, ...m.emission, m.reflection, m.transparency, m.ior, m.specular, m.shininess], i * MATERIAL);
   }
+}
+
+/**
+ * A shadow ray toward a light meets nothing farther from the light than its
+ * own length (plus twice the bias it starts off the surface by): each point
+ * Q on it has |Q − light| < reach + 2·bias. So a sphere whose nearest point is
+ * farther from the light than that cannot shade: `apart[light·count + shape]`
+ * is that distance, |C − light| − r, less a margin of 1e-5·(|C − light| + r + 1)
+ * and 1e-5·reach (below) for rounding and the tangent band (which lets a ray
+ * graze a sphere up to 1e-6·(r + |C − origin|) outside it). The sphere test it
+ * saves (28 % of the class scene's shadow tests) would have said "no hit"
+ * anyway; other shapes are never skipped (−Infinity).
+ */
+const APART_MARGIN = 1e-5;
+
+/** How far from the light a sphere's nearest point must be (`apart`) to be out of a shadow ray's way. */
+export function outOfReach(k, reach) {
+  return reach + 2 * k.bias + APART_MARGIN * reach;
 }
 
 /** The scene packed, or null when a shape is not exactly a Sphere, Plane or Box (trace.js handles those). */
@@ -209,7 +238,7 @@ function lightPoint(k, object, out) {
     const cos = Nx * Lx + Ny * Ly + Nz * Lz; // Lambert
     if (cos <= 0) continue;
     const transmission = k.shadows
-      ? shadowRay(k, Px + Nx * bias, Py + Ny * bias, Pz + Nz * bias, Lx, Ly, Lz, distance - bias, lightObject)
+      ? shadowRay(k, Px + Nx * bias, Py + Ny * bias, Pz + Nz * bias, Lx, Ly, Lz, distance - bias, l / LIGHT)
       : 1;
     if (transmission === 0) continue;
     const diffuse = cos * transmission;
@@ -221,11 +250,13 @@ function lightPoint(k, object, out) {
   colors[out] = cr; colors[out + 1] = cg; colors[out + 2] = cb;
 }
 
-/** How much light gets through from the shadow ray's origin to `reach` along it (1 clear, 0 blocked). */
-function shadowRay(k, ox, oy, oz, dx, dy, dz, reach, lightObject) {
+/** How much light gets through from the shadow ray's origin to `reach` along it toward light `light` (1 clear, 0 blocked). */
+function shadowRay(k, ox, oy, oz, dx, dy, dz, reach, light) {
+  const lightObject = k.lights[light * LIGHT + 6], apart = k.apart, row = light * k.count;
+  const beyond = outOfReach(k, reach);
   let transmission = 1;
   for (let i = 0; i < k.count; i++) {
-    if (i === lightObject || k.hit(k, i, ox, oy, oz, dx, dy, dz, k.epsilon) >= reach) continue;
+    if (i === lightObject || apart[row + i] > beyond || k.hit(k, i, ox, oy, oz, dx, dy, dz, k.epsilon) >= reach) continue;
     transmission *= k.materials[i * MATERIAL + 7];
     if (transmission === 0) return 0;
   }

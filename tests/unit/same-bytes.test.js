@@ -10,7 +10,7 @@ import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
 import { Camera, Scene, Sphere, Plane, Box, PointLight, render, inspectPixel } from '../../lib/index.js';
 import { renderPixel, prepareFrame } from '../../lib/render.js';
-import { packScene, tracePrimary } from '../../lib/kernel.js';
+import { packScene, tracePrimary, outOfReach } from '../../lib/kernel.js';
 import { trace } from '../../lib/trace.js';
 import { Ray } from '../../lib/ray.js';
 import { Vec3 } from '../../lib/vec3.js';
@@ -188,5 +188,35 @@ describe('the fast path on exact edges and corners, where ties decide', () => {
       const color = tracePrimary(packed, new Vec3(...origin), ...direction, packed.all, 0, packed.count);
       expect([...color.subarray(0, 3)], `from ${origin} along ${direction}`).toEqual(expected);
     }
+  });
+});
+
+describe("the fast path's shadow-ray shortcut", () => {
+  it('skips a sphere only when its test says "not in the way": near the limit, for random lights, points and biases (property)', () => {
+    let skipped = 0, nearLimit = 0;
+    const unitVector = direction.map(([x, y, z]) => { const n = Math.hypot(x, y, z); return [x / n, y / n, z / n]; });
+    fc.assert(fc.property(
+      point(20), fc.double({ min: 0.01, max: 20, noNaN: true }), point(30), unitVector, unitVector,
+      fc.integer({ min: -1000, max: 1000 }).map((n) => n / 20000), fc.constantFrom(0, 1e-4, 0.01, 0.5),
+      (center, radius, light, w, normal, jitter, bias) => {
+        // The shaded point P lies about as far from the light as the sphere's near side: the limit of the shortcut.
+        const scene = new Scene({ bias }).add(new Sphere(center, radius)).add(new PointLight(light));
+        const [c, L] = [new Vec3(...center), new Vec3(...light)];
+        const near = Math.hypot(c.x - L.x, c.y - L.y, c.z - L.z) - radius;
+        if (!(near > 0)) return; // the light inside the sphere: never skipped
+        const P = new Vec3(L.x + w[0] * near * (1 + jitter), L.y + w[1] * near * (1 + jitter), L.z + w[2] * near * (1 + jitter));
+        // lightPoint's shadow ray, as both trace.js and the kernel build it
+        const x = L.x - P.x, y = L.y - P.y, z = L.z - P.z, distance = Math.sqrt(x * x + y * y + z * z), k = 1 / distance;
+        const ray = new Ray([P.x + normal[0] * bias, P.y + normal[1] * bias, P.z + normal[2] * bias], [x * k, y * k, z * k]);
+        ray.direction.x = x * k; ray.direction.y = y * k; ray.direction.z = z * k; // (the Ray constructor would normalise it again)
+        const reach = distance - bias, packed = packScene(scene);
+        if (Math.abs(packed.apart[0] - outOfReach(packed, reach)) < 0.01 * reach) nearLimit++;
+        if (packed.apart[0] > outOfReach(packed, reach)) {
+          skipped++;
+          expect(scene.objects[0].hit(ray, scene.epsilon)).toBeGreaterThanOrEqual(reach);
+        }
+      }), { seed: 7, numRuns: 2000 });
+    expect(skipped).toBeGreaterThan(200); // the property was put to the test, not passed by skipping nothing
+    expect(nearLimit).toBeGreaterThan(200);
   });
 });
