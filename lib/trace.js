@@ -8,6 +8,8 @@
  * `trace` fills `color` ([r, g, b], 0–1 and above) and allocates nothing;
  * given a `steps` object it also records every intermediate value for the
  * inspector, computed apart from the colour by the same functions.
+ * render() tells the same story faster through lib/kernel.js: a change to
+ * it here goes there too (tests/unit/same-bytes.test.js says if they part).
  */
 import { Vec3, dot, copy, scaleAndAdd, reflect } from './vec3.js';
 import { Ray } from './ray.js';
