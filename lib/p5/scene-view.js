@@ -83,7 +83,7 @@ export class SceneView {
   #orbit; #home; #bounds; #planeDistance; #planeOption; #frustum;
   #picture; #pictureCtx; #pictureKey = ''; #lastDrawMs = 0; #lastDrawAt = -Infinity;
   #selected = null; #segments = []; #record = null;
-  #extra = []; #drag = null; #target; #geometry = null; #geometryKey = '';
+  #extra = []; #drag = null; #target; #geometry = null; #glass = null; #geometryKey = '';
   /** Shoot: rays in flight `{ segments, t0 }`, the pixel traced last, the row / column fan ('h' / 'v'). */
   #constructionSphere = null; #construction = []; #constructionLabels = [];
   #flying = []; #shots = 0; #shooting = false; #lastShot = null; #fan = null; #fanSegments = []; #watching = 0; #labels = [];
@@ -420,6 +420,7 @@ export class SceneView {
     if (this.#constructionSphere) wireSphere(g, this.#constructionSphere);
     for (const c of this.#construction) line3(g, c.from, c.to, c.color, c.weight);
     const flying = this.#drawFlying(g);
+    this.#drawGlass(g);
     g.pop();
     this.#drawLabels(o);
     if (flying) this.redraw(); // the next frame of the flight
@@ -456,33 +457,50 @@ export class SceneView {
    * built when the scene changes: each vertex carries its colour with the light
    * already worked out (a fixed light from above right), so each frame draws it
    * without p5's lights. Software WebGL lights every pixel in its shader, and
-   * that alone took a frame from 30 ms to 500 ms.
+   * that alone took a frame from 30 ms to 500 ms. Glass (a material with
+   * transparency) goes into a second geometry, `#glass`, drawn last and see-through.
    */
   #staticGeometry(g) {
     const key = this.#shapesKey();
     if (this.#geometry && this.#geometryKey === key) return this.#geometry;
-    if (this.#geometry) g.freeGeometry(this.#geometry);
+    for (const old of [this.#geometry, this.#glass]) if (old) g.freeGeometry(old);
     const { scene, camera } = this.#view;
     const r = this.#bounds.radius;
-    const mesh = { positions: [], colors: [] };
+    const mesh = { positions: [], colors: [], alpha: 1 }, glass = { positions: [], colors: [], alpha: 1 };
     for (const object of scene.objects) {
       const m = object.material;
       const rgb = m.isEmissive ? GLOW : m.color.map((c) => Math.min(1, c));
       if (object === this.#constructionSphere) continue; // drawn as a wire ball: the construction is inside it
+      const into = m.transparency > 0 && !m.isEmissive ? glass : mesh;
+      into.alpha = into === glass ? glassAlpha(m.transparency) : 1;
       if (object instanceof Sphere) {
-        if (object.radius > HUGE_RADIUS) this.#groundPatch(mesh, object.center, sub(new Vec3(), this.#bounds.center, object.center), object.radius, rgb);
-        else sphereMesh(mesh, object.center, object.radius, rgb, !m.isEmissive);
+        if (object.radius > HUGE_RADIUS) this.#groundPatch(into, object.center, sub(new Vec3(), this.#bounds.center, object.center), object.radius, rgb);
+        else sphereMesh(into, object.center, object.radius, rgb, !m.isEmissive);
       } else if (object instanceof Plane) {
-        this.#groundPatch(mesh, object.point, object.normal, 0, rgb);
+        this.#groundPatch(into, object.point, object.normal, 0, rgb);
       } else if (object instanceof Box) {
-        boxMesh(mesh, object.min, object.max, rgb);
+        boxMesh(into, object.min, object.max, rgb);
       }
     }
     for (const light of scene.lights) if (!light.object) sphereMesh(mesh, light.position, r * 0.025, GLOW, false, 8, 12);
     sphereMesh(mesh, camera.position, r * 0.02, [0.11, 0.14, 0.2], true, 8, 12);
     this.#geometry = toGeometry(g, mesh);
+    this.#glass = glass.positions.length > 0 ? toGeometry(g, glass) : null;
     this.#geometryKey = key;
     return this.#geometry;
+  }
+
+  /**
+   * The glass, after everything else: see-through, so the rays it bends show
+   * inside it. It is tested against what is nearer but hides nothing behind
+   * it (no depth writes), so its far side and what lies beyond show too.
+   */
+  #drawGlass(g) {
+    if (!this.#glass) return;
+    const gl = g.drawingContext;
+    gl.depthMask(false);
+    g.model(this.#glass);
+    gl.depthMask(true);
   }
 
   /** What the static geometry depends on: the shapes, their colours, the lights, the eye and the framing. */
@@ -492,7 +510,7 @@ export class SceneView {
     for (const o of scene.objects) {
       const m = o.material;
       parts.push(o.center?.x, o.center?.y, o.center?.z, o.radius, o.point?.x, o.point?.y, o.point?.z, o.normal?.x, o.normal?.y, o.normal?.z,
-        o.min?.x, o.min?.y, o.min?.z, o.max?.x, o.max?.y, o.max?.z, ...m.color, m.isEmissive ? 1 : 0);
+        o.min?.x, o.min?.y, o.min?.z, o.max?.x, o.max?.y, o.max?.z, ...m.color, m.isEmissive ? 1 : 0, m.transparency);
     }
     for (const l of scene.lights) parts.push(l.position.x, l.position.y, l.position.z);
     return parts.join(',');
@@ -744,9 +762,14 @@ function shade(rgb, n, lit = true) {
   return [Math.round(255 * rgb[0] * k), Math.round(255 * rgb[1] * k), Math.round(255 * rgb[2] * k)];
 }
 
+/** How opaque glass of this transparency is drawn: clear glass stays faintly visible. */
+function glassAlpha(transparency) {
+  return 1 - 0.75 * transparency;
+}
+
 function coloredVertex(mesh, p, col) {
   mesh.positions.push(p.x, -p.y, p.z);
-  mesh.colors.push(col[0] / 255, col[1] / 255, col[2] / 255, 1);
+  mesh.colors.push(col[0] / 255, col[1] / 255, col[2] / 255, mesh.alpha ?? 1);
 }
 
 /**
