@@ -7,7 +7,7 @@
  * Same bytes as trace.js, proven by tests/unit/same-bytes.test.js over random
  * scenes (spheres, planes, boxes, lights, mirrors, glass). trace.js stays the
  * lesson's readable version and the one the inspector runs; a change to the
- * lighting goes into both. Full shading of the class scene is about 1.2× faster
+ * lighting goes into both. Full shading of the class scene is 1.17–1.2× faster
  * this way (docs/performance.md). Shapes of other classes (a subclass with its
  * own `hit`) are not packed: `packScene` says no and render() uses trace.js.
  */
@@ -33,6 +33,24 @@ const rays = new Float64Array(LEVELS * 6);
  * ray brings back at (d + 1)·6 and what its glass lets through at (d + 1)·6 + 3.
  */
 const colors = new Float64Array((LEVELS + 1) * 6);
+
+/**
+ * A shadow ray toward a light meets nothing farther from the light than its
+ * own length (plus twice the bias it starts off the surface by): each point
+ * Q on it has |Q − light| < reach + 2·bias. So a sphere whose nearest point is
+ * farther from the light than that cannot shade: `apart[light·count + shape]`
+ * is that distance, |C − light| − r, less a margin of 1e-5·(|C − light| + r + 1)
+ * and 1e-5·reach (below) for rounding and the tangent band (which lets a ray
+ * graze a sphere up to 1e-6·(r + |C − origin|) outside it). The sphere test it
+ * saves (28 % of the class scene's shadow tests) would have said "no hit"
+ * anyway; other shapes are never skipped (−Infinity).
+ */
+const APART_MARGIN = 1e-5;
+
+/** How far from the light a sphere's nearest point must be (`apart`) to be out of a shadow ray's way. */
+export function outOfReach(k, reach) {
+  return reach + 2 * k.bias + APART_MARGIN * reach;
+}
 
 /**
  * The scene in numbers: its shapes, their materials and its lights in typed
@@ -70,6 +88,7 @@ export class PackedScene {
     this.hit = this.kinds.every((kind) => kind === SPHERE) ? hitSphere : hitShape;
   }
 
+  /** For each light and shape, how far the shape's near side is from the light, less a margin (spheres; −Infinity otherwise). */
   #apart(objects, lights) {
     const apart = new Float64Array(lights.length * objects.length).fill(-Infinity);
     lights.forEach(({ position: p }, l) => objects.forEach((object, i) => {
@@ -80,6 +99,7 @@ export class PackedScene {
     return apart;
   }
 
+  /** Shape i's numbers and its material's into `shapes` and `materials`. */
   #packShape(object, i) {
     const s = i * SHAPE, m = object.material;
     if (object instanceof Sphere) {
@@ -94,24 +114,6 @@ export class PackedScene {
     }
     this.materials.set([...m.color, ...m.emission, m.reflection, m.transparency, m.ior, m.specular, m.shininess], i * MATERIAL);
   }
-}
-
-/**
- * A shadow ray toward a light meets nothing farther from the light than its
- * own length (plus twice the bias it starts off the surface by): each point
- * Q on it has |Q − light| < reach + 2·bias. So a sphere whose nearest point is
- * farther from the light than that cannot shade: `apart[light·count + shape]`
- * is that distance, |C − light| − r, less a margin of 1e-5·(|C − light| + r + 1)
- * and 1e-5·reach (below) for rounding and the tangent band (which lets a ray
- * graze a sphere up to 1e-6·(r + |C − origin|) outside it). The sphere test it
- * saves (28 % of the class scene's shadow tests) would have said "no hit"
- * anyway; other shapes are never skipped (−Infinity).
- */
-const APART_MARGIN = 1e-5;
-
-/** How far from the light a sphere's nearest point must be (`apart`) to be out of a shadow ray's way. */
-export function outOfReach(k, reach) {
-  return reach + 2 * k.bias + APART_MARGIN * reach;
 }
 
 /** The scene packed, or null when a shape is not exactly a Sphere, Plane or Box (trace.js handles those). */
