@@ -3,7 +3,9 @@
 // global-mode sketch.js (the files of examples/web-editor/), served by a plain
 // static server and opened from file://. The picture traces, a click
 // inspects, the render worker runs from inside the one file, the console
-// stays quiet, and both ways give the same picture.
+// stays quiet, and both ways give the same picture. So does the ES module
+// build, raytracing-sketchbook.mjs, on a page that maps 'p5' to p5's own ES
+// module with an import map.
 // Then the gallery's page that teaches it shows those same files, and the
 // gallery and the lesson pages link into the API reference.
 import { test, expect } from '@playwright/test';
@@ -21,15 +23,48 @@ test.describe.configure({ mode: 'default' });
 
 let folder, server, origin;
 
+/** The starter of examples/web-editor/ in instance mode, importing the ES module build; 'p5' is p5's own ES module. */
+const MODULE_PAGE = `<!doctype html>
+<html lang="en">
+<head>
+  <meta charset="utf-8">
+  <link rel="icon" href="data:,">
+  <title>Raytracing Sketchbook as an ES module</title>
+  <script type="importmap">{ "imports": { "p5": "./p5.esm.js" } }</script>
+</head>
+<body>
+  <main></main>
+  <script type="module">
+    import p5 from 'p5';
+    import { Scene, Sphere, PointLight, Camera, ParallelRenderer, classScene, render } from './raytracing-sketchbook.mjs';
+    window.RT = { ParallelRenderer, Camera, classScene, render };
+    new p5((p) => {
+      p.setup = () => {
+        p.noCanvas();
+        const scene = new Scene({ background: [0.85, 0.92, 1], ambient: 0.1 });
+        scene.add(new Sphere([0, 0, -20], 4, { color: [1, 0.32, 0.36] }));
+        scene.add(new Sphere([6, 1, -26], 2, { color: [0.3, 0.6, 1] }));
+        scene.add(new PointLight([-10, 20, 0]));
+        const view = p.createTracerView({ scene, camera: new Camera({ width: 64, height: 48, fov: 30 }), grid: true });
+        p.createInspector({ view });
+      };
+    });
+  </script>
+</body>
+</html>
+`;
+
 test.beforeAll(async () => {
   folder = mkdtempSync(join(tmpdir(), 'rt-web-editor-'));
   execFileSync(process.execPath, ['node_modules/vite/bin/vite.js', 'build', '-c', 'vite.onefile.config.js', '--outDir', folder, '--logLevel', 'error'], { stdio: 'pipe' });
   copyFileSync('node_modules/p5/lib/p5.min.js', join(folder, 'p5.min.js'));
   for (const file of ['index.html', 'sketch.js']) copyFileSync(join('examples/web-editor', file), join(folder, file));
   writeFileSync(join(folder, 'no-p5.html'), '<!doctype html><meta charset="utf-8"><link rel="icon" href="data:,"><script src="raytracing-sketchbook.js"></script>');
+  copyFileSync('node_modules/p5/lib/p5.esm.js', join(folder, 'p5.esm.js'));
+  writeFileSync(join(folder, 'module.html'), MODULE_PAGE);
 
   // A plain static server: the folder's files and nothing else.
-  const types = { '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8' };
+  const types = { '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8', '.mjs': 'text/javascript; charset=utf-8' };
   server = createServer((req, res) => {
     const name = new URL(req.url, 'http://x').pathname.slice(1) || 'index.html';
     try {
@@ -99,6 +134,29 @@ for (const how of ['http', 'file']) {
     expect(errors).toEqual([]);
   });
 }
+
+test('as an ES module (import map: p5 → p5.esm.js): the starter traces the same picture, a click inspects, workers run', async ({ page }) => {
+  const errors = watchConsole(page);
+  const requests = [];
+  page.on('request', (request) => requests.push(request.url()));
+  await page.goto(`${origin}/module.html`);
+  await waitForDone(page);
+  const canvas = page.locator('[data-tracer]');
+  await expectCanvasScreenshot(canvas, 'web-editor-starter.png'); // the classic build's picture, above
+  await clickPixel(canvas, 30, 22);
+  await expect(page.locator('[data-inspector]')).toContainText(/Pixel: 30,22; H: -?\d+\.\d; V: -?\d+\.\d/);
+  const workers = await page.evaluate(async () => {
+    const scene = RT.classScene(), camera = new RT.Camera({ width: 40, height: 30 });
+    const renderer = new RT.ParallelRenderer({ workers: 2 });
+    const frame = await renderer.render(scene, camera);
+    const one = RT.render(scene, camera);
+    renderer.terminate();
+    return { problem: renderer.problem && String(renderer.problem.message ?? renderer.problem), same: frame.every((v, i) => v === one[i]) };
+  });
+  expect(workers).toEqual({ problem: null, same: true });
+  expect(requests.filter((url) => !url.startsWith(origin) && !url.startsWith('data:') && !url.startsWith('blob:'))).toEqual([]);
+  expect(errors).toEqual([]);
+});
 
 test('loaded without p5 before it, the one file says what to change', async ({ page }) => {
   const errors = [];
