@@ -1,7 +1,7 @@
 import { defineConfig } from 'vite';
 import { readdirSync } from 'node:fs';
 import { resolve } from 'node:path';
-import { includeText, oneFileInDev, apiReference, apiLine } from './scripts/site-plugins.js';
+import { includeText, oneFileInDev, apiReference, apiLine, fromFileNotice } from './scripts/site-plugins.js';
 import { p5OfflineI18n } from './scripts/p5-offline-i18n.js';
 import { reloadItsPagesOnly, swapSketchesInPlace, syntaxErrorsWhereTheyAre } from './scripts/vite-live-coding.js';
 
@@ -21,8 +21,8 @@ export default defineConfig({
   // p5's translations from node_modules, not a CDN (scripts/p5-offline-i18n.js): in the build and the dev server's bundle of p5.
   // A saved sketch is swapped in place, or reloads only the pages running it; a syntax error is shown at its line (scripts/vite-live-coding.js).
   // The web editor's page, its one-file build, the API reference and each lesson's
-  // "API:" line: scripts/site-plugins.js.
-  plugins: [p5OfflineI18n(), reloadItsPagesOnly(), swapSketchesInPlace(), syntaxErrorsWhereTheyAre(), includeText(), oneFileInDev(), apiReference(), apiLine()],
+  // "API:" line, and the notice a lesson page shows when opened from a file: scripts/site-plugins.js.
+  plugins: [p5OfflineI18n(), reloadItsPagesOnly(), swapSketchesInPlace(), syntaxErrorsWhereTheyAre(), includeText(), oneFileInDev(), apiReference(), apiLine(), fromFileNotice()],
   optimizeDeps: { rolldownOptions: { plugins: [p5OfflineI18n()] } },
   build: {
     target: 'es2022',

@@ -8,7 +8,9 @@
  *   with the one-file builds (npm run build writes them into dist/);
  * - apiReference: /api/ is the API reference, generated from the JSDoc;
  * - apiLine: under each lesson page, "API:" and the names its sketch uses,
- *   linked into the reference.
+ *   linked into the reference;
+ * - fromFileNotice: a lesson page opened from a file (a built page
+ *   double-clicked) says why its picture is missing and what to run.
  */
 import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
@@ -85,4 +87,33 @@ function apiLineInto(html, { filename }) {
   if (!script || !/[\\/]sketches[\\/]\d\d-[\w-]+\.html$/.test(filename)) return html;
   const line = apiLineHTML(namesUsedBy(readFileSync(resolve('sketches', script[1]), 'utf8')));
   return html.replace(script[0], `${line}\n  ${script[0]}`);
+}
+
+/**
+ * A built page opened from a file runs none of its scripts and gets none of
+ * its stylesheets (the browser refuses both to a file: page), so the notice
+ * and what shows it are inline: the page's own <style> and <script> still run.
+ */
+export const FROM_FILE_HEAD = `<script>if (location.protocol === 'file:') document.documentElement.classList.add('file-protocol');</script>
+  <style>.from-file { display: none; } .file-protocol .from-file { display: block; max-width: 48rem; padding: 0.8rem 1rem; border: 2px solid #d6336c; border-radius: 8px; background: #fff; font-family: system-ui, sans-serif; }</style>`;
+
+export const FROM_FILE_NOTICE = `<p class="from-file" role="alert">
+    This page was opened from a file, and browsers run a site's scripts only when a server
+    sends them: the picture cannot trace here. In the sketchbook's folder run
+    <code>npm run preview</code> and open the address it prints, or serve the <code>dist</code>
+    folder with any static server (<code>python3 -m http.server</code>), then open this page
+    there.
+  </p>`;
+
+export function fromFileNotice() {
+  return {
+    name: 'from-file-notice',
+    transformIndexHtml: { order: 'pre', handler: fromFileNoticeInto },
+  };
+}
+
+/** A lesson page with the notice under its header; any other page as it is. */
+export function fromFileNoticeInto(html, { filename }) {
+  if (!/[\\/]sketches[\\/]\d\d-[\w-]+\.html$/.test(filename) || !html.includes('</header>')) return html;
+  return html.replace('</head>', `  ${FROM_FILE_HEAD}\n</head>`).replace('</header>', `</header>\n  ${FROM_FILE_NOTICE}`);
 }

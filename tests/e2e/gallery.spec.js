@@ -1,7 +1,12 @@
 // The gallery links every sketch; each reaches data-render="done" with no
 // console errors, and each traced view matches its reference screenshot.
+// A lesson page opened from a file (a built page double-clicked) cannot run
+// its scripts: it says so, and what to run; served, it does not.
 import { test, expect } from '@playwright/test';
-import { readdirSync } from 'node:fs';
+import { mkdtempSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { pathToFileURL } from 'node:url';
 import { expectCanvasScreenshot, watchConsole, waitForDone } from './helpers.js';
 
 const sketchPages = readdirSync('sketches').filter((f) => f.endsWith('.html')).sort();
@@ -20,6 +25,7 @@ for (const file of sketchPages) {
     const errors = watchConsole(page);
     await page.goto(`/sketches/${file}`);
     await waitForDone(page);
+    await expect(page.locator('.from-file')).toBeHidden(); // served: no word about files
     const views = page.locator('[data-tracer]');
     const count = await views.count();
     expect(count).toBeGreaterThan(0);
@@ -31,3 +37,20 @@ for (const file of sketchPages) {
     expect(errors).toEqual([]);
   });
 }
+
+test('a lesson page opened from a file says why nothing traces, and what to run', async ({ page, baseURL }) => {
+  const folder = mkdtempSync(join(tmpdir(), 'rt-from-file-'));
+  try {
+    // The page as the server sends it, saved and opened by double-click: its module script cannot load from there.
+    const html = await (await page.request.get(`${baseURL}/sketches/01-rays-through-pixels.html`)).text();
+    writeFileSync(join(folder, 'lesson.html'), html);
+    await page.goto(pathToFileURL(join(folder, 'lesson.html')).href);
+    const notice = page.locator('.from-file');
+    await expect(notice).toBeVisible();
+    await expect(notice).toContainText('opened from a file');
+    await expect(notice).toContainText('npm run preview');
+    await expect(page.locator('[data-tracer]')).toHaveCount(0);
+  } finally {
+    rmSync(folder, { recursive: true, force: true });
+  }
+});

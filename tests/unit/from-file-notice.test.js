@@ -1,0 +1,26 @@
+// Every lesson page gets the notice it shows when opened from a file (a built
+// page double-clicked): inline, since such a page loads no stylesheet and no
+// script of its own files; other pages are left as they are.
+import { describe, it, expect } from 'vitest';
+import { readdirSync, readFileSync } from 'node:fs';
+import { resolve } from 'node:path';
+import { fromFileNoticeInto, FROM_FILE_HEAD, FROM_FILE_NOTICE } from '../../scripts/site-plugins.js';
+
+const lessons = readdirSync('sketches').filter((f) => /^\d\d-.*\.html$/.test(f));
+
+describe('fromFileNoticeInto', () => {
+  it.each(lessons)('%s: the notice under its header, what shows it in its head', (file) => {
+    const filename = resolve('sketches', file);
+    const html = fromFileNoticeInto(readFileSync(filename, 'utf8'), { filename });
+    expect(html).toContain(`</header>\n  ${FROM_FILE_NOTICE}`);
+    expect(html.indexOf(FROM_FILE_HEAD)).toBeGreaterThan(-1);
+    expect(html.indexOf(FROM_FILE_HEAD)).toBeLessThan(html.indexOf('</head>'));
+  });
+
+  it('leaves the gallery and other pages alone', () => {
+    for (const name of ['index.html', 'web-editor.html']) {
+      const html = readFileSync(name, 'utf8');
+      expect(fromFileNoticeInto(html, { filename: resolve(name) })).toBe(html);
+    }
+  });
+});
