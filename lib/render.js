@@ -69,15 +69,15 @@ export function prepareFrame(scene, camera, y0 = 0, y1 = camera.height) {
  * Rows y0 ≤ y < y1 of the frame into `target`, with what `prepareFrame`
  * worked out for those rows.
  */
-export function renderRows(scene, camera, target, y0, y1, frame) {
-  const { width } = camera, { columns } = frame;
+export function renderRows(scene, camera, target, y0, y1, prepared) {
+  const { width } = camera, { columns } = prepared;
   copy(_ray.origin, camera.position); // every primary ray starts at the eye
   for (let ty = Math.floor(y0 / TILE) * TILE; ty < y1; ty += TILE) {
     for (let tx = 0; tx < width; tx += TILE) {
       const tile = (ty / TILE) * columns + tx / TILE;
       const x0 = tx, x1 = Math.min(tx + TILE, width), y = Math.max(ty, y0), yEnd = Math.min(ty + TILE, y1);
-      if (frame.packed) renderPackedTile(frame, tile, camera, target, x0, y, x1, yEnd);
-      else renderTile(scene, camera, target, frame.lists[tile], x0, y, x1, yEnd);
+      if (prepared.packed) renderPackedTile(prepared, tile, camera, target, x0, y, x1, yEnd);
+      else renderTile(scene, camera, target, prepared.lists[tile], x0, y, x1, yEnd);
     }
   }
   return target;
@@ -95,20 +95,20 @@ function renderTile(scene, camera, target, objects, x0, y0, x1, y1) {
 }
 
 /** renderTile by the fast path: the same pixels, by lib/kernel.js. */
-function renderPackedTile(frame, tile, camera, target, x0, y0, x1, y1) {
+function renderPackedTile(prepared, tile, camera, target, x0, y0, x1, y1) {
   for (let y = y0; y < y1; y++) {
-    for (let x = x0, i = (y * camera.width + x0) * 4; x < x1; x++, i += 4) renderPackedPixel(frame, tile, camera, x, y, target, i);
+    for (let x = x0, i = (y * camera.width + x0) * 4; x < x1; x++, i += 4) renderPackedPixel(prepared, tile, camera, x, y, target, i);
   }
 }
 
 /**
  * Pixel (x, y) of tile `tile` by the fast path, with what `prepareFrame`
- * worked out (`frame.packed` not null): renderPixel's bytes, sooner. They go
- * to `target` at `i`, the pixel's own place when left out.
+ * worked out (`prepared.packed` not null): renderPixel's bytes, sooner. They
+ * go to `target` at `i`, the pixel's own place when left out.
  */
-export function renderPackedPixel(frame, tile, camera, x, y, target, i = (y * camera.width + x) * 4) {
+export function renderPackedPixel(prepared, tile, camera, x, y, target, i = (y * camera.width + x) * 4) {
   const d = camera.directionAt(x, y, _ray.direction);
-  const color = tracePrimary(frame.packed, camera.position, d.x, d.y, d.z, frame.candidates, frame.starts[tile], frame.starts[tile + 1]);
+  const color = tracePrimary(prepared.packed, camera.position, d.x, d.y, d.z, prepared.candidates, prepared.starts[tile], prepared.starts[tile + 1]);
   writePixel(target, i, color);
 }
 
