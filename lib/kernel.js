@@ -24,15 +24,34 @@ const MATERIAL = 11;
 /** Numbers per light: x y z, emission r g b, index of its shape (−1 for a point light). */
 const LIGHT = 7;
 
+/**
+ * Every number the kernel writes per pixel lives in one buffer of its own,
+ * `GUARD` empty bytes from either end. Workers are threads of one process,
+ * and in Chromium two workers' small buffers could lie side by side on one
+ * cache line: each write by one then stalled the other (false sharing), and
+ * two workers ran at half speed (docs/performance.md).
+ */
+const GUARD = 256; // more than a cache line and the neighbour the CPU fetches with it
+const scratch = new ArrayBuffer(4096);
+let scratchUsed = GUARD;
+
+/** `count` numbers of the scratch buffer. */
+function scratchNumbers(count) {
+  const numbers = new Float64Array(scratch, scratchUsed, count);
+  scratchUsed += count * Float64Array.BYTES_PER_ELEMENT;
+  if (scratchUsed > scratch.byteLength - GUARD) throw new Error('kernel.js: the scratch buffer is too small');
+  return numbers;
+}
+
 /** The deepest bounce a scene allows (Scene's maxDepth is 0–16), plus the primary ray. */
 const LEVELS = 17;
 /** The ray being traced at each bounce depth: origin xyz, direction xyz. */
-const rays = new Float64Array(LEVELS * 6);
+const rays = scratchNumbers(LEVELS * 6);
 /**
  * Colours: slot 0 is the pixel's; the bounce at depth d writes what its mirror
  * ray brings back at (d + 1)·6 and what its glass lets through at (d + 1)·6 + 3.
  */
-const colors = new Float64Array((LEVELS + 1) * 6);
+const colors = scratchNumbers((LEVELS + 1) * 6);
 
 /**
  * A shadow ray toward a light meets nothing farther from the light than its
@@ -141,7 +160,7 @@ export function tracePrimary(k, origin, dx, dy, dz, candidates, from, to) {
  * surface from inside. Numbers pass between the steps here, not as arguments:
  * a double handed to a function the engine did not inline is boxed, per call.
  */
-const surface = new Float64Array(10);
+const surface = scratchNumbers(10);
 const P = 0, N = 3, D = 6, INSIDE = 9;
 
 /** trace(): the ray at `depth` in `rays`; its colour into `colors[out …]`. */
@@ -315,7 +334,7 @@ function hitBox(s, b, ox, oy, oz, dx, dy, dz, tMin) {
 }
 
 /** [tNear, tFar] of the box's slabs so far. */
-const slab = new Float64Array(2);
+const slab = scratchNumbers(2);
 
 /** Narrows `slab` by one axis' slab min…max; false when the ray misses it. */
 function clipSlab(min, max, o, d) {
