@@ -220,3 +220,16 @@ describe("the fast path's shadow-ray shortcut", () => {
     expect(nearLimit).toBeGreaterThan(200);
   });
 });
+
+describe('the fast path at the deepest bounce a scene allows', () => {
+  it('two facing mirrors and a glass ball at maxDepth 16: the same bytes as trace.js', () => {
+    const scene = new Scene({ background: [0.2, 0.4, 0.9], ambient: 0.1, maxDepth: 16 })
+      .add(new Plane([0, 0, -8], [0, 0, 1], { color: [0.9, 0.9, 0.9], reflection: 0.95 }))
+      .add(new Plane([0, 0, 8], [0, 0, -1], { color: [0.9, 0.8, 0.9], reflection: 0.95 }))
+      .add(new Sphere([0, 0, -4], 1.5, { color: [1, 0.4, 0.4], transparency: 0.8, reflection: 0.2, ior: 1.5 }))
+      .add(new PointLight([2, 5, 0]));
+    const cam = new Camera({ width: 24, height: 18, fov: 50 });
+    expect(prepareFrame(scene, cam).packed).not.toBeNull();
+    expect(firstDifference(render(scene, cam), pixelByPixel(scene, cam))).toBe(-1);
+  });
+});
