@@ -78,6 +78,18 @@ test.beforeAll(async () => {
   origin = `http://127.0.0.1:${server.address().port}`;
 });
 
+/** Two render workers started from inside the built file (the page's `RT`): did they give render()'s bytes, with no fallback? */
+function twoWorkersRender(page) {
+  return page.evaluate(async () => {
+    const scene = RT.classScene(), camera = new RT.Camera({ width: 40, height: 30 });
+    const renderer = new RT.ParallelRenderer({ workers: 2 });
+    const frame = await renderer.render(scene, camera);
+    const one = RT.render(scene, camera);
+    renderer.terminate();
+    return { problem: renderer.problem && String(renderer.problem.message ?? renderer.problem), same: frame.every((v, i) => v === one[i]) };
+  });
+}
+
 test.afterAll(async () => {
   await new Promise((resolve) => server?.close(resolve));
   if (folder) rmSync(folder, { recursive: true, force: true });
@@ -119,15 +131,7 @@ for (const how of ['http', 'file']) {
     await expect(inspector).toContainText('Pixel: 31,22;');
 
     // The render worker is inside the one file too: two workers make render()'s bytes, with no fallback.
-    const workers = await page.evaluate(async () => {
-      const scene = RT.classScene(), camera = new RT.Camera({ width: 40, height: 30 });
-      const renderer = new RT.ParallelRenderer({ workers: 2 });
-      const frame = await renderer.render(scene, camera);
-      const one = RT.render(scene, camera);
-      renderer.terminate();
-      return { problem: renderer.problem && String(renderer.problem.message ?? renderer.problem), same: frame.every((v, i) => v === one[i]) };
-    });
-    expect(workers).toEqual({ problem: null, same: true });
+    expect(await twoWorkersRender(page)).toEqual({ problem: null, same: true });
 
     const base = how === 'http' ? origin : pathToFileURL(folder).href;
     expect(requests.filter((url) => !url.startsWith(base) && !url.startsWith('data:') && !url.startsWith('blob:'))).toEqual([]);
@@ -145,15 +149,7 @@ test('as an ES module (import map: p5 → p5.esm.js): the starter traces the sam
   await expectCanvasScreenshot(canvas, 'web-editor-starter.png'); // the classic build's picture, above
   await clickPixel(canvas, 30, 22);
   await expect(page.locator('[data-inspector]')).toContainText(/Pixel: 30,22; H: -?\d+\.\d; V: -?\d+\.\d/);
-  const workers = await page.evaluate(async () => {
-    const scene = RT.classScene(), camera = new RT.Camera({ width: 40, height: 30 });
-    const renderer = new RT.ParallelRenderer({ workers: 2 });
-    const frame = await renderer.render(scene, camera);
-    const one = RT.render(scene, camera);
-    renderer.terminate();
-    return { problem: renderer.problem && String(renderer.problem.message ?? renderer.problem), same: frame.every((v, i) => v === one[i]) };
-  });
-  expect(workers).toEqual({ problem: null, same: true });
+  expect(await twoWorkersRender(page)).toEqual({ problem: null, same: true });
   expect(requests.filter((url) => !url.startsWith(origin) && !url.startsWith('data:') && !url.startsWith('blob:'))).toEqual([]);
   expect(errors).toEqual([]);
 });
