@@ -19,10 +19,12 @@ const SPHERE = 0, PLANE = 1, BOX = 2;
 
 /** Numbers per shape in `shapes`: sphere cx cy cz radius; plane px py pz nx ny nz; box min xyz, max xyz. */
 const SHAPE = 6;
-/** Numbers per material: r g b, emission r g b, reflection, transparency, ior, specular, shininess. */
+/** Numbers per material, and where each lies among them: r g b, emission r g b, reflection, transparency, ior, specular, shininess. */
 const MATERIAL = 11;
-/** Numbers per light: x y z, emission r g b, index of its shape (−1 for a point light). */
+const EMISSION = 3, REFLECTION = 6, TRANSPARENCY = 7, IOR = 8, SPECULAR = 9, SHININESS = 10;
+/** Numbers per light: x y z, emission r g b (at EMISSION), the index of its shape (−1 for a point light). */
 const LIGHT = 7;
+const LIGHT_SHAPE = 6;
 
 /**
  * Every number the kernel writes per pixel lives in one buffer of its own,
@@ -179,7 +181,7 @@ function traceRay(k, depth, out, candidates, from, to) {
   surface[D] = dx; surface[D + 1] = dy; surface[D + 2] = dz;
   surfaceAt(k, object);
   lightPoint(k, object, out);
-  const m = object * MATERIAL, reflection = k.materials[m + 6], transparency = k.materials[m + 7];
+  const m = object * MATERIAL, reflection = k.materials[m + REFLECTION], transparency = k.materials[m + TRANSPARENCY];
   if (depth < k.maxDepth && (reflection > 0 || transparency > 0)) mirrorAndGlass(k, object, depth, out);
 }
 
@@ -200,7 +202,7 @@ function mirrorAndGlass(k, object, depth, out) {
   const Px = surface[P], Py = surface[P + 1], Pz = surface[P + 2]; // read before the rays below overwrite them
   const Nx = surface[N], Ny = surface[N + 1], Nz = surface[N + 2];
   const dx = surface[D], dy = surface[D + 1], dz = surface[D + 2];
-  const m = object * MATERIAL, reflection = k.materials[m + 6], transparency = k.materials[m + 7], ior = k.materials[m + 8];
+  const m = object * MATERIAL, reflection = k.materials[m + REFLECTION], transparency = k.materials[m + TRANSPARENCY], ior = k.materials[m + IOR];
   const cosi = -(dx * Nx + dy * Ny + dz * Nz);
   const eta = surface[INSIDE] === 1 ? ior : 1 / ior;
   let refracts = false, Tx = 0, Ty = 0, Tz = 0;
@@ -249,9 +251,10 @@ function lightPoint(k, object, out) {
   const Nx = surface[N], Ny = surface[N + 1], Nz = surface[N + 2];
   const mat = k.materials, m = object * MATERIAL, ambient = k.ambient, lights = k.lights, bias = k.bias;
   const red = mat[m], green = mat[m + 1], blue = mat[m + 2];
-  let cr = mat[m + 3] + ambient * red, cg = mat[m + 4] + ambient * green, cb = mat[m + 5] + ambient * blue;
+  const e = m + EMISSION;
+  let cr = mat[e] + ambient * red, cg = mat[e + 1] + ambient * green, cb = mat[e + 2] + ambient * blue;
   for (let l = 0; l < k.lightCount * LIGHT; l += LIGHT) {
-    const lightObject = lights[l + 6];
+    const lightObject = lights[l + LIGHT_SHAPE];
     if (lightObject === object) continue; // a light does not light itself
     const x = lights[l] - Px, y = lights[l + 1] - Py, z = lights[l + 2] - Pz;
     const distance = Math.sqrt(x * x + y * y + z * z), inverse = 1 / distance;
@@ -263,22 +266,23 @@ function lightPoint(k, object, out) {
       : 1;
     if (transmission === 0) continue;
     const diffuse = cos * transmission;
-    const highlight = k.specular ? specular(mat[m + 9], mat[m + 10], Lx, Ly, Lz) * transmission : 0;
-    cr += lights[l + 3] * (red * diffuse + highlight);
-    cg += lights[l + 4] * (green * diffuse + highlight);
-    cb += lights[l + 5] * (blue * diffuse + highlight);
+    const highlight = k.specular ? specular(mat[m + SPECULAR], mat[m + SHININESS], Lx, Ly, Lz) * transmission : 0;
+    const glow = l + EMISSION; // the light's colour
+    cr += lights[glow] * (red * diffuse + highlight);
+    cg += lights[glow + 1] * (green * diffuse + highlight);
+    cb += lights[glow + 2] * (blue * diffuse + highlight);
   }
   colors[out] = cr; colors[out + 1] = cg; colors[out + 2] = cb;
 }
 
 /** How much light gets through from the shadow ray's origin to `reach` along it toward light `light` (1 clear, 0 blocked). */
 function shadowRay(k, ox, oy, oz, dx, dy, dz, reach, light) {
-  const lightObject = k.lights[light * LIGHT + 6], apart = k.apart, row = light * k.count;
+  const lightObject = k.lights[light * LIGHT + LIGHT_SHAPE], apart = k.apart, row = light * k.count;
   const beyond = outOfReach(k, reach);
   let transmission = 1;
   for (let i = 0; i < k.count; i++) {
     if (i === lightObject || apart[row + i] > beyond || k.hit(k, i, ox, oy, oz, dx, dy, dz, k.epsilon) >= reach) continue;
-    transmission *= k.materials[i * MATERIAL + 7];
+    transmission *= k.materials[i * MATERIAL + TRANSPARENCY];
     if (transmission === 0) return 0;
   }
   return transmission;
