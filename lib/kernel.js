@@ -9,7 +9,8 @@
  * lesson's readable version and the one the inspector runs; a change to the
  * lighting goes into both. Full shading of the class scene is 1.17–1.2× faster
  * this way (docs/performance.md). Shapes of other classes (a subclass with its
- * own `hit`) are not packed: `packScene` says no and render() uses trace.js.
+ * own `hit`), or a shape added twice, are not packed: `packScene` says no
+ * and render() uses trace.js.
  */
 import { Sphere, TANGENT } from './shapes/sphere.js';
 import { Plane, PARALLEL } from './shapes/plane.js';
@@ -137,10 +138,15 @@ export class PackedScene {
   }
 }
 
-/** The scene packed, or null when a shape is not exactly a Sphere, Plane or Box (trace.js handles those). */
+/**
+ * The scene packed, or null for trace.js to handle: when a shape is not
+ * exactly a Sphere, Plane or Box, or when one shape was added twice (trace.js
+ * tells shapes apart by identity, the kernel by their place in the list).
+ */
 export function packScene(scene) {
-  const known = scene.objects.every((o) => o.constructor === Sphere || o.constructor === Plane || o.constructor === Box);
-  return known ? new PackedScene(scene) : null;
+  const { objects } = scene;
+  const known = objects.every((o) => o.constructor === Sphere || o.constructor === Plane || o.constructor === Box);
+  return known && new Set(objects).size === objects.length ? new PackedScene(scene) : null;
 }
 
 /**

@@ -233,3 +233,16 @@ describe('the fast path at the deepest bounce a scene allows', () => {
     expect(firstDifference(render(scene, cam), pixelByPixel(scene, cam))).toBe(-1);
   });
 });
+
+describe('a scene with the same shape added twice (a slip in a sketch)', () => {
+  it('gives trace.js\'s bytes: a glowing ball added twice still does not light itself', () => {
+    const lamp = new Sphere([0, 2, -10], 1.5, { color: [0.5, 0.5, 0.5], emission: [1, 0.9, 0.6] });
+    const scene = new Scene({ background: [0.1, 0.1, 0.2], ambient: 0.05 })
+      .add(lamp)
+      .add(new Sphere([0, -1001, -10], 1000, { color: [0.8, 0.8, 0.8] }))
+      .add(lamp) // again
+      .add(new PointLight([5, 8, 0]));
+    const cam = new Camera({ width: 32, height: 24 });
+    expect(firstDifference(render(scene, cam), pixelByPixel(scene, cam))).toBe(-1);
+  });
+});
