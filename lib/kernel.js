@@ -8,9 +8,9 @@
  * scenes (spheres, planes, boxes, lights, mirrors, glass). trace.js stays the
  * lesson's readable version and the one the inspector runs; a change to the
  * lighting goes into both. Full shading of the class scene is 1.17–1.2× faster
- * this way (docs/performance.md). Shapes of other classes (a subclass with its
- * own `hit`), or a shape added twice, are not packed: `packScene` says no
- * and render() uses trace.js.
+ * this way (docs/performance.md). A shape with a `hit` or `normalAt` of its
+ * own (a subclass, or a method replaced), or a shape added twice, is not
+ * packed: `packScene` says no and render() uses trace.js.
  */
 import { Sphere, TANGENT } from './shapes/sphere.js';
 import { Plane, PARALLEL } from './shapes/plane.js';
@@ -138,15 +138,24 @@ export class PackedScene {
   }
 }
 
+/** The shape classes the kernel knows, with the `hit` and `normalAt` it does in numbers. */
+const KNOWN = new Map([Sphere, Plane, Box].map((Shape) => [Shape, { hit: Shape.prototype.hit, normalAt: Shape.prototype.normalAt }]));
+
+/** True when trace.js would ask this shape exactly what the kernel computes. */
+function plain(shape) {
+  const known = KNOWN.get(shape.constructor);
+  return known !== undefined && shape.hit === known.hit && shape.normalAt === known.normalAt;
+}
+
 /**
- * The scene packed, or null for trace.js to handle: when a shape is not
- * exactly a Sphere, Plane or Box, or when one shape was added twice (trace.js
+ * The scene packed, or null for trace.js to handle: when a shape is not a
+ * plain Sphere, Plane or Box (a subclass, or a `hit` or `normalAt` of its
+ * own, on the shape or its class), or when one shape was added twice (trace.js
  * tells shapes apart by identity, the kernel by their place in the list).
  */
 export function packScene(scene) {
   const { objects } = scene;
-  const known = objects.every((o) => o.constructor === Sphere || o.constructor === Plane || o.constructor === Box);
-  return known && new Set(objects).size === objects.length ? new PackedScene(scene) : null;
+  return objects.every(plain) && new Set(objects).size === objects.length ? new PackedScene(scene) : null;
 }
 
 /**

@@ -173,6 +173,26 @@ describe('a shape of its own class (a subclass with its own hit test)', () => {
     expect([...hidden.subarray(middle, middle + 3)]).toEqual([0, 0, 255]);
     expect(firstDifference(seen, pixelByPixel(scene, new Camera({ width: 8, height: 8, position: [1, 0, 0] })))).toBe(-1);
   });
+
+  it('nor is a plain shape whose hit test a sketch replaced, on the shape or on its class', () => {
+    const ball = new Sphere([0, 0, -10], 3, { color: [1, 0, 0], emission: [1, 0, 0] });
+    const scene = new Scene({ background: [0, 0, 1] }).add(ball);
+    const camera = new Camera({ width: 8, height: 8 });
+    expect(packScene(scene)).not.toBeNull();
+    ball.hit = () => Infinity; // the ball no longer meets any ray
+    expect(packScene(scene)).toBeNull();
+    expect(render(scene, camera).every((v, i) => v === [0, 0, 255, 255][i % 4])).toBe(true); // every pixel the background's blue
+    expect(firstDifference(render(scene, camera), pixelByPixel(scene, camera))).toBe(-1);
+    delete ball.hit;
+    const original = Sphere.prototype.normalAt;
+    try {
+      Sphere.prototype.normalAt = function (point, out) { return original.call(this, point, out); }; // the same, but not the kernel's to know
+      expect(packScene(scene)).toBeNull();
+    } finally {
+      Sphere.prototype.normalAt = original;
+    }
+    expect(packScene(scene)).not.toBeNull();
+  });
 });
 
 describe('the fast path on exact edges and corners, where ties decide', () => {
