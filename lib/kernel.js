@@ -12,8 +12,8 @@
  * own (a subclass, or a method replaced), or a shape added twice, is not
  * packed: `packScene` says no and render() uses trace.js.
  */
-import { Sphere, TANGENT } from './shapes/sphere.js';
-import { Plane, PARALLEL } from './shapes/plane.js';
+import { Sphere, sphereHit } from './shapes/sphere.js';
+import { Plane, planeHit } from './shapes/plane.js';
 import { Box } from './shapes/box.js';
 
 const SPHERE = 0, PLANE = 1, BOX = 2;
@@ -320,27 +320,15 @@ function hitShape(k, i, ox, oy, oz, dx, dy, dz, tMin) {
   return hitBox(s, b, ox, oy, oz, dx, dy, dz, tMin);
 }
 
-/** Sphere#hit: the geometric route (L, tca, d², thc). */
+/** Sphere #i's hit (the geometric route, shared with Sphere#hit). */
 function hitSphere(k, i, ox, oy, oz, dx, dy, dz, tMin) {
-  const s = k.shapes, b = i * SHAPE, radius = s[b + 3], r2 = radius * radius;
-  const Lx = s[b] - ox, Ly = s[b + 1] - oy, Lz = s[b + 2] - oz;
-  const tca = Lx * dx + Ly * dy + Lz * dz;
-  const LL = Lx * Lx + Ly * Ly + Lz * Lz;
-  const gap = r2 - (LL - tca * tca); // r² − d²
-  const band = TANGENT * (r2 + LL);
-  if (gap < -band) return Infinity;
-  const thc = gap <= band ? 0 : Math.sqrt(gap);
-  if (tca - thc > tMin) return tca - thc;
-  return tca + thc > tMin ? tca + thc : Infinity;
+  const s = k.shapes, b = i * SHAPE;
+  return sphereHit(s[b], s[b + 1], s[b + 2], s[b + 3], ox, oy, oz, dx, dy, dz, tMin);
 }
 
-/** Plane#hit. */
+/** Plane #i's hit (shared with Plane#hit). */
 function hitPlane(s, b, ox, oy, oz, dx, dy, dz, tMin) {
-  const nx = s[b + 3], ny = s[b + 4], nz = s[b + 5];
-  const denom = nx * dx + ny * dy + nz * dz;
-  if (Math.abs(denom) < PARALLEL) return Infinity;
-  const t = ((s[b] - ox) * nx + (s[b + 1] - oy) * ny + (s[b + 2] - oz) * nz) / denom;
-  return t > tMin ? t : Infinity;
+  return planeHit(s[b], s[b + 1], s[b + 2], s[b + 3], s[b + 4], s[b + 5], ox, oy, oz, dx, dy, dz, tMin);
 }
 
 /** Box#hit: the slabs, x then y then z. */

@@ -6,7 +6,7 @@ import { shapeOptions } from '../material.js';
 import { EPSILON } from '../constants.js';
 
 /** |n·d| below this: the ray runs along the plane and misses it. */
-export const PARALLEL = 1e-12;
+const PARALLEL = 1e-12;
 
 export class Plane {
   /**
@@ -29,14 +29,19 @@ export class Plane {
   /** t where the ray meets the plane (t > tMin), or Infinity; a ray along the plane misses. */
   hit(ray, tMin = EPSILON) {
     const n = this.normal, d = ray.direction, o = ray.origin, p = this.point;
-    const denom = n.x * d.x + n.y * d.y + n.z * d.z;
-    if (Math.abs(denom) < PARALLEL) return Infinity;
-    const t = ((p.x - o.x) * n.x + (p.y - o.y) * n.y + (p.z - o.z) * n.z) / denom;
-    return t > tMin ? t : Infinity;
+    return planeHit(p.x, p.y, p.z, n.x, n.y, n.z, o.x, o.y, o.z, d.x, d.y, d.z, tMin);
   }
 
   /** The plane's normal (the same everywhere). */
   normalAt(point, out = new Vec3()) {
     return copy(out, this.normal);
   }
+}
+
+/** The ray–plane test in numbers only (Plane#hit, and lib/kernel.js): t > tMin where the ray meets the plane, or Infinity. */
+export function planeHit(px, py, pz, nx, ny, nz, ox, oy, oz, dx, dy, dz, tMin) {
+  const denom = nx * dx + ny * dy + nz * dz;
+  if (Math.abs(denom) < PARALLEL) return Infinity;
+  const t = ((px - ox) * nx + (py - oy) * ny + (pz - oz) * nz) / denom;
+  return t > tMin ? t : Infinity;
 }

@@ -15,7 +15,7 @@ export { EPSILON };
  * r² + L·L: the size of the terms whose difference it is, so rounding never
  * makes the two routes disagree, for a tiny far sphere as for a huge one.
  */
-export const TANGENT = 1e-12;
+const TANGENT = 1e-12;
 
 export class Sphere {
   /**
@@ -42,22 +42,33 @@ export class Sphere {
    * written, because the renderer calls it for every ray and every sphere.
    */
   hit(ray, tMin = EPSILON) {
-    const o = ray.origin, d = ray.direction, c = this.center, r2 = this.radius * this.radius;
-    const Lx = c.x - o.x, Ly = c.y - o.y, Lz = c.z - o.z;
-    const tca = Lx * d.x + Ly * d.y + Lz * d.z;
-    const LL = Lx * Lx + Ly * Ly + Lz * Lz;
-    const gap = r2 - (LL - tca * tca); // r² − d²
-    const band = TANGENT * (r2 + LL);
-    if (gap < -band) return Infinity; // d > r: a miss
-    const thc = gap <= band ? 0 : Math.sqrt(gap);
-    if (tca - thc > tMin) return tca - thc;
-    return tca + thc > tMin ? tca + thc : Infinity;
+    const o = ray.origin, d = ray.direction, c = this.center;
+    return sphereHit(c.x, c.y, c.z, this.radius, o.x, o.y, o.z, d.x, d.y, d.z, tMin);
   }
 
   /** The outward unit normal at a surface point. */
   normalAt(point, out = new Vec3()) {
     return normalize(out, sub(out, point, this.center));
   }
+}
+
+/**
+ * The ray–sphere test in numbers only (Sphere#hit, and render()'s fast path
+ * over packed scenes, lib/kernel.js): the geometric route, L = Sc − Ro,
+ * tca = L·Rd, d² = L·L − tca², thc = √(r² − d²); the smallest t = tca ∓ thc
+ * greater than tMin, or Infinity.
+ */
+export function sphereHit(cx, cy, cz, radius, ox, oy, oz, dx, dy, dz, tMin) {
+  const r2 = radius * radius;
+  const Lx = cx - ox, Ly = cy - oy, Lz = cz - oz;
+  const tca = Lx * dx + Ly * dy + Lz * dz;
+  const LL = Lx * Lx + Ly * Ly + Lz * Lz;
+  const gap = r2 - (LL - tca * tca); // r² − d²
+  const band = TANGENT * (r2 + LL);
+  if (gap < -band) return Infinity; // d > r: a miss
+  const thc = gap <= band ? 0 : Math.sqrt(gap);
+  if (tca - thc > tMin) return tca - thc;
+  return tca + thc > tMin ? tca + thc : Infinity;
 }
 
 /**
