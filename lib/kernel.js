@@ -159,14 +159,17 @@ export function packScene(scene) {
 }
 
 /**
- * The colour of the primary ray from `origin` along (dx, dy, dz), tested first
- * against the shapes `candidates[from … to)` (indices, in scene order):
- * trace(scene, ray, color, undefined, 0, those shapes) in numbers.
+ * The colour of the primary ray from `origin` along `direction` (Vec3s),
+ * tested first against the shapes `candidates[from … to)` (indices, in scene
+ * order): trace(scene, ray, color, undefined, 0, those shapes) in numbers.
+ * The direction comes as its Vec3, not as three numbers: V8 boxes each double
+ * passed to a call it did not inline (one per number per pixel), and whether it
+ * inlines this one depends on how the code was bundled (docs/performance.md).
  * @returns {Float64Array} [r, g, b] in its first three entries (reused: read it before the next call)
  */
-export function tracePrimary(k, origin, dx, dy, dz, candidates, from, to) {
+export function tracePrimary(k, origin, direction, candidates, from, to) {
   rays[0] = origin.x; rays[1] = origin.y; rays[2] = origin.z;
-  rays[3] = dx; rays[4] = dy; rays[5] = dz;
+  rays[3] = direction.x; rays[4] = direction.y; rays[5] = direction.z;
   traceRay(k, 0, 0, candidates, from, to);
   return colors;
 }

@@ -108,7 +108,7 @@ function renderPackedTile(prepared, tile, camera, target, x0, y0, x1, y1) {
  */
 export function renderPackedPixel(prepared, tile, camera, x, y, target, i = (y * camera.width + x) * 4) {
   const d = camera.directionAt(x, y, _ray.direction);
-  const color = tracePrimary(prepared.packed, camera.position, d.x, d.y, d.z, prepared.candidates, prepared.starts[tile], prepared.starts[tile + 1]);
+  const color = tracePrimary(prepared.packed, camera.position, d, prepared.candidates, prepared.starts[tile], prepared.starts[tile + 1]);
   writePixel(target, i, color);
 }
 

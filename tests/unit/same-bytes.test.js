@@ -208,7 +208,7 @@ describe('the fast path on exact edges and corners, where ties decide', () => {
     ];
     for (const [origin, direction] of rays) {
       const expected = trace(scene, new Ray(origin, direction), [0, 0, 0]);
-      const color = tracePrimary(packed, new Vec3(...origin), ...direction, packed.all, 0, packed.count);
+      const color = tracePrimary(packed, new Vec3(...origin), new Vec3(...direction), packed.all, 0, packed.count);
       expect([...color.subarray(0, 3)], `from ${origin} along ${direction}`).toEqual(expected);
     }
   });
