@@ -16,7 +16,9 @@
  *   3. the class scene at 640×480 by ParallelRenderer with 1 and 2 workers
  *      (one shared frame, and rows transferred) and by render() on the main
  *      thread, side by side; each worker picture must equal render()'s byte
- *      for byte;
+ *      for byte; then, in a Chromium trace of a page of its own, the 2
+ *      workers' garbage collections per frame (a number boxed per pixel
+ *      shows as several a frame);
  *   4. a save while a sketch is open in the Vite dev server (a second server,
  *      on --save-port N or BENCH_SAVE_PORT, default the port + 1): the time
  *      from writing the sketch file to the first coarse preview, the sketch
@@ -216,7 +218,32 @@ async function workers(browser, base, errors) {
   await page.waitForFunction(() => window.bench?.workers);
   const result = await page.evaluate((options) => window.bench.workers(options), { runs: RUNS, warmup: WARMUP });
   await page.close();
+  result.garbage = await workerGarbage(browser, base, errors);
   return result;
+}
+
+/**
+ * The render workers' garbage collections while 2 of them render the class
+ * scene, from a Chromium trace of a page of its own (tracing slows the
+ * workers, so never during the timed runs): per frame, minor and major, and
+ * their time.
+ */
+async function workerGarbage(browser, base, errors) {
+  const page = await browser.newPage();
+  watch(page, errors);
+  await page.goto(`${base}${PAGE}?part=workers`);
+  await page.waitForFunction(() => window.bench?.workerGarbage);
+  await browser.startTracing(page, { categories: ['devtools.timeline', 'v8', '__metadata', 'blink.user_timing'] });
+  const { frames, warmup } = await page.evaluate(() => window.bench.workerGarbage());
+  const events = JSON.parse((await browser.stopTracing()).toString()).traceEvents ?? [];
+  await page.close();
+  const at = (name) => events.find((e) => e.name === name)?.ts;
+  const start = at('bench:garbage-start'), end = at('bench:garbage-end');
+  const workerThreads = new Set(events.filter((e) => e.ph === 'M' && e.name === 'thread_name' && e.args?.name === 'DedicatedWorker thread').map((e) => `${e.pid}:${e.tid}`));
+  const collections = events.filter((e) => e.ph === 'X' && (e.name === 'MinorGC' || e.name === 'MajorGC') && workerThreads.has(`${e.pid}:${e.tid}`) && e.ts >= start && e.ts < end);
+  const count = (name) => collections.filter((e) => e.name === name).length;
+  const milliseconds = collections.reduce((sum, e) => sum + (e.dur ?? 0) / 1000, 0);
+  return { frames, warmup, found: start !== undefined && end !== undefined, minor: count('MinorGC'), major: count('MajorGC'), ms: milliseconds };
 }
 
 /* ---------------- 4. a save: the file written → the first coarse preview ---------------- */
@@ -395,6 +422,9 @@ function reportWorkers(result) {
   const ratios = result.cases.slice(1).map((c) => median(c.times.map((t, i) => result.cases[0].times[i] / t)));
   console.log(`   median of per-round ratios: ${ratios.map((r, k) => `${result.cases[k + 1].name} ${r.toFixed(2)}×`).join('; ')}`);
   console.log("   ('first' = the first frame, workers just started)");
+  const g = result.garbage;
+  if (!g?.found) console.log('   garbage collections in the workers: not measured (the trace lacks the marks)');
+  else console.log(`   garbage collections in the 2 workers, ${g.frames} frames after ${g.warmup} (traced, untimed): ${(g.minor / g.frames).toFixed(1)} minor and ${(g.major / g.frames).toFixed(1)} major a frame, ${ms(g.ms / g.frames)} ms a frame (0 to 1 minor a frame: nothing allocated per pixel)`);
 }
 
 /* ---------------- 5. the 3D scene view ---------------- */

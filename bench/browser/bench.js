@@ -10,7 +10,9 @@
  *   the view traces on the page's thread alone (large frames go to workers otherwise).
  * ?part=workers: window.bench.workers() times ParallelRenderer with 1 and 2
  *   workers and render() on the main thread, side by side, and compares the
- *   pictures byte for byte.
+ *   pictures byte for byte; window.bench.workerGarbage() renders frames on 2
+ *   workers between two marks, for the driver to count the workers' garbage
+ *   collections in a trace.
  * ?part=animation: sketch 07's animated example (p.createAnimation in a
  *   320×240 tracer view, the class scene turning); window.bench.animation()
  *   plays it on the page's thread and on 2 workers, in turns, and counts the
@@ -206,6 +208,28 @@ async function workersPart({ runs = 7, warmup = 2 } = {}) {
   }
 }
 
+/**
+ * 2 workers (a shared frame where the page is isolated) rendering the class
+ * scene `frames` times back to back after `warmup` frames, between the marks
+ * bench:garbage-start and bench:garbage-end: the driver counts the workers'
+ * garbage collections between them in a Chromium trace. The fast path should
+ * allocate nothing per pixel; a number boxed per pixel shows here as several
+ * collections a frame.
+ */
+async function workerGarbage({ frames = 10, warmup = 10 } = {}) {
+  const scene = classScene(), camera = new Camera({ width: WIDTH, height: HEIGHT });
+  const two = new ParallelRenderer({ workers: 2 }).warm();
+  try {
+    for (let i = 0; i < warmup; i++) await two.render(scene, camera);
+    performance.mark('bench:garbage-start');
+    for (let i = 0; i < frames; i++) await two.render(scene, camera);
+    performance.mark('bench:garbage-end');
+    return { frames, warmup };
+  } finally {
+    two.terminate();
+  }
+}
+
 /* ---------------- the animated example ---------------- */
 
 const MOVIE = { width: 320, height: 240 }, SECONDS_PER_TURN = 12; // as in sketch 07
@@ -305,6 +329,7 @@ function animationPart() {
 
 if (part === 'workers') {
   bench.workers = workersPart;
+  bench.workerGarbage = workerGarbage;
   document.body.dataset.render = 'done';
 } else if (part === 'animation') {
   animationPart();
