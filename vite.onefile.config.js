@@ -45,26 +45,35 @@ function inlineStyle() {
 }
 
 /**
- * The classic script starts by checking for p5 2.x: without it, or after p5
- * 1.x, the page would only say "p5 is not defined" or "registerAddon is not a
- * function"; this says what to change.
+ * Both files start with a `// noprotect` line: the p5 web editor rewrites every
+ * .js file of a sketch without one so that each loop breaks out after 100 ms,
+ * and the tracer's loops (a whole frame, the homework check's picture) run
+ * longer on purpose: cut short, a picture would stop part-way without a word.
  */
-function needP5Two() {
-  const check = `if (typeof p5 !== 'function' || typeof p5.registerAddon !== 'function') {
-  throw new Error('raytracing-sketchbook.js needs p5.js 2.x loaded before it: put p5\\'s own <script> first' +
+const NOPROTECT = `// noprotect: the p5 web editor would otherwise rewrite every loop of this file to break out after 100 ms,
+// leaving pictures traced part-way. Keep this line.
+`;
+
+/**
+ * The classic script then checks for p5 (2.x, or 1.11 and later 1.x):
+ * without it, the page would only say "p5 is not defined"; this says what to change.
+ */
+function needP5() {
+  const check = `if (typeof p5 !== 'function' || (typeof p5.registerAddon !== 'function' && !/^1\\.(1[1-9]|[2-9]\\d)\\./.test(p5.VERSION))) {
+  throw new Error('raytracing-sketchbook.js needs p5.js 1.11 or 2.x loaded before it: put p5\\'s own <script> first' +
     (typeof p5 === 'function' ? ' (this page has p5 ' + p5.VERSION + ')' : ' (this page has no p5)'));
 }
 `;
   return {
-    name: 'need-p5-two',
+    name: 'need-p5',
     renderChunk(code, chunk, options) {
-      return options.format === 'iife' ? { code: check + code, map: null } : null;
+      return { code: NOPROTECT + (options.format === 'iife' ? check : '') + code, map: null };
     },
   };
 }
 
 export default defineConfig({
-  plugins: [inlineRenderWorker(), inlineStyle(), needP5Two()],
+  plugins: [inlineRenderWorker(), inlineStyle(), needP5()],
   worker: { format: 'iife' },
   build: {
     target: 'es2022',

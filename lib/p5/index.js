@@ -1,5 +1,5 @@
 /**
- * The p5 adapter of the Raytracing Sketchbook, a p5 2.x addon. Importing it
+ * The p5 adapter of the Raytracing Sketchbook, a p5 addon (2.x; 1.11 too). Importing it
  * registers the addon: every sketch then has the kit's factories as methods,
  *
  *   p.createTracerView({ scene, camera })   the traced picture, progressive, clickable
@@ -9,11 +9,11 @@
  * (the full list: FACTORIES in ./addon.js; in global mode the same names are
  * bare functions). The only part of lib/ that imports p5.
  */
-import p5 from 'p5';
 import { sketchbookAddon } from './addon.js';
+import { registerAddon } from './register.js';
 import './live-coding.js'; // mistakes shown on the page (data-error); a save's reload keeps the page's place
 
-p5.registerAddon(sketchbookAddon);
+registerAddon(sketchbookAddon); // p5.registerAddon on 2.x; on 1.x, p5.prototype and registerMethod
 
 export { sketchbookAddon, FACTORIES } from './addon.js';
 export { TracerView } from './tracer-view.js';

@@ -15,7 +15,7 @@
  * the old typed one. A page whose setup() failed (a mistake on the page)
  * keeps the place saved before it, for the reload that fixes it.
  */
-import p5 from 'p5';
+import { registerAddon } from './register.js';
 import { pageViews } from './page-state.js';
 
 const KEY = 'sketchbook:place:';
@@ -161,7 +161,7 @@ function install() {
       sessionStorage.setItem(storageKey(), JSON.stringify({ ...currentPlace(), made }));
     } catch { /* storage full or off: the next load starts fresh */ }
   });
-  p5.registerAddon((p5Class, fn, lifecycles) => {
+  registerAddon((p5Class, fn, lifecycles) => {
     lifecycles.postsetup = function () {
       const now = madeNow();
       if (saved) {
