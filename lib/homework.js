@@ -8,6 +8,8 @@
  *   checkRearLights(scene, camera)    // Task 2: two red lights side by side
  *
  * Both return `{ passed, checks: [{ label, passed, detail, skipped?, bonus? }] }`;
+ * their hints write code the way the page does: `{ prefix: 'RT.' }` gives
+ * `new RT.Sphere(…)`, as a global-mode sketch (the one-file build) writes it.
  * `passed` is true when every check that is not a bonus passed. A check that
  * needs an earlier one (say, the lights' order needs three lights) is
  * `skipped` (and not passed) until that one passes.
@@ -19,7 +21,7 @@ import { Ray } from './ray.js';
 import { nearestHit } from './trace.js';
 import { render } from './render.js';
 import { rgbToHsl } from './color.js';
-import { show } from './check.js';
+import { show, checkOptions } from './check.js';
 
 /** The picture the checks look at is at most this many pixels wide (smaller: faster). */
 const SAMPLE_MAX_WIDTH = 320;
@@ -48,17 +50,20 @@ export const SIGNAL_CHECKS = {
 /**
  * Task 1: three lights (emissive spheres) stacked vertically, red over
  * yellow over green, at about the same x and z, all in the camera's view.
+ * @param {object} [options]
+ * @param {string} [options.prefix] written before the library's names in hints: '' (default) or 'RT.'
  * @example
  * const { passed, checks } = checkTrafficSignal(classScene(), new Camera({ width: 64, height: 48 }));
  * // passed: false; checks: [{ label: 'Three lights', passed: false, detail: '…' }, …]
  */
-export function checkTrafficSignal(scene, camera) {
+export function checkTrafficSignal(scene, camera, options) {
   checkArguments(scene, camera);
+  const { prefix = '' } = checkOptions(options, ['prefix'], 'checkTrafficSignal');
   const lights = findLights(scene);
   const checks = [];
   const add = (check) => (checks.push(check), check.passed);
 
-  const three = add(threeLights(lights, scene));
+  const three = add(threeLights(lights, scene, prefix));
   const byColor = three ? oneOfEach(lights, SIGNAL) : null;
   const colors = add(three ? colorsCheck(lights, byColor) : waiting(SIGNAL_CHECKS.colors, 'three lights'));
   const stack = colors ? SIGNAL.map((name) => byColor[name]) : null;
@@ -70,10 +75,10 @@ export function checkTrafficSignal(scene, camera) {
   return result(checks);
 }
 
-function threeLights(lights, scene) {
+function threeLights(lights, scene, prefix) {
   const label = SIGNAL_CHECKS.three;
   if (lights.length === 3) return pass(label, `Three lights: ${listNames(lights)}.`);
-  if (lights.length === 0) return fail(label, `No lights yet. ${HOW_TO_LIGHT}${pointLightHint(scene)}`);
+  if (lights.length === 0) return fail(label, noLightsYet(scene, prefix));
   return fail(label, `Found ${count(lights.length, 'light')} (${listNames(lights)}); a traffic signal has 3: red, yellow and green.`);
 }
 
@@ -150,21 +155,24 @@ export const CAR_CHECKS = {
  * Task 2: two red lights side by side at the same height (same y, apart in
  * x, same z), both in the camera's view. Bonus: placed symmetrically about
  * the middle of the car's body (every shape that is not a light, a plane or
- * huge).
+ * huge). Options as for checkTrafficSignal.
+ * @param {object} [options]
+ * @param {string} [options.prefix] written before the library's names in hints: '' (default) or 'RT.'
  * @example
  * const scene = new Scene()
  *   .add(new Sphere([-1, 1, -10], 0.3, { color: [0, 0, 0], emission: [1, 0, 0] }))
  *   .add(new Sphere([1, 1, -10], 0.3, { color: [0, 0, 0], emission: [1, 0, 0] }));
  * checkRearLights(scene, new Camera({ width: 64, height: 48 })).checks.map((c) => c.passed);
  */
-export function checkRearLights(scene, camera) {
+export function checkRearLights(scene, camera, options) {
   checkArguments(scene, camera);
+  const { prefix = '' } = checkOptions(options, ['prefix'], 'checkRearLights');
   const lights = findLights(scene);
   const red = lights.filter((l) => l.color === 'red');
   const checks = [];
   const add = (check) => (checks.push(check), check.passed);
 
-  const two = add(twoRedLights(lights, red, scene));
+  const two = add(twoRedLights(lights, red, scene, prefix));
   const pair = two ? [...red].sort((a, b) => a.center.x - b.center.x).map((l, i) => ({ ...l, role: i ? 'right' : 'left' })) : null;
   add(two ? sameHeight(pair) : waiting(CAR_CHECKS.height, 'two red lights'));
   add(two ? sideBySide(pair) : waiting(CAR_CHECKS.side, 'two red lights'));
@@ -173,10 +181,10 @@ export function checkRearLights(scene, camera) {
   return result(checks);
 }
 
-function twoRedLights(lights, red, scene) {
+function twoRedLights(lights, red, scene, prefix) {
   const label = CAR_CHECKS.two;
   if (red.length === 2) return pass(label, lights.length > 2 ? `Two red lights (and ${listNames(lights.filter((l) => l.color !== 'red'))}).` : 'Two red lights.');
-  if (lights.length === 0) return fail(label, `No lights yet. ${HOW_TO_LIGHT}${pointLightHint(scene)}`);
+  if (lights.length === 0) return fail(label, noLightsYet(scene, prefix));
   if (red.length === 0) return fail(label, `Your ${count(lights.length, 'light')} ${lights.length > 1 ? 'are' : 'is'} ${listNames(lights)}: rear lights are red, e.g. emission: [1, 0, 0].`);
   return fail(label, `Found ${count(red.length, 'red light')}; a car has 2 rear lights, one on each side.`);
 }
@@ -252,7 +260,11 @@ function carBody(scene) {
 
 /* ============================ shared checks =============================== */
 
-const HOW_TO_LIGHT = 'A light is a sphere that gives off light, e.g. new Sphere([0, 1, -10], 0.5, { color: [0, 0, 0], emission: [1, 0, 0] }) is a red one.';
+/** How to make a light, in the page's own names (`prefix`: '' or 'RT.'), and why a PointLight does not count. */
+function noLightsYet(scene, prefix) {
+  return `No lights yet. A light is a sphere that gives off light, e.g. new ${prefix}Sphere([0, 1, -10], 0.5, { color: [0, 0, 0], emission: [1, 0, 0] }) is a red one.` +
+    pointLightHint(scene, prefix);
+}
 
 /** Every light must show up in the picture, in its own colour. */
 function allVisible(seen, camera) {
@@ -357,9 +369,9 @@ function oneOfEach(lights, names) {
 }
 
 /** A hint for students who used a PointLight, which lights the scene but cannot be seen. */
-function pointLightHint(scene) {
+function pointLightHint(scene, prefix) {
   const colored = scene.lights.some((l) => l.source instanceof PointLight && lightColor(l.emission) !== 'white');
-  return colored ? ' (A PointLight cannot be seen in the picture: use a sphere with an emission.)' : '';
+  return colored ? ` (A ${prefix}PointLight cannot be seen in the picture: use a sphere with an emission.)` : '';
 }
 
 function checkArguments(scene, camera) {

@@ -26,3 +26,4 @@ export { sceneToJSON, sceneFromJSON, sceneToCode } from './serialize.js';
 // The class activity and the homework self-checks.
 export { pinkPixelVerdict, answerText, readAnswerLine } from './activity.js';
 export { checkTrafficSignal, checkRearLights, solutionParameter } from './homework.js';
+export { trafficSignalScene, trafficSignalCamera, rearLightsScene, rearLightsCamera } from './homework-scenes.js';

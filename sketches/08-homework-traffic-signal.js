@@ -8,7 +8,7 @@
  * The teacher's answer: open this page with ?solution=1.
  */
 import p5 from 'p5';
-import { Scene, Sphere, Box, Plane, PointLight, Camera, checkTrafficSignal, solutionParameter } from '../lib/index.js';
+import { Sphere, trafficSignalScene, trafficSignalCamera, checkTrafficSignal, solutionParameter } from '../lib/index.js';
 import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
 
 /* ---------------------------- YOUR HOMEWORK ----------------------------
@@ -23,22 +23,14 @@ export function addLights(scene) {
 }
 /* ----------------------------------------------------------------------- */
 
-const WIDTH = 160, HEIGHT = 120; // traced pixels
-
-/** The street: a road, the pole, the signal's housing, the sun; then the lights. */
+/** The street (lib/homework-scenes.js: a road, the pole, the signal's housing, the sun); then the lights. */
 export function makeScene(addTheLights = addLights) {
-  const scene = new Scene({ background: [0.62, 0.78, 0.95], ambient: 0.2 });
-  scene.add(new Plane([0, 0, 0], [0, 1, 0], { color: [0.32, 0.33, 0.36], name: 'road' }));
-  scene.add(new Box([-0.15, 0, -16.65], [0.15, 3.4, -16.35], { color: [0.35, 0.36, 0.38], name: 'pole' }));
-  scene.add(new Box([-0.8, 3.4, -16.8], [0.8, 7.4, -16.2], { color: [0.15, 0.15, 0.16], name: 'housing' }));
-  scene.add(new PointLight([40, 200, 60], { intensity: 0.8, name: 'sun' }));
+  const scene = trafficSignalScene();
   addTheLights(scene);
   return scene;
 }
 
-export function makeCamera() {
-  return new Camera({ width: WIDTH, height: HEIGHT, fov: 35, position: [0, 1.6, 0], pitch: 7 });
-}
+export const makeCamera = trafficSignalCamera; // 160 × 120 pixels, looking up at the signal
 
 new p5((p) => {
   p.setup = async () => {

@@ -7,7 +7,7 @@
  * The teacher's answer: open this page with ?solution=1.
  */
 import p5 from 'p5';
-import { Scene, Sphere, Box, Plane, PointLight, Camera, checkRearLights, solutionParameter } from '../lib/index.js';
+import { Sphere, rearLightsScene, rearLightsCamera, checkRearLights, solutionParameter } from '../lib/index.js';
 import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
 
 /* ---------------------------- YOUR HOMEWORK ----------------------------
@@ -23,27 +23,14 @@ export function addLights(scene) {
 }
 /* ----------------------------------------------------------------------- */
 
-const WIDTH = 160, HEIGHT = 120; // traced pixels
-const PAINT = { color: [0.2, 0.42, 0.85], specular: 0.4 };
-const TYRE = { color: [0.08, 0.08, 0.09] };
-
-/** A road, a car seen from behind (body, cabin, rear window, plate, wheels), the sun; then the lights. */
+/** A road, a car seen from behind (lib/homework-scenes.js), the sun; then the lights. */
 export function makeScene(addTheLights = addLights) {
-  const scene = new Scene({ background: [0.62, 0.78, 0.95], ambient: 0.2 });
-  scene.add(new Plane([0, 0, 0], [0, 1, 0], { color: [0.32, 0.33, 0.36], name: 'road' }));
-  scene.add(new Box([-1, 0.3, -10.6], [1, 1, -6.6], { ...PAINT, name: 'body' }));
-  scene.add(new Box([-0.8, 1, -9.6], [0.8, 1.55, -7.3], { ...PAINT, name: 'cabin' }));
-  scene.add(new Box([-0.65, 1.08, -7.32], [0.65, 1.48, -7.26], { color: [0.1, 0.12, 0.16], specular: 0.8, name: 'rear window' }));
-  scene.add(new Box([-0.3, 0.42, -6.62], [0.3, 0.6, -6.56], { color: [0.95, 0.95, 0.9], name: 'number plate' }));
-  for (const x of [-0.92, 0.92]) for (const z of [-7.3, -9.9]) scene.add(new Sphere([x, 0.33, z], 0.33, { ...TYRE, name: 'wheel' }));
-  scene.add(new PointLight([40, 120, 120], { intensity: 0.8, name: 'sun' }));
+  const scene = rearLightsScene();
   addTheLights(scene);
   return scene;
 }
 
-export function makeCamera() {
-  return new Camera({ width: WIDTH, height: HEIGHT, position: [0, 1.4, 0], pitch: -5 });
-}
+export const makeCamera = rearLightsCamera; // 160 × 120 pixels, behind the car
 
 new p5((p) => {
   p.setup = async () => {

@@ -1,18 +1,20 @@
 /**
  * The homework pages' self-check: a "Check my scene" button under the
  * picture and the result of a check (lib/homework.js) as a list, ✓, ✗ or –
- * per check, in the student's words.
+ * per check, in the student's words. Its hints name the library's classes as
+ * the page does: `new RT.Sphere(…)` in a global-mode sketch of the one-file
+ * build, `new Sphere(…)` in a module.
  *
  *   p.createHomeworkCheck({ view, check: checkTrafficSignal, parent: 'check', problem });
  */
-import { element, resolveParent, sketchNode } from './dom.js';
+import { element, resolveParent, sketchNode, useStyle } from './dom.js';
 import { checkOptions } from '../check.js';
 
 /**
  * @param {import('p5').default} p the sketch
  * @param {object} options
  * @param {import('./tracer-view.js').TracerView} options.view whose scene and camera are checked
- * @param {(scene: object, camera: object) => { passed: boolean, checks: object[] }} options.check e.g. checkTrafficSignal
+ * @param {(scene: object, camera: object, options: { prefix: string }) => { passed: boolean, checks: object[] }} options.check e.g. checkTrafficSignal
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where the button and the result go; default the sketch's node
  * @param {string|null} [options.problem] a warning shown above the result (e.g. a bad ?solution= value), as plain text
  * @returns {{ button: HTMLButtonElement, results: HTMLElement, run: () => void, destroy: () => void }} `destroy()` (p.remove() calls it) takes them off the page
@@ -23,13 +25,19 @@ import { checkOptions } from '../check.js';
 export function createHomeworkCheck(p, options) {
   const { view, check, parent, problem = null } = checkOptions(options, ['view', 'check', 'parent', 'problem'], 'createHomeworkCheck');
   const host = resolveParent(parent, sketchNode(p));
+  useStyle(); // the list's marks and colours are in the kit's stylesheet (inside the one-file build too)
   const button = element('button', { type: 'button', class: 'rt-button' }, 'Check my scene');
   const results = element('div', { 'data-check-results': '' }, 'Press the button to check your scene against the task.');
   const warning = problem ? element('p', { class: 'hw-warning', role: 'alert' }, problem) : null;
   host.append(button, results, ...(warning ? [warning] : []));
-  const run = () => showCheck(results, check(view.scene, view.camera));
+  const run = () => showCheck(results, check(view.scene, view.camera, { prefix: libraryPrefix(p) }));
   button.addEventListener('click', run);
   return { button, results, run, destroy: () => { button.remove(); results.remove(); warning?.remove(); } };
+}
+
+/** 'RT.' in a global-mode sketch that has the one-file build's RT, else ''. */
+function libraryPrefix(p) {
+  return /** @type {any} */ (p)._isGlobal && typeof (/** @type {any} */ (globalThis).RT?.Sphere) === 'function' ? 'RT.' : '';
 }
 
 /**
