@@ -1,7 +1,7 @@
 // The homework self-checks: the reference solutions pass, the starters fail
 // with the right message, and each kind of mistake fails on its own check.
 import { describe, test, expect, vi } from 'vitest';
-import { Sphere, Camera, Scene } from '../../lib/index.js';
+import { Sphere, Camera, Scene, PointLight, sceneToJSON, trafficSignalScene, trafficSignalCamera, rearLightsScene, rearLightsCamera } from '../../lib/index.js';
 import { checkTrafficSignal, checkRearLights, lightColor, findLights, solutionParameter } from '../../lib/homework.js';
 
 // The sketches are p5 sketches; their scenes are plain library code. Without
@@ -182,6 +182,42 @@ describe('light colours', () => {
   test('findLights lists emissive spheres only', () => {
     const scene = new Scene().add(light([0, 0, -5], RED)).add(new Sphere([1, 0, -5], 1, { color: [1, 0, 0] }));
     expect(findLights(scene).map((l) => l.color)).toEqual(['red']);
+  });
+});
+
+describe('the homework scenes in the library (a page without Node has them too)', () => {
+  test('are the sketches\' scenes and cameras, with no lights: both checks fail on the lights', () => {
+    expect(sceneToJSON(trafficSignalScene())).toEqual(sceneToJSON(signal.makeScene()));
+    expect(sceneToJSON(rearLightsScene())).toEqual(sceneToJSON(car.makeScene()));
+    expect(trafficSignalCamera()).toEqual(signal.makeCamera());
+    expect(rearLightsCamera()).toEqual(car.makeCamera());
+    expect(failedLabels(checkTrafficSignal(trafficSignalScene(), trafficSignalCamera()))).toEqual(['Three lights']);
+    expect(failedLabels(checkRearLights(rearLightsScene(), rearLightsCamera()))).toEqual(['Two red lights']);
+  });
+
+  test('with the reference solutions\' lights, both pass', () => {
+    const signalScene = trafficSignalScene(), carScene = rearLightsScene();
+    signalSolution.addLights(signalScene);
+    carSolution.addLights(carScene);
+    expect(checkTrafficSignal(signalScene, trafficSignalCamera()).passed).toBe(true);
+    expect(checkRearLights(carScene, rearLightsCamera()).passed).toBe(true);
+  });
+});
+
+describe('hints write code the way the page does', () => {
+  test('a module page: new Sphere(…); a global-mode page ({ prefix: "RT." }): new RT.Sphere(…)', () => {
+    expect(check(checkTrafficSignal(trafficSignalScene(), trafficSignalCamera()), 'Three lights').detail).toContain('e.g. new Sphere([0, 1, -10], 0.5,');
+    const global = check(checkTrafficSignal(trafficSignalScene(), trafficSignalCamera(), { prefix: 'RT.' }), 'Three lights').detail;
+    expect(global).toContain('e.g. new RT.Sphere([0, 1, -10], 0.5, { color: [0, 0, 0], emission: [1, 0, 0] }) is a red one.');
+    const withPointLight = rearLightsScene().add(new PointLight([0, 2, -5], { color: [1, 0, 0] }));
+    expect(check(checkRearLights(withPointLight, rearLightsCamera(), { prefix: 'RT.' }), 'Two red lights').detail)
+      .toMatch(/new RT\.Sphere\(.*\(A RT\.PointLight cannot be seen in the picture/);
+  });
+
+  test('an unknown option is refused by name', () => {
+    expect(() => checkTrafficSignal(trafficSignalScene(), trafficSignalCamera(), { prefx: 'RT.' }))
+      .toThrow('unknown checkTrafficSignal option "prefx" (did you mean "prefix"?)');
+    expect(() => checkRearLights(rearLightsScene(), rearLightsCamera(), { names: 'RT.' })).toThrow(/unknown checkRearLights option "names"/);
   });
 });
 
