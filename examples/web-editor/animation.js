@@ -1,0 +1,27 @@
+// The class's animated example: the yellow, blue and white spheres circle the
+// pink one, and every frame is traced whole; the line under the picture counts
+// the frames per second. Pause it, then click a pixel of the frame.
+// (Raytracing Sketchbook, global mode: draw() moves the animation on.)
+
+let movie;
+
+function setup() {
+  noCanvas(); // the tracer view brings its own canvas
+
+  const camera = new RT.Camera({ width: 160, height: 120 });
+  const view = createTracerView({ scene: RT.classSceneAt(0), camera });
+  const stats = createP('');
+  movie = createAnimation({ view, sceneAt: (t) => RT.classSceneAt(t), camera, stats });
+  movie.start('main'); // or 'workers': the frames shared out over Web Workers
+
+  const pause = createButton('Pause');
+  pause.mousePressed(() => {
+    movie.play(!movie.playing);
+    pause.html(movie.playing ? 'Pause' : 'Play');
+  });
+  createInspector({ view });
+}
+
+function draw() {
+  movie.tick(deltaTime); // milliseconds since the last frame
+}
