@@ -10,11 +10,11 @@ function setup() {
 
   const camera = new RT.Camera({ width: 160, height: 120 });
   const view = createTracerView({ scene: RT.classSceneAt(0), camera });
-  const stats = createP('');
+  const controls = createDiv().parent(view.figure); // under the picture
+  const pause = createButton('Pause').parent(controls).class('rt-button');
+  const stats = createSpan('').parent(controls); // frame, FPS, time
   movie = createAnimation({ view, sceneAt: (t) => RT.classSceneAt(t), camera, stats });
   movie.start('main'); // or 'workers': the frames shared out over Web Workers
-
-  const pause = createButton('Pause');
   pause.mousePressed(() => {
     movie.play(!movie.playing);
     pause.html(movie.playing ? 'Pause' : 'Play');

@@ -29,10 +29,11 @@ export function createHomeworkCheck(p, options) {
   const button = element('button', { type: 'button', class: 'rt-button' }, 'Check my scene');
   const results = element('div', { 'data-check-results': '' }, 'Press the button to check your scene against the task.');
   const warning = problem ? element('p', { class: 'hw-warning', role: 'alert' }, problem) : null;
-  host.append(button, results, ...(warning ? [warning] : []));
+  const box = element('div', { class: 'rt-check' }, button, results, warning); // a block of its own, whatever the page around it
+  host.append(box);
   const run = () => showCheck(results, check(view.scene, view.camera, { prefix: libraryPrefix(p) }));
   button.addEventListener('click', run);
-  return { button, results, run, destroy: () => { button.remove(); results.remove(); warning?.remove(); } };
+  return { button, results, run, destroy: () => box.remove() };
 }
 
 /** 'RT.' in a global-mode sketch that has the one-file build's RT, else ''. */

@@ -9,14 +9,13 @@
 // Then the gallery's page that teaches it shows those same files, and the
 // gallery and the lesson pages link into the API reference.
 import { test, expect } from '@playwright/test';
-import { execFileSync } from 'node:child_process';
 import { copyFileSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
-import { createServer } from 'node:http';
 import { tmpdir } from 'node:os';
-import { extname, join } from 'node:path';
+import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import vm from 'node:vm';
 import { clickPixel, expectCanvasScreenshot, waitForDone, watchConsole } from './helpers.js';
+import { buildOneFile, serveFolder } from './static-folder.js';
 
 // One build and one server for the file's tests, in order, in one worker.
 test.describe.configure({ mode: 'default' });
@@ -56,26 +55,15 @@ const MODULE_PAGE = `<!doctype html>
 
 test.beforeAll(async () => {
   folder = mkdtempSync(join(tmpdir(), 'rt-web-editor-'));
-  execFileSync(process.execPath, ['node_modules/vite/bin/vite.js', 'build', '-c', 'vite.onefile.config.js', '--outDir', folder, '--logLevel', 'error'], { stdio: 'pipe' });
+  buildOneFile(folder);
   copyFileSync('node_modules/p5/lib/p5.min.js', join(folder, 'p5.min.js'));
   for (const file of ['index.html', 'sketch.js']) copyFileSync(join('examples/web-editor', file), join(folder, file));
   writeFileSync(join(folder, 'no-p5.html'), '<!doctype html><meta charset="utf-8"><link rel="icon" href="data:,"><script src="raytracing-sketchbook.js"></script>');
   copyFileSync('node_modules/p5/lib/p5.esm.js', join(folder, 'p5.esm.js'));
   writeFileSync(join(folder, 'module.html'), MODULE_PAGE);
 
-  // A plain static server: the folder's files and nothing else.
-  const types = { '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8', '.mjs': 'text/javascript; charset=utf-8' };
-  server = createServer((req, res) => {
-    const name = new URL(req.url, 'http://x').pathname.slice(1) || 'index.html';
-    try {
-      const body = readFileSync(join(folder, name.replace(/[^\w.-]/g, '')));
-      res.writeHead(200, { 'Content-Type': types[extname(name)] ?? 'application/octet-stream' }).end(body);
-    } catch {
-      res.writeHead(404).end();
-    }
-  });
-  await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve)); // any free port: nobody else's
-  origin = `http://127.0.0.1:${server.address().port}`;
+  server = await serveFolder(folder);
+  origin = server.origin;
 });
 
 /** Two render workers started from inside the built file (the page's `RT`): did they give render()'s bytes, with no fallback? */
@@ -91,7 +79,7 @@ function twoWorkersRender(page) {
 }
 
 test.afterAll(async () => {
-  await new Promise((resolve) => server?.close(resolve));
+  await server?.close();
   if (folder) rmSync(folder, { recursive: true, force: true });
 });
 
