@@ -45,13 +45,16 @@ export default [
     files: ['examples/web-editor/*.js'],
     languageOptions: {
       sourceType: 'script',
-      globals: { RT: 'readonly', noCanvas: 'readonly', createTracerView: 'readonly', createInspector: 'readonly' },
+      globals: Object.fromEntries([
+        'RT', 'createCanvas', 'noCanvas', 'pixelDensity', 'background', 'deltaTime', 'createDiv', 'createSpan', 'createButton', // p5's
+        'createTracerView', 'createInspector', 'createSceneView', 'createAnimation', 'createHomeworkCheck', 'drawSideView', 'drawParabola', // the kit's
+      ].map((name) => [name, 'readonly'])),
     },
     rules: { 'no-unused-vars': ['error', { args: 'none', varsIgnorePattern: '^(setup|draw)$' }] },
   },
   {
     // The browser test of the one-file build runs code in the page, where RT is a global.
-    files: ['tests/e2e/web-editor.spec.js'],
-    languageOptions: { globals: { RT: 'readonly' } },
+    files: ['tests/e2e/web-editor.spec.js', 'tests/e2e/web-editor-starters.spec.js'],
+    languageOptions: { globals: { RT: 'readonly', p5: 'readonly' } },
   },
 ];

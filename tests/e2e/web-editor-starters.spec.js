@@ -104,7 +104,7 @@ test('the rewrite does what the editor does to a loop: a 100 ms time check that 
   expect(code).toContain('var _LP0 = Date.now();');
   expect(code).toMatch(/while \(true\) \{\s*if \(Date\.now\(\) - _LP0 > 100\) \{\s*window\.loopProtect\.hit\(3\);\s*break;\s*\}\s*n\+\+;\s*\}/);
   const hits = [];
-  const spin = new Function('window', `${code}; return spin();`); // eslint-disable-line no-new-func
+  const spin = new Function('window', `${code}; return spin();`);
   expect(spin({ loopProtect: { hit: (line) => hits.push(line) } })).toBeGreaterThan(0); // it ended: the check broke out
   expect(hits).toEqual([3]);
 });
