@@ -2,13 +2,16 @@
  * npm run build: the static site in dist/ (the gallery, the web editor's
  * steps, every sketch, the API reference in dist/api/), the one-file builds
  * beside it (dist/raytracing-sketchbook.js, a classic script defining RT, and
- * dist/raytracing-sketchbook.mjs) and the package's types (types/).
+ * dist/raytracing-sketchbook.mjs), the web editor's ready folder made of
+ * them (dist/web-editor/, and as dist/raytracing-sketchbook-web-editor.zip)
+ * and the package's types (types/).
  */
 import { spawnSync } from 'node:child_process';
 
 const steps = [
   ['the site', ['node_modules/vite/bin/vite.js', 'build']],
   ['the one-file builds', ['node_modules/vite/bin/vite.js', 'build', '-c', 'vite.onefile.config.js']],
+  ['the web editor\'s ready folder', ['scripts/ready-folder.js']],
   ['the types', ['scripts/types.js']],
 ];
 for (const [what, args] of steps) {

@@ -5,7 +5,8 @@
  *   (`<!-- text of examples/web-editor/sketch.js -->`), escaped, so what the
  *   page tells a teacher to paste is the file the browser tests run;
  * - oneFileInDev: the dev server answers /raytracing-sketchbook.js and .mjs
- *   with the one-file builds (npm run build writes them into dist/);
+ *   with the one-file builds, and the web editor's ready folder as its .zip
+ *   (npm run build writes them into dist/);
  * - apiReference: /api/ is the API reference, generated from the JSDoc;
  * - apiLine: under each lesson page, "API:" and the names its sketch uses,
  *   linked into the reference;
@@ -16,6 +17,7 @@ import { readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { build } from 'vite';
 import { apiReferenceHTML, namesUsedBy, apiLineHTML } from './api-reference.js';
+import { ZIP_NAME, readyFolderZip } from './ready-folder.js';
 
 const escapeHTML = (text) => text.replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
 
@@ -40,9 +42,13 @@ export function oneFileInDev() {
       server.watcher.on('change', (file) => { if (file.includes('/lib/')) made = null; });
       server.middlewares.use(async (req, res, next) => {
         const name = req.url.split('?')[0].replace(/^\//, '');
-        if (name !== 'raytracing-sketchbook.js' && name !== 'raytracing-sketchbook.mjs') return next();
+        if (name !== 'raytracing-sketchbook.js' && name !== 'raytracing-sketchbook.mjs' && name !== ZIP_NAME) return next();
         try {
           const files = await make();
+          if (name === ZIP_NAME) {
+            res.setHeader('Content-Type', 'application/zip');
+            return res.end(readyFolderZip(files.get('raytracing-sketchbook.js')));
+          }
           res.setHeader('Content-Type', 'text/javascript; charset=utf-8');
           res.end(files.get(name));
         } catch (error) {

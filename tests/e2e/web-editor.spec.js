@@ -15,7 +15,8 @@ import { join } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import vm from 'node:vm';
 import { clickPixel, expectCanvasScreenshot, waitForDone, watchConsole } from './helpers.js';
-import { buildOneFile, serveFolder } from './static-folder.js';
+import { buildOneFile, readStoredZip, serveFolder } from './static-folder.js';
+import { FOLDER, ZIP_NAME, writeReadyFolder } from '../../scripts/ready-folder.js';
 
 // One build and one server for the file's tests, in order, in one worker.
 test.describe.configure({ mode: 'default' });
@@ -61,6 +62,7 @@ test.beforeAll(async () => {
   writeFileSync(join(folder, 'no-p5.html'), '<!doctype html><meta charset="utf-8"><link rel="icon" href="data:,"><script src="raytracing-sketchbook.js"></script>');
   copyFileSync('node_modules/p5/lib/p5.esm.js', join(folder, 'p5.esm.js'));
   writeFileSync(join(folder, 'module.html'), MODULE_PAGE);
+  writeReadyFolder(folder); // what npm run build writes after the one-file builds: web-editor/ and its .zip
 
   server = await serveFolder(folder);
   origin = server.origin;
@@ -127,6 +129,25 @@ for (const how of ['http', 'file']) {
   });
 }
 
+test('the ready folder (npm run build\'s dist/web-editor/), opened from file:// by double-click, traces and inspects; the .zip holds it', async ({ page }) => {
+  const ready = join(folder, FOLDER);
+  const files = ['index.html', 'sketch.js', 'p5.min.js', 'raytracing-sketchbook.js'];
+  const zipped = readStoredZip(readFileSync(join(folder, ZIP_NAME)));
+  expect(zipped.map((f) => f.name)).toEqual(files.map((name) => `raytracing-sketchbook/${name}`));
+  zipped.forEach((f, i) => expect(Buffer.compare(f.data, readFileSync(join(ready, files[i]))), f.name).toBe(0));
+  expect(readFileSync(join(ready, 'sketch.js'), 'utf8')).toBe(readFileSync('examples/web-editor/sketch.js', 'utf8'));
+
+  const errors = watchConsole(page);
+  await page.goto(pathToFileURL(join(ready, 'index.html')).href);
+  await waitForDone(page);
+  const canvas = page.locator('[data-tracer]');
+  await expectCanvasScreenshot(canvas, 'web-editor-starter.png'); // the starter's picture, as above
+  await clickPixel(canvas, 30, 22);
+  await expect(page.locator('[data-inspector]')).toContainText(/Pixel: 30,22; H: -?\d+\.\d; V: -?\d+\.\d/);
+  await expect(page.locator('[data-inspector]')).toContainText('two hits');
+  expect(errors).toEqual([]);
+});
+
 test('as an ES module (import map: p5 → p5.esm.js): the starter traces the same picture, a click inspects, workers run', async ({ page }) => {
   const errors = watchConsole(page);
   const requests = [];
@@ -160,6 +181,19 @@ test('the gallery\'s web-editor page shows the steps with the very files tested 
   const download = await page.request.get(await page.locator('#download').getAttribute('href', { timeout: 1000 }).then((href) => new URL(href, page.url()).href));
   expect(download.ok()).toBe(true);
   expect(await download.text()).toMatch(/^var RT = /m);
+  // Every starter on the page is its file of examples/web-editor/ (web-editor-starters.spec.js runs them), each with its copy button.
+  for (const name of ['diagrams', 'animation', 'homework-traffic-signal', 'homework-rear-lights']) {
+    await expect(page.locator(`#starter-${name}`)).toHaveText(readFileSync(`examples/web-editor/${name}.js`, 'utf8'));
+    await expect(page.locator(`button[data-copy="starter-${name}"]`)).toHaveCount(1);
+  }
+  await expect(page.locator('#noprotect')).toContainText('// noprotect');
+  // The ready folder as one .zip: the four files, the one-file build made by the dev server just now.
+  const zipped = await page.request.get(new URL(await page.locator('#ready-zip').getAttribute('href'), page.url()).href);
+  expect(zipped.ok()).toBe(true);
+  expect(zipped.headers()['content-type']).toBe('application/zip');
+  const files = readStoredZip(await zipped.body());
+  expect(files.map((f) => f.name)).toEqual(['index.html', 'sketch.js', 'p5.min.js', 'raytracing-sketchbook.js'].map((name) => `raytracing-sketchbook/${name}`));
+  expect(files[3].data.toString('utf8')).toMatch(/^\/\/ noprotect\b/);
   expect(errors).toEqual([]);
 });
 
