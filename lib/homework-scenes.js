@@ -39,7 +39,7 @@ export function trafficSignalScene() {
  * Homework 1's camera: 160 × 120 pixels, at eye height, looking up at the signal.
  * @returns {Camera}
  * @example
- * const view = createTracerView({ scene: trafficSignalScene(), camera: trafficSignalCamera() });
+ * checkTrafficSignal(trafficSignalScene(), trafficSignalCamera()).passed; // false: no lights yet
  */
 export function trafficSignalCamera() {
   return new Camera({ width: WIDTH, height: HEIGHT, fov: 35, position: [0, 1.6, 0], pitch: 7 });
@@ -71,7 +71,7 @@ export function rearLightsScene() {
  * Homework 2's camera: 160 × 120 pixels, behind the car, looking a little down.
  * @returns {Camera}
  * @example
- * const view = createTracerView({ scene: rearLightsScene(), camera: rearLightsCamera() });
+ * const frame = render(rearLightsScene(), rearLightsCamera()); // 160 × 120 RGBA pixels
  */
 export function rearLightsCamera() {
   return new Camera({ width: WIDTH, height: HEIGHT, position: [0, 1.4, 0], pitch: -5 });

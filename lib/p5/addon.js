@@ -1,6 +1,7 @@
 /**
- * The sketchbook as a p5 2.x addon: every factory of the p5 adapter becomes a
- * method of p5, taking one options object, so a sketch writes
+ * The sketchbook as a p5 addon (2.x; on 1.x register.js puts it on
+ * p5.prototype): every factory of the p5 adapter becomes a method of p5,
+ * taking one options object, so a sketch writes
  *
  *   p.createTracerView({ scene, camera })   // instance mode
  *   createTracerView({ scene, camera })     // global mode (function setup() {…})
@@ -68,7 +69,7 @@ export const FACTORIES = {
 const partsOf = new WeakMap();
 
 /**
- * The addon (`p5.registerAddon(sketchbookAddon)`; lib/p5/index.js does it).
+ * The addon (`p5.registerAddon(sketchbookAddon)` on 2.x; lib/p5/index.js does it, through register.js).
  * @param {typeof import('p5').default & { disableSketchChecker?: boolean }} p5Class
  * @param {object} fn p5's prototype
  * @param {object} lifecycles p5's lifecycle hooks

@@ -12,7 +12,10 @@ import p5 from 'p5';
 /** p5 2.x lifecycle hooks and their p5 1.x names (registerMethod). */
 export const HOOKS_IN_P5_ONE = { presetup: 'beforeSetup', postsetup: 'afterSetup', predraw: 'pre', postdraw: 'post', remove: 'remove' };
 
-/** The p5 this page has: 2 (registerAddon), 1 (registerMethod) or 0 (none, or too old). */
+/**
+ * The p5 this page has: 2 (registerAddon), 1 (registerMethod) or 0 (none, or too old).
+ * @param {any} [p5Class] p5 itself (tests pass a stand-in)
+ */
 export function p5Generation(p5Class = p5) {
   if (typeof p5Class?.registerAddon === 'function') return 2;
   return typeof p5Class?.prototype?.registerMethod === 'function' ? 1 : 0;
@@ -25,7 +28,7 @@ export function p5Generation(p5Class = p5) {
  */
 export function registerAddon(addon, p5Class = p5) {
   if (p5Generation(p5Class) === 2) return p5Class.registerAddon(addon);
-  const lifecycles = {};
+  const lifecycles = /** @type {Record<string, Function>} */ ({});
   addon(p5Class, p5Class.prototype, lifecycles);
   for (const [hook, run] of Object.entries(lifecycles)) {
     const name = HOOKS_IN_P5_ONE[hook];
@@ -34,5 +37,3 @@ export function registerAddon(addon, p5Class = p5) {
   }
 }
 
-/** `p5.VERSION` (e.g. '1.11.13'), or '' when the page's p5 does not say. */
-export const p5Version = (p5Class = p5) => String(p5Class?.VERSION ?? '');
