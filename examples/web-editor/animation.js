@@ -8,16 +8,16 @@ let movie;
 function setup() {
   noCanvas(); // the tracer view brings its own canvas
 
-  const camera = new RT.Camera({ width: 160, height: 120 });
-  const view = createTracerView({ scene: RT.classSceneAt(0), camera });
+  const eye = new RT.Camera({ width: 160, height: 120 }); // the camera (p5 1.x's friendly errors take a variable named camera for p5's own)
+  const view = createTracerView({ scene: RT.classSceneAt(0), camera: eye });
   const controls = createDiv().parent(view.figure); // under the picture
-  const pause = createButton('Pause').parent(controls).class('rt-button');
+  const pauseButton = createButton('Pause').parent(controls).class('rt-button');
   const stats = createSpan('').parent(controls); // frame, FPS, time
-  movie = createAnimation({ view, sceneAt: (t) => RT.classSceneAt(t), camera, stats });
+  movie = createAnimation({ view, sceneAt: (t) => RT.classSceneAt(t), camera: eye, stats });
   movie.start('main'); // or 'workers': the frames shared out over Web Workers
-  pause.mousePressed(() => {
+  pauseButton.mousePressed(() => {
     movie.play(!movie.playing);
-    pause.html(movie.playing ? 'Pause' : 'Play');
+    pauseButton.html(movie.playing ? 'Pause' : 'Play');
   });
   createInspector({ view });
 }

@@ -20,7 +20,12 @@ test.describe.configure({ mode: 'default' }); // one build and one server for th
 
 /** The starters the web-editor page shows (its `<!-- text of examples/web-editor/….js -->` lines). */
 const STARTERS = [...readFileSync('web-editor.html', 'utf8').matchAll(/<!-- text of examples\/web-editor\/([\w-]+)\.js -->/g)].map((m) => m[1]);
-const P5S = { '2.x': 'node_modules/p5/lib/p5.min.js', '1.11': 'node_modules/p5-v1/lib/p5.min.js' };
+/** The p5s a class may have: 2.x, and 1.11 minified and whole (p5.js: its friendly errors on, as the editor's templates often load it). */
+const P5S = {
+  '2.x': { file: 'node_modules/p5/lib/p5.min.js', version: /^2\./ },
+  '1.11': { file: 'node_modules/p5-v1/lib/p5.min.js', version: /^1\.11\./ },
+  '1.11-p5.js': { file: 'node_modules/p5-v1/lib/p5.js', version: /^1\.11\./ },
+};
 const HOMEWORK = {
   'homework-traffic-signal': { solution: 'sketches/solutions/08-traffic-signal.js' },
   'homework-rear-lights': { solution: 'sketches/solutions/09-rear-lights.js' },
@@ -63,10 +68,10 @@ test.beforeAll(async () => {
   for (const [name, { solution }] of Object.entries(HOMEWORK)) {
     served(`${name}-solved.js`, withSolution(readFileSync(`examples/web-editor/${name}.js`, 'utf8'), solution));
   }
-  for (const [version, file] of Object.entries(P5S)) {
-    copyFileSync(file, join(folder, `p5-${version}.min.js`));
+  for (const [version, { file }] of Object.entries(P5S)) {
+    copyFileSync(file, join(folder, `p5-${version}.js`));
     for (const name of [...STARTERS, ...Object.keys(HOMEWORK).map((n) => `${n}-solved`)]) {
-      writeFileSync(join(folder, `${name}-p5-${version}.html`), page(`p5-${version}.min.js`, `${name}.js`));
+      writeFileSync(join(folder, `${name}-p5-${version}.html`), page(`p5-${version}.js`, `${name}.js`));
     }
   }
   server = await serveFolder(folder);
@@ -140,7 +145,7 @@ for (const version of Object.keys(P5S)) {
       test(`${name}: rewritten as the editor does, it traces a whole frame, a click inspects, no loop cut short, a quiet console`, async ({ page }) => {
         const errors = watchConsole(page);
         await traceAndInspect(page, name, version);
-        expect(await page.evaluate(() => p5.VERSION)).toMatch(version === '1.11' ? /^1\.11\./ : /^2\./);
+        expect(await page.evaluate(() => p5.VERSION)).toMatch(P5S[version].version);
 
         if (name === 'diagrams') {
           // The diagrams drew into the sketch's own canvas; the 3D view follows the selected pixel.
