@@ -56,13 +56,26 @@ const NOPROTECT = `// noprotect: the p5 web editor would otherwise rewrite every
 
 /**
  * The classic script then checks for p5 (2.x, or 1.11 and later 1.x):
- * without it, the page would only say "p5 is not defined"; this says what to change.
+ * without it, the page would only say "p5 is not defined"; this says what to
+ * change, in the console and on the page, in the mistake panel's style
+ * (inline: the kit's stylesheet is not loaded yet).
  */
 function needP5() {
-  const check = `if (typeof p5 !== 'function' || (typeof p5.registerAddon !== 'function' && !/^1\\.(1[1-9]|[2-9]\\d)\\./.test(p5.VERSION))) {
-  throw new Error('raytracing-sketchbook.js needs p5.js 1.11 or 2.x loaded before it: put p5\\'s own <script> first' +
-    (typeof p5 === 'function' ? ' (this page has p5 ' + p5.VERSION + ')' : ' (this page has no p5)'));
+  const check = `(function () { // a function of its own: the page gets no new global
+if (typeof p5 !== 'function' || (typeof p5.registerAddon !== 'function' && !/^1\\.(1[1-9]|[2-9]\\d)\\./.test(p5.VERSION))) {
+  var needP5 = 'raytracing-sketchbook.js needs p5.js 1.11 or 2.x loaded before it: put p5\\'s own <script> first' +
+    (typeof p5 === 'function' ? ' (this page has p5 ' + p5.VERSION + ')' : ' (this page has no p5)');
+  document.addEventListener('DOMContentLoaded', function () {
+    var panel = document.createElement('div');
+    panel.setAttribute('data-error', '');
+    panel.setAttribute('role', 'alert');
+    panel.style.cssText = 'position:fixed;left:1rem;right:1rem;bottom:1rem;z-index:10000;padding:0.8rem 1.1rem;background:#fff5f3;color:#1b1f24;border:3px solid #c4321b;border-radius:8px;font:600 1.3rem system-ui,sans-serif';
+    panel.textContent = needP5;
+    document.body.append(panel);
+  });
+  throw new Error(needP5);
 }
+})();
 `;
   return {
     name: 'need-p5',

@@ -60,6 +60,9 @@ test.beforeAll(async () => {
   copyFileSync('node_modules/p5/lib/p5.min.js', join(folder, 'p5.min.js'));
   for (const file of ['index.html', 'sketch.js']) copyFileSync(join('examples/web-editor', file), join(folder, file));
   writeFileSync(join(folder, 'no-p5.html'), '<!doctype html><meta charset="utf-8"><link rel="icon" href="data:,"><script src="raytracing-sketchbook.js"></script>');
+  // p5 1.9 as far as the one file can tell (its VERSION; 1.x has registerMethod, not registerAddon).
+  const oldP5 = '<script>function p5() {} p5.VERSION = "1.9.4"; p5.prototype.registerMethod = function () {};</script>';
+  writeFileSync(join(folder, 'old-p5.html'), `<!doctype html><meta charset="utf-8"><link rel="icon" href="data:,">${oldP5}<script src="raytracing-sketchbook.js"></script>`);
   copyFileSync('node_modules/p5/lib/p5.esm.js', join(folder, 'p5.esm.js'));
   writeFileSync(join(folder, 'module.html'), MODULE_PAGE);
   writeReadyFolder(folder); // what npm run build writes after the one-file builds: web-editor/ and its .zip
@@ -163,12 +166,18 @@ test('as an ES module (import map: p5 → p5.esm.js): the starter traces the sam
   expect(errors).toEqual([]);
 });
 
-test('loaded without p5 before it, the one file says what to change', async ({ page }) => {
-  const errors = [];
-  page.on('pageerror', (error) => errors.push(error.message));
-  await page.goto(`${origin}/no-p5.html`);
-  expect(errors).toEqual([expect.stringMatching(/^raytracing-sketchbook\.js needs p5\.js 1\.11 or 2\.x loaded before it: put p5's own <script> first \(this page has no p5\)/)]);
-});
+for (const [file, found] of [['no-p5.html', 'this page has no p5'], ['old-p5.html', 'this page has p5 1.9.4']]) {
+  test(`loaded with ${found.replace('this page has ', '')} before it, the one file says what to change: in the console and on the page`, async ({ page }) => {
+    const errors = [];
+    page.on('pageerror', (error) => errors.push(error.message));
+    await page.goto(`${origin}/${file}`);
+    const message = `raytracing-sketchbook.js needs p5.js 1.11 or 2.x loaded before it: put p5's own <script> first (${found})`;
+    expect(errors).toEqual([message]);
+    await expect(page.locator('[data-error]')).toHaveText(message);
+    await expect(page.locator('[data-error]')).toHaveAttribute('role', 'alert');
+    expect(await page.evaluate(() => 'needP5' in window)).toBe(false); // the check leaves no global behind
+  });
+}
 
 test('the gallery\'s web-editor page shows the steps with the very files tested above', async ({ page }) => {
   const errors = watchConsole(page);
