@@ -42,6 +42,8 @@ function pageNow() {
   const body = /** @type {HTMLElement} */ (document.body.cloneNode(true));
   body.removeAttribute('data-render');
   body.querySelectorAll('[data-error], [data-sketchbook-ghost], [data-projector]').forEach((e) => e.remove());
+  const copies = body.querySelectorAll('[data-sketchbook-held]'); // the widths holdRoom holds, as they were
+  held.forEach((parent, i) => { if (copies[i]) restoreStyle(copies[i], heldStyles[i]); });
   const head = [...document.head.children]
     .filter((e) => !e.matches('link[data-sketchbook], style#p5-loading-style, style[data-vite-dev-id]'))
     .map((e) => markup.serializeToString(e));
@@ -89,11 +91,12 @@ export function swapOut() {
   keepPlaceForSwap();
   const why = whyNot();
   if (why) return reload(why);
-  const pictures = [...document.querySelectorAll('canvas[data-tracer]')].map(ghostOf);
-  holdHeight();
+  // Ghosts still up: the version going out never set up, and its canvases (if any) are no good picture; the last good one stays.
+  const pictures = ghosts.length > 0 ? ghosts : [...document.querySelectorAll('canvas[data-tracer]')].map(ghostOf);
+  if (ghosts.length === 0) holdRoom();
   for (const p of [...instances]) p.remove(); // its `remove` hook takes it out of the set
   clearMistakes();
-  removeGhosts();
+  for (const ghost of pictures) ghost.remove(); // out of the page while it is compared with before
   delete document.body.dataset.render;
   if (lasting.size > 0) return reload(`the sketch still listens for ${[...lasting].map((e) => e.type).join(', ')} on the page`);
   if (pageNow() !== before) return reload('the sketch changed the page outside p5');
@@ -141,14 +144,44 @@ function removeGhosts() {
   ghosts = [];
 }
 
-/** The page keeps its height while the sketch is away, so the scroll position does not jump to the top. */
-function holdHeight() {
+/** Elements given a minimum width by holdRoom, to be given back, and their style attributes before (null: none). */
+let held = [], heldStyles = [];
+
+/**
+ * While the sketch is away the page keeps its height (the scroll position
+ * does not jump to the top) and each tracer view's parent keeps its width:
+ * a parent sized by its content (a column of a flex row) would shrink to
+ * nothing, and the new view, measuring its room there ('auto' scale), would
+ * come back smaller than the picture it replaces.
+ */
+function holdRoom() {
   document.documentElement.style.minHeight = `${document.documentElement.scrollHeight}px`;
+  held = [...new Set([...document.querySelectorAll('[data-tracer-view]')].map((figure) => figure.parentElement).filter(Boolean))];
+  heldStyles = held.map((parent) => parent.getAttribute('style'));
+  const widths = held.map((parent) => parent.getBoundingClientRect().width);
+  held.forEach((parent, i) => { parent.dataset.sketchbookHeld = ''; parent.style.minWidth = `${widths[i]}px`; });
+  for (const parent of held) { // min-width is the content box's, unless border-box: make it the same outer width
+    const style = getComputedStyle(parent);
+    if (style.boxSizing !== 'border-box') {
+      const extra = ['paddingLeft', 'paddingRight', 'borderLeftWidth', 'borderRightWidth'].reduce((sum, side) => sum + parseFloat(style[side]), 0);
+      parent.style.minWidth = `${parseFloat(parent.style.minWidth) - extra}px`;
+    }
+  }
 }
 
-/** The new sketch has set up (its place restored by keep-place.js): the page may take its own height again. */
+/** Gives an element held by holdRoom its style attribute back. */
+function restoreStyle(e, style) {
+  delete e.dataset.sketchbookHeld;
+  if (style === null) e.removeAttribute('style');
+  else e.setAttribute('style', style);
+}
+
+/** The new sketch has set up (its place restored by keep-place.js): the page may take its own height and widths again. */
 function settle() {
   document.documentElement.style.minHeight = '';
+  held.forEach((parent, i) => restoreStyle(parent, heldStyles[i]));
+  held = [];
+  heldStyles = [];
   if (ghosts.length > 0) requestAnimationFrame(() => requestAnimationFrame(removeGhosts)); // after its first preview
 }
 
