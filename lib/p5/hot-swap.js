@@ -149,24 +149,27 @@ let held = [], heldStyles = [];
 
 /**
  * While the sketch is away the page keeps its height (the scroll position
- * does not jump to the top) and each tracer view's parent keeps its width:
- * a parent sized by its content (a column of a flex row) would shrink to
- * nothing, and the new view, measuring its room there ('auto' scale), would
+ * does not jump to the top) and each tracer view's parent keeps its size: a
+ * parent sized by what it holds (a column of a flex row) would shrink to
+ * nothing, the text after it would move up under the copy of the last
+ * picture, and the new view, measuring its room there ('auto' scale), would
  * come back smaller than the picture it replaces.
  */
 function holdRoom() {
   document.documentElement.style.minHeight = `${document.documentElement.scrollHeight}px`;
   held = [...new Set([...document.querySelectorAll('[data-tracer-view]')].map((figure) => figure.parentElement).filter(Boolean))];
   heldStyles = held.map((parent) => parent.getAttribute('style'));
-  const widths = held.map((parent) => parent.getBoundingClientRect().width);
-  held.forEach((parent, i) => { parent.dataset.sketchbookHeld = ''; parent.style.minWidth = `${widths[i]}px`; });
-  for (const parent of held) { // min-width is the content box's, unless border-box: make it the same outer width
-    const style = getComputedStyle(parent);
-    if (style.boxSizing !== 'border-box') {
-      const extra = ['paddingLeft', 'paddingRight', 'borderLeftWidth', 'borderRightWidth'].reduce((sum, side) => sum + parseFloat(style[side]), 0);
-      parent.style.minWidth = `${parseFloat(parent.style.minWidth) - extra}px`;
-    }
-  }
+  const sizes = held.map((parent) => {
+    const box = parent.getBoundingClientRect(), style = getComputedStyle(parent);
+    const sum = (...sides) => (style.boxSizing === 'border-box' ? 0 : sides.reduce((total, side) => total + parseFloat(style[side]), 0));
+    // min-width and min-height are of the content box, unless border-box: the same outer size either way
+    return [box.width - sum('paddingLeft', 'paddingRight', 'borderLeftWidth', 'borderRightWidth'),
+      box.height - sum('paddingTop', 'paddingBottom', 'borderTopWidth', 'borderBottomWidth')];
+  });
+  held.forEach((parent, i) => {
+    parent.dataset.sketchbookHeld = '';
+    Object.assign(parent.style, { minWidth: `${sizes[i][0]}px`, minHeight: `${sizes[i][1]}px` });
+  });
 }
 
 /** Gives an element held by holdRoom its style attribute back. */
