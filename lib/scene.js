@@ -93,5 +93,8 @@ export function shapeName(object, objects) {
   return number > 0 ? `${word} ${number}` : word;
 }
 
-/** Each kind of shape and its word (by class, not by class name: a minified build renames classes). */
+/**
+ * Each kind of shape and its word (by class, not by class name: a minified build renames classes).
+ * @type {[Function, string][]}
+ */
 const KINDS = [[Sphere, 'sphere'], [Plane, 'plane'], [Box, 'box']];

@@ -77,11 +77,14 @@ export function syntaxErrorsWhereTheyAre() {
  * none of its modules runs, the kit's panel included; this script, run
  * first, hears the error and loads the panel by itself to show it (the
  * module and line the browser names; the nearest export the module has).
- * Once the kit's panel is installed, it leaves every error to it.
+ * Once the kit's panel is installed, it leaves every error to it. It also
+ * marks the page as the dev server's (lib/p5/last-picture.js: a page that
+ * a save reloads keeps its last good picture for after the reload).
  */
 function failedModuleScript(root) {
   const panel = '/' + relative(root, resolve(import.meta.dirname, '../lib/p5/error-panel.js')).split('\\').join('/');
-  return `addEventListener('error', function (event) {
+  return `window.__sketchbookDevServer = true;
+addEventListener('error', function (event) {
   if (window.__sketchbookErrorPanel || !(event.error instanceof SyntaxError || event.target instanceof HTMLScriptElement)) return;
   var script = event.target instanceof HTMLScriptElement ? event.target.src : '';
   import(${JSON.stringify(panel)}).then(function (m) { m.showModuleFailure(event, script); });

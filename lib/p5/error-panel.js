@@ -21,6 +21,8 @@ import { useStyle, element } from './dom.js';
 
 /** Errors already shown, by message and place: a draw() error repeats every frame. */
 const shown = new Map();
+/** Called for each new mistake shown (last-picture.js puts the last good picture back under it). */
+const mistakeListeners = [];
 /** Characters of a source line shown at most. */
 const SHOWN_CHARS = 120;
 let panel = null;
@@ -59,8 +61,9 @@ export function showError(error, fallback = {}) {
  * Shows a mistake in the page's error panel: its message, and where it is
  * (the line itself is fetched from `url` unless `source` gives it).
  * @param {string} message
- * @param {{ url?: string, file: string, line: number, column: number, source?: string, exact?: boolean }|null} [where]
- *   `exact`: the column is the mistake's own (a syntax error), so it is shown too
+ * @param {{ url?: string, file: string, line: number, column: number, source?: string, exact?: boolean, suggestion?: string }|null} [where]
+ *   `exact`: the column is the mistake's own (a syntax error), so it is shown too;
+ *   `suggestion`: what was probably meant ("did you mean Sphere?"), else one is looked for (mistake-hints.js)
  * @returns {HTMLElement|null} the panel (null outside a page)
  */
 export function showMistake(message, where = null) {
@@ -90,7 +93,13 @@ export function showMistake(message, where = null) {
   panel.querySelector('.rt-error-list').append(entry);
   shown.set(key, { count: 1, countElement });
   if (document.body.dataset.render !== 'done') document.body.dataset.render = 'error';
+  for (const listener of mistakeListeners) listener();
   return panel;
+}
+
+/** Calls `listener` each time a new mistake is shown. */
+export function onMistake(listener) {
+  mistakeListeners.push(listener);
 }
 
 /**

@@ -309,14 +309,18 @@ test('two different mistakes in a row after a good picture: the picture keeps it
     expect(await box('canvas[data-tracer]'), 'a good save keeps the picture\'s size').toEqual(first);
 
     const mistakes = [
-      [good.replace('{ color: [1, 0.32, 0.36] }', '{ colour: [1, 0.32, 0.36] }'), 'unknown material option "colour"'],
-      [good.replace('p.noCanvas();', 'p.noCanvas();\n    const r = 4 +* 2;'), 'SyntaxError: Unexpected token'],
+      [good.replace('{ color: [1, 0.32, 0.36] }', '{ colour: [1, 0.32, 0.36] }'), 'unknown material option "colour"', 'swap'],
+      [good.replace('p.noCanvas();', 'p.noCanvas();\n    const r = 4 +* 2;'), 'SyntaxError: Unexpected token', 'swap'],
+      // A mistake at the top: the new version does not load, so the page reloads; the picture comes back under the panel.
+      [good.replace('new p5((p) => {', 'const SIZE = WIDHT * 2;\nnew p5((p) => {'), 'ReferenceError: WIDHT is not defined', 'reload'],
+      [good.replace('{ color: [1, 0.32, 0.36] }', "{ color: 'pinkk' }"), "(did you mean 'pink'?)", 'swap'],
     ];
-    for (const [source, message] of mistakes) {
-      await saveAndWaitForUpdate(page, sketch, source);
+    for (const [source, message, how] of mistakes) {
+      expect(await saveAndWaitForUpdate(page, sketch, source)).toBe(how);
       await expect(page.locator('[data-error-message]')).toContainText(message);
       await expect(page.locator('canvas[data-sketchbook-ghost]')).toHaveCount(1);
-      expect(await box('canvas[data-sketchbook-ghost]'), `after "${message}": the last good picture where it was, at its size`).toEqual(first);
+      const kept = await box('canvas[data-sketchbook-ghost]');
+      kept.forEach((x, i) => expect(x, `after "${message}": the last good picture where it was, at its size`).toBeCloseTo(first[i], 1));
       expect(await coveredText(), `after "${message}": no text under the picture`).toEqual([]);
       await expect(page.locator('#api')).toBeVisible();
       const centre = await page.locator('canvas[data-sketchbook-ghost]').evaluate((c) => [...c.getContext('2d').getImageData(32, 24, 1, 1).data]);
