@@ -104,30 +104,56 @@ export function checkOptions(options, known, where) {
 
 /** The message for an unknown key: the closest known key, and the whole list when none is close. */
 function unknownOption(key, known, where) {
-  let best = null, bestDistance = Infinity;
-  for (const name of known) {
-    const d = editDistance(key.toLowerCase(), name.toLowerCase());
-    if (d < bestDistance) { best = name; bestDistance = d; }
-  }
   const message = `unknown ${where} option ${show(key)}`;
+  const best = closestName(key, known, Infinity);
   if (best === null) return `${message} (it takes no options)`;
-  const close = bestDistance <= Math.max(2, Math.floor(key.length / 2));
-  return close
+  return closestName(key, known, Math.max(2, Math.floor(key.length / 2))) === best
     ? `${message} (did you mean ${JSON.stringify(best)}?)`
     : `${message} (did you mean ${JSON.stringify(best)}? known options: ${known.join(', ')})`;
 }
 
 /**
+ * The name of `names` closest to `name` by editDistance, case aside, or null
+ * when even that one is more than `most` edits away: "did you mean …?" for a
+ * misspelt option, colour, import or p5 function alike. A tie goes to the
+ * name that keeps more of the letters written ('gren' → 'green', not 'grey'),
+ * then to the one closer with case, then to the first. By default a short
+ * name may be one edit off, a longer one two or three ("createTracerVeiw" → "createTracerView").
+ * @param {string} name what was written
+ * @param {Iterable<string>} names what could have been meant
+ * @param {number} [most] the most edits allowed
+ * @returns {string|null}
+ */
+export function closestName(name, names, most = name.length <= 4 ? 1 : name.length <= 8 ? 2 : 3) {
+  let best = null, bestScore = null;
+  const lower = name.toLowerCase();
+  for (const candidate of names) {
+    const d = editDistance(lower, candidate.toLowerCase());
+    if (d > most || (bestScore && d > bestScore[0])) continue;
+    const score = [d, editDistance(lower, candidate.toLowerCase(), 2), editDistance(name, candidate)];
+    if (!bestScore || lessThan(score, bestScore)) { best = candidate; bestScore = score; }
+  }
+  return best;
+}
+
+/** Is score a before score b, comparing their numbers in turn? */
+function lessThan(a, b) {
+  const i = a.findIndex((x, k) => x !== b[k]);
+  return i >= 0 && a[i] < b[i];
+}
+
+/**
  * Edits (insert, delete, replace, swap two neighbours) turning a into b:
  * the optimal string alignment distance, so "widht" is one edit from "width".
+ * `replaceCost` 2 counts a replaced letter as a delete and an insert (closestName's tie-break).
  */
-export function editDistance(a, b) {
+export function editDistance(a, b, replaceCost = 1) {
   const rows = [];
   for (let i = 0; i <= a.length; i++) {
     rows.push([i]);
     for (let j = 1; j <= b.length; j++) {
       if (i === 0) { rows[0].push(j); continue; }
-      const cost = a[i - 1] === b[j - 1] ? 0 : 1;
+      const cost = a[i - 1] === b[j - 1] ? 0 : replaceCost;
       let d = Math.min(rows[i - 1][j] + 1, rows[i][j - 1] + 1, rows[i - 1][j - 1] + cost);
       if (i > 1 && j > 1 && a[i - 1] === b[j - 2] && a[i - 2] === b[j - 1]) d = Math.min(d, rows[i - 2][j - 2] + 1);
       rows[i].push(d);

@@ -2,7 +2,7 @@
  * Colours: `[r, g, b]` in 0–1 (values above 1 are allowed for lights), or a
  * CSS-style string: '#ff5160', '#f56', 'rgb(255, 81, 96)' or a colour name.
  */
-import { show } from './check.js';
+import { show, closestName } from './check.js';
 import { clamp } from './numbers.js';
 
 /**
@@ -58,7 +58,8 @@ function parseString(text, field) {
   if (m) return checkArray([0, 2, 4].map((i) => parseInt(m[1].slice(i, i + 2), 16) / 255), field);
   m = /^rgb\(\s*(\d+)\s*,\s*(\d+)\s*,\s*(\d+)\s*\)$/.exec(text);
   if (m && m.slice(1).every((c) => Number(c) <= 255)) return checkArray(m.slice(1).map((c) => Number(c) / 255), field);
-  throw new TypeError(`${field} must be a colour like '#ff5160', 'rgb(255, 81, 96)' or 'pink', got ${show(text)}`);
+  const meant = /^[a-z]+$/.test(text) ? closestName(text, Object.keys(NAMES)) : null; // 'pinkk' → 'pink'
+  throw new TypeError(`${field} must be a colour like '#ff5160', 'rgb(255, 81, 96)' or 'pink', got ${show(text)}${meant ? ` (did you mean '${meant}'?)` : ''}`);
 }
 
 /**

@@ -12,6 +12,7 @@ import { copy, scaleAndAdd, Vec3 } from './vec3.js';
 import { angles, horizontalAngle, verticalAngle } from './camera.js';
 import { intersectQuadratic, Sphere } from './shapes/sphere.js';
 import { nearestHit } from './trace.js';
+import { shapeName } from './scene.js';
 import { renderPixel } from './render.js';
 import { toHex, colorToHex } from './color.js';
 import { formatRounded, formatPowerOfTen } from './format.js';
@@ -271,7 +272,7 @@ const LEGENDS = {
   shaded(scene) {
     const stops = scene.objects.map((o, i) => {
       const m = o.material, emits = m.isEmissive;
-      return { value: i, label: (o.name || `object ${i}`) + (emits ? ' (light)' : ''), color: colorToHex(emits ? m.emission : m.color) };
+      return { value: i, label: shapeName(o, scene.objects) + (emits ? ' (light)' : ''), color: colorToHex(emits ? m.emission : m.color) };
     });
     stops.push({ value: null, label: 'background', color: colorToHex(scene.background) });
     return { kind: 'swatches', stops };

@@ -72,3 +72,29 @@ export class Scene {
     return this.objects.filter((o) => o instanceof Sphere);
   }
 }
+
+/**
+ * The name a shape goes by on the page: its own `name`, else its kind and its
+ * number among the scene's shapes of that kind, counted from 1 as a class
+ * does ("sphere 1", "plane 1", "box 2").
+ * @param {{ name?: string }} object a shape of `objects`
+ * @param {readonly object[]} objects the scene's shapes, in order
+ * @returns {string}
+ * @example
+ * const scene = new Scene().add(new Plane([0, -1, 0], [0, 1, 0])).add(new Sphere([0, 0, -20], 4));
+ * shapeName(scene.objects[1], scene.objects); // 'sphere 1'
+ */
+export function shapeName(object, objects) {
+  if (object?.name) return object.name;
+  const kind = KINDS.find(([type]) => object instanceof type);
+  const same = kind ? objects.filter((o) => o instanceof kind[0]) : objects;
+  const number = same.indexOf(object) + 1;
+  const word = kind ? kind[1] : 'object';
+  return number > 0 ? `${word} ${number}` : word;
+}
+
+/**
+ * Each kind of shape and its word (by class, not by class name: a minified build renames classes).
+ * @type {[Function, string][]}
+ */
+const KINDS = [[Sphere, 'sphere'], [Plane, 'plane'], [Box, 'box']];

@@ -10,6 +10,10 @@
  * Oxc) and reports the first error with its position: a page's own script
  * shows it in the kit's error panel on that page (file, line, the line
  * itself), any other module in Vite's overlay (file, line, column, code).
+ * A page's script that imports from the kit a name it does not export, or a
+ * kit file that is not there (kit-imports.js), is shown the same way, with
+ * the nearest name; and every page gets a small classic script that shows
+ * any other module the browser refuses to load, in the same panel.
  *
  * reloadItsPagesOnly: a saved sketch file reloads the pages that run it, not
  * every page open on the dev server. Vite's default for a module with no HMR
@@ -32,6 +36,7 @@
 import { existsSync } from 'node:fs';
 import { relative, resolve } from 'node:path';
 import { parseAst } from 'vite';
+import { badKitImport } from './kit-imports.js';
 
 /** Each page script served with the swap hooks (absolute path → true), for reloadItsPagesOnly. */
 const swappable = new Map();
@@ -46,35 +51,60 @@ export function syntaxErrorsWhereTheyAre() {
     transform(code, id) {
       const [file, query = ''] = id.split('?');
       if (!/\.m?js$/.test(file) || file.includes('/node_modules/') || id.startsWith('\0') || /(^|&)(raw|url|inline)\b/.test(query)) return null;
+      const isPageScript = existsSync(file.replace(/\.m?js$/, '.html'));
+      let program;
       try {
-        parseAst(code, undefined, file);
-        return null;
+        program = parseAst(code, undefined, file);
       } catch (error) {
         if (typeof error?.pos !== 'number') throw error;
         // "Parse failed with 1 error:\nUnterminated string\n2: …": the line that names it.
         const message = String(error.message).split('\n')[1]?.trim() || 'invalid JavaScript';
-        if (!existsSync(file.replace(/\.m?js$/, '.html'))) this.error(`Syntax error: ${message}`, error.pos); // Vite's overlay
-        return mistakeModule(root, file, code, error.pos, message);
+        if (!isPageScript) this.error(`Syntax error: ${message}`, error.pos); // Vite's overlay
+        return mistakeModule(root, file, code, error.pos, `SyntaxError: ${message}`);
       }
+      // A page's script importing what the kit does not have: the browser would refuse every module of the page.
+      const bad = isPageScript ? badKitImport(program, file, resolve(import.meta.dirname, '../lib')) : null;
+      return bad ? mistakeModule(root, file, code, bad.pos, bad.message, bad.suggestion) : null;
     },
+    // Before any module: a module the page cannot load (a mistake the checks above miss) is shown in the panel too.
+    transformIndexHtml: () => [{ tag: 'script', children: failedModuleScript(root), injectTo: 'head-prepend' }],
   };
 }
 
 /**
- * A page's script with a syntax error is served as a module that shows the
- * mistake on that page alone, in the kit's own panel (lib/p5/error-panel.js),
+ * A classic script for every page the dev server serves. When the browser
+ * refuses a page's module graph (an import the page's script cannot have),
+ * none of its modules runs, the kit's panel included; this script, run
+ * first, hears the error and loads the panel by itself to show it (the
+ * module and line the browser names; the nearest export the module has).
+ * Once the kit's panel is installed, it leaves every error to it. It also
+ * marks the page as the dev server's (lib/p5/last-picture.js: a page that
+ * a save reloads keeps its last good picture for after the reload).
+ */
+function failedModuleScript(root) {
+  const panel = '/' + relative(root, resolve(import.meta.dirname, '../lib/p5/error-panel.js')).split('\\').join('/');
+  return `window.__sketchbookDevServer = true;
+addEventListener('error', function (event) {
+  if (window.__sketchbookErrorPanel || !(event.error instanceof SyntaxError || event.target instanceof HTMLScriptElement)) return;
+  var script = event.target instanceof HTMLScriptElement ? event.target.src : '';
+  import(${JSON.stringify(panel)}).then(function (m) { m.showModuleFailure(event, script); });
+}, true);`;
+}
+
+/**
+ * A page's script with a syntax error (or an import the kit cannot give) is
+ * served as a module that shows the mistake on that page alone, in the kit's own panel (lib/p5/error-panel.js),
  * and in the console: Vite's overlay would appear on every page open on the
  * server, each student's included.
  */
-function mistakeModule(root, file, code, pos, message) {
+function mistakeModule(root, file, code, pos, text, suggestion = null) {
   const before = code.slice(0, pos).split('\n');
   const line = before.length, column = before.at(-1).length + 1;
-  const where = { file: relative(root, file).split('\\').join('/'), line, column, source: code.split('\n')[line - 1], exact: true };
+  const where = { file: relative(root, file).split('\\').join('/'), line, column, source: code.split('\n')[line - 1], exact: true, ...(suggestion && { suggestion }) };
   const panel = '/' + relative(root, resolve(import.meta.dirname, '../lib/p5/error-panel.js')).split('\\').join('/');
-  const text = `SyntaxError: ${message}`;
   return [
     `import { showMistake } from ${JSON.stringify(panel)};`,
-    `console.error(${JSON.stringify(`${text} (${where.file}:${line}:${column})`)});`,
+    `console.error(${JSON.stringify(`${text}${suggestion ? ` (${suggestion})` : ''} (${where.file}:${line}:${column})`)});`,
     `showMistake(${JSON.stringify(text)}, ${JSON.stringify(where)});`,
   ].join('\n');
 }

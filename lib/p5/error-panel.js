@@ -21,6 +21,8 @@ import { useStyle, element } from './dom.js';
 
 /** Errors already shown, by message and place: a draw() error repeats every frame. */
 const shown = new Map();
+/** Called for each new mistake shown (last-picture.js puts the last good picture back under it). */
+const mistakeListeners = [];
 /** Characters of a source line shown at most. */
 const SHOWN_CHARS = 120;
 let panel = null;
@@ -59,8 +61,9 @@ export function showError(error, fallback = {}) {
  * Shows a mistake in the page's error panel: its message, and where it is
  * (the line itself is fetched from `url` unless `source` gives it).
  * @param {string} message
- * @param {{ url?: string, file: string, line: number, column: number, source?: string, exact?: boolean }|null} [where]
- *   `exact`: the column is the mistake's own (a syntax error), so it is shown too
+ * @param {{ url?: string, file: string, line: number, column: number, source?: string, exact?: boolean, suggestion?: string }|null} [where]
+ *   `exact`: the column is the mistake's own (a syntax error), so it is shown too;
+ *   `suggestion`: what was probably meant ("did you mean Sphere?"), else one is looked for (mistake-hints.js)
  * @returns {HTMLElement|null} the panel (null outside a page)
  */
 export function showMistake(message, where = null) {
@@ -85,10 +88,43 @@ export function showMistake(message, where = null) {
     if (typeof where.source === 'string') showLine(entry, where, where.source);
     else showSourceLine(entry, where);
   }
+  if (where?.suggestion) showSuggestion(entry, where.suggestion);
+  else if (mayHaveHint(message)) import('./mistake-hints.js').then((hints) => hints.hintFor(message, where?.url ?? location.href)).then((hint) => showSuggestion(entry, hint), () => {});
   panel.querySelector('.rt-error-list').append(entry);
   shown.set(key, { count: 1, countElement });
   if (document.body.dataset.render !== 'done') document.body.dataset.render = 'error';
+  for (const listener of mistakeListeners) listener();
   return panel;
+}
+
+/** Calls `listener` each time a new mistake is shown. */
+export function onMistake(listener) {
+  mistakeListeners.push(listener);
+}
+
+/**
+ * A module the page could not load, heard by the dev server's classic script
+ * (scripts/vite-live-coding.js) because none of the page's modules ran: an
+ * import the module does not export (a SyntaxError at the import's line), or
+ * a script that could not be fetched.
+ * @param {ErrorEvent|Event} event the window's `error` event
+ * @param {string} script the `src` of the script element that failed, if it was one
+ */
+export function showModuleFailure(event, script) {
+  const e = /** @type {ErrorEvent} */ (event);
+  if (e.error) return showError(e.error, { url: e.filename, line: e.lineno, column: e.colno });
+  const file = script ? decodeURIComponent(new URL(script).pathname.replace(/^\//, '')) : 'the page\'s script';
+  return showMistake(`${file} did not load: it, or a file it imports, is missing or cannot be fetched (the browser console names it)`);
+}
+
+/** Messages mistake-hints.js may know a "did you mean" for: a name that is not there. */
+function mayHaveHint(message) {
+  return /does not provide an export named|is not a function|is not defined|Can't find variable/.test(message);
+}
+
+/** A line under the message saying what was probably meant. */
+function showSuggestion(entry, text) {
+  if (text) entry.querySelector('[data-error-message]').after(element('p', { class: 'rt-error-suggestion', 'data-error-suggestion': '' }, text));
 }
 
 /** Takes the panel away: a save swapped in a new version of the sketch (hot-swap.js), as a reload would. */

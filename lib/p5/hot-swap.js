@@ -10,7 +10,7 @@
  *
  * The place (selected pixels, modes, boxes, scroll) comes back as after a
  * reload (keep-place.js); a picture of the last good frame stays until the
- * new sketch has set up, and under the mistake panel if it cannot. Anything
+ * new sketch has set up, and under the mistake panel if it cannot (last-picture.js). Anything
  * that cannot be undone here reloads the page instead, as before: a sketch
  * in global mode, a page changed outside p5 (its body, head or title differ
  * from before the sketch ran), a new version that fails to load.
@@ -20,11 +20,10 @@
 import p5 from 'p5';
 import { clearMistakes, sketchFrame } from './error-panel.js';
 import { keepPlaceForSwap } from './keep-place.js';
+import { keepPictures, showPictures, withoutHolds } from './last-picture.js';
 
 /** The p5 instances on the page: the sketch's (its script imports nothing else that could make one). */
 const instances = new Set();
-/** Pictures of the last good frame, over the page while a swap is under way. */
-let ghosts = [];
 /** The page before the sketch ran, which every swap comes back to. */
 let before = null;
 /** Swaps so far: tests tell a swap from a reload by it. */
@@ -42,6 +41,7 @@ function pageNow() {
   const body = /** @type {HTMLElement} */ (document.body.cloneNode(true));
   body.removeAttribute('data-render');
   body.querySelectorAll('[data-error], [data-sketchbook-ghost], [data-projector]').forEach((e) => e.remove());
+  withoutHolds(body); // the sizes last-picture.js holds while the sketch is away
   const head = [...document.head.children]
     .filter((e) => !e.matches('link[data-sketchbook], style#p5-loading-style, style[data-vite-dev-id]'))
     .map((e) => markup.serializeToString(e));
@@ -89,16 +89,14 @@ export function swapOut() {
   keepPlaceForSwap();
   const why = whyNot();
   if (why) return reload(why);
-  const pictures = [...document.querySelectorAll('canvas[data-tracer]')].map(ghostOf);
+  keepPictures(); // copies of the last good pictures (last-picture.js), shown until the new version has set up
   holdHeight();
   for (const p of [...instances]) p.remove(); // its `remove` hook takes it out of the set
   clearMistakes();
-  removeGhosts();
   delete document.body.dataset.render;
   if (lasting.size > 0) return reload(`the sketch still listens for ${[...lasting].map((e) => e.type).join(', ')} on the page`);
   if (pageNow() !== before) return reload('the sketch changed the page outside p5');
-  ghosts = pictures;
-  document.body.append(...ghosts);
+  showPictures();
   return undefined;
 }
 
@@ -120,36 +118,14 @@ function reload(why) {
   location.reload();
 }
 
-/** A copy of a traced canvas where it is on the page, to show until the new one is there. */
-function ghostOf(canvas) {
-  const ghost = document.createElement('canvas');
-  ghost.width = canvas.width;
-  ghost.height = canvas.height;
-  ghost.getContext('2d').drawImage(canvas, 0, 0);
-  const r = canvas.getBoundingClientRect();
-  ghost.dataset.sketchbookGhost = '';
-  ghost.setAttribute('aria-hidden', 'true');
-  Object.assign(ghost.style, {
-    position: 'absolute', left: `${r.left + window.scrollX}px`, top: `${r.top + window.scrollY}px`,
-    width: `${r.width}px`, height: `${r.height}px`, imageRendering: getComputedStyle(canvas).imageRendering, pointerEvents: 'none',
-  });
-  return ghost;
-}
-
-function removeGhosts() {
-  for (const ghost of ghosts) ghost.remove();
-  ghosts = [];
-}
-
 /** The page keeps its height while the sketch is away, so the scroll position does not jump to the top. */
 function holdHeight() {
   document.documentElement.style.minHeight = `${document.documentElement.scrollHeight}px`;
 }
 
-/** The new sketch has set up (its place restored by keep-place.js): the page may take its own height again. */
+/** The new sketch has set up (its place restored by keep-place.js, its pictures by last-picture.js): the page may take its own height again. */
 function settle() {
   document.documentElement.style.minHeight = '';
-  if (ghosts.length > 0) requestAnimationFrame(() => requestAnimationFrame(removeGhosts)); // after its first preview
 }
 
 function install() {

@@ -172,7 +172,7 @@ function close(a, b) {
   return Math.abs(a - b) <= AGREE_TOLERANCE * Math.max(1, Math.abs(a), Math.abs(b));
 }
 
-/** The name a sphere (or light) goes by in the panel. */
+/** The name a light goes by in the panel (shapes have theirs in the record: shapeName). */
 function nameOf(object, fallback) {
   return object?.name || fallback;
 }
@@ -226,7 +226,7 @@ function hitSection(r) {
     return section('Hit', element('p', { 'data-field': 'hit-object', 'data-value': '' },
       'No hit: the ray meets nothing, so the pixel takes the background colour.'));
   }
-  const name = nameOf(hit.object, `object ${hit.index}`);
+  const name = hit.name;
   return section('Hit', facts([
     ['object', textValue('hit-object', name), hit.inside ? ' (from inside)' : ''],
     ['t', value('hit-t', hit.t)],
@@ -244,7 +244,7 @@ function lightsSection(r) {
     const status = !l.facing ? 'faces away' : l.inShadow ? (l.transmission > 0 ? 'partly shadowed' : 'in shadow') : 'lit';
     const added = l.contribution;
     return element('tr', { class: `rt-light-${status.replace(' ', '-')}` },
-      element('td', {}, textValue('light', nameOf(l.light, `light ${i}`), at)),
+      element('td', {}, textValue('light', nameOf(l.light, `light ${i + 1}`), at)),
       element('td', {}, value('cos', l.cos, at)),
       element('td', {}, element('span', { class: 'rt-value', 'data-field': 'in-shadow', 'data-value': String(l.inShadow), ...at }, status)),
       element('td', {},
@@ -254,8 +254,8 @@ function lightsSection(r) {
   return section('Lights (one shadow ray each)', table(['light', 'cos θ', 'shadow ray', 'adds (r, g, b)'], rows));
 }
 
-function sphereCell(test, i) {
-  return element('th', { scope: 'row' }, nameOf(test.sphere, `sphere ${i}`));
+function sphereCell(test) {
+  return element('th', { scope: 'row' }, test.name);
 }
 
 /**
@@ -283,7 +283,7 @@ function quadraticSection(r, tests = r.tests, more = null) {
   const rows = tests.map((test, k) => {
     const i = tests === r.tests ? k : r.tests.indexOf(test);
     const q = test.quadratic, at = { 'data-sphere': String(i), 'data-route': 'quadratic' };
-    return element('tr', { class: rowClass(r, test) }, sphereCell(test, i),
+    return element('tr', { class: rowClass(r, test) }, sphereCell(test),
       ...['A', 'B', 'C', 'discriminant'].map((f) => element('td', {}, value(f, q[f], at))),
       element('td', {},
         element('span', { class: `rt-value rt-roots-${q.roots}`, 'data-field': 'meaning', 'data-value': String(q.roots), ...at }, rootsMeaning(q.roots)),
@@ -302,7 +302,7 @@ function geometricSection(r, tests = r.tests, more = null) {
     const i = tests === r.tests ? k : r.tests.indexOf(test);
     const g = test.geometric, at = { 'data-sphere': String(i), 'data-route': 'geometric' };
     const agree = routesAgree(test.quadratic, g);
-    return element('tr', { class: rowClass(r, test) }, sphereCell(test, i),
+    return element('tr', { class: rowClass(r, test) }, sphereCell(test),
       element('td', {}, wrapBeforeZ(vectorValue('L', g.L, at, formatVector(g.L).replaceAll(', ', ',')))), // narrow: the table is wide
       ...['tca', 'd2', 'thc', 't0', 't1'].map((f) => element('td', {}, value(f, g[f], at))),
       element('td', {}, element('span', {
@@ -346,12 +346,12 @@ const CSV_HEAD = ['x', 'y', 'H', 'V', 'sphere', 'A', 'B', 'C', 'discriminant', '
  */
 export function pixelCSV(r) {
   const n = (x) => (x === null || x === undefined ? '' : formatNumber(x));
-  const hitName = r.hit ? nameOf(r.hit.object, `object ${r.hit.index}`) : '';
+  const hitName = r.hit ? r.hit.name : '';
   const pixel = [r.x, r.y, formatAngle(r.h), formatAngle(r.v)];
   const after = [hitName, r.hit ? n(r.hit.t) : '', toHex(r.color), colorName(r.color)];
   const rows = r.tests.map((test, i) => {
     const q = test.quadratic, g = test.geometric;
-    return [...pixel, nameOf(test.sphere, `sphere ${i}`), n(q.A), n(q.B), n(q.C), n(q.discriminant), q.roots, rootsMeaning(q.roots),
+    return [...pixel, test.name, n(q.A), n(q.B), n(q.C), n(q.discriminant), q.roots, rootsMeaning(q.roots),
       n(q.t0), n(q.t1), n(g.L.x), n(g.L.y), n(g.L.z), n(g.tca), n(g.d2), n(g.thc), n(g.t0), n(g.t1),
       routesAgree(q, g), ...after];
   });

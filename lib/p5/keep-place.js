@@ -139,7 +139,7 @@ function scrollBack({ x, y }) {
 }
 
 /** Was this page load a reload (F5, or the dev server's live reload)? */
-function isReload() {
+export function isReload() {
   const navigation = /** @type {PerformanceNavigationTiming|undefined} */ (performance.getEntriesByType?.('navigation')[0]);
   return navigation?.type === 'reload';
 }

@@ -26,6 +26,7 @@ for (const file of sketchPages) {
     await page.goto(`/sketches/${file}`);
     await waitForDone(page);
     await expect(page.locator('.from-file')).toBeHidden(); // served: no word about files
+    await expect(page.locator('h1')).toHaveText(new RegExp(`^${file.slice(0, 2)} · \\S`)); // "08 · Homework 1: …", as the title
     const views = page.locator('[data-tracer]');
     const count = await views.count();
     expect(count).toBeGreaterThan(0);

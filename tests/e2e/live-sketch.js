@@ -10,8 +10,8 @@ import { expect } from '@playwright/test';
 
 const DIR = resolve('tests/e2e/pages');
 
-/** The README's page recipe, for tests/e2e/pages/<slug>.js. */
-function page(slug) {
+/** The README's page recipe, for tests/e2e/pages/<slug>.js; `main` what the page's main holds (nothing: the sketch makes it all). */
+function page(slug, main = '') {
   return `<!doctype html>
 <html lang="en">
 <head>
@@ -23,8 +23,8 @@ function page(slug) {
   <link rel="stylesheet" href="../../../sketches/sketch.css">
 </head>
 <body class="live-coding">
-  <header><h1>Live coding</h1></header>
-  <main id="sketch" class="rt-layout"></main>
+  <header><h1>99 · Live coding</h1></header>
+  <main id="sketch" class="rt-layout">${main}</main>
   <script type="module" src="./${slug}.js"></script>
 </body>
 </html>
@@ -67,9 +67,12 @@ export function lineOf(source, text) {
   return index + 1;
 }
 
-/** Writes tests/e2e/pages/<slug>.html and .js; returns the page's URL and helpers. */
-export function liveSketch(slug, source) {
-  writeFileSync(resolve(DIR, `${slug}.html`), page(slug));
+/**
+ * Writes tests/e2e/pages/<slug>.html and .js; returns the page's URL and helpers.
+ * @param {{ main?: string }} [options] `main`: markup inside the page's main (a column the sketch draws into)
+ */
+export function liveSketch(slug, source, { main = '' } = {}) {
+  writeFileSync(resolve(DIR, `${slug}.html`), page(slug, main));
   writeFileSync(resolve(DIR, `${slug}.js`), source);
   return {
     url: `/tests/e2e/pages/${slug}.html`,

@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import { checkOptions, editDistance } from '../../lib/check.js';
+import { checkOptions, editDistance, closestName } from '../../lib/check.js';
 import { Material } from '../../lib/material.js';
 import { Scene } from '../../lib/scene.js';
 import { Camera } from '../../lib/camera.js';
@@ -108,5 +108,30 @@ describe('valid options are unchanged', () => {
     const parallel = new ParallelRenderer({ workers: 1 });
     await expect(parallel.render(scene, camera, { onRow: () => {} }))
       .rejects.toThrow('unknown ParallelRenderer.render option "onRow" (did you mean "onRows"?)');
+  });
+});
+
+describe('closestName: "did you mean …?" for any name', () => {
+  it('finds the name a misspelling meant: a swap, a letter missing or doubled, another case', () => {
+    const kit = ['createTracerView', 'createInspector', 'createSceneView', 'createAnswerForm'];
+    expect(closestName('createTracerVeiw', kit)).toBe('createTracerView');
+    expect(closestName('createInspecter', kit)).toBe('createInspector');
+    expect(closestName('createtracerview', kit)).toBe('createTracerView');
+    expect(closestName('Spehre', ['Scene', 'Sphere', 'Plane', 'Box'])).toBe('Sphere');
+    expect(closestName('pinkk', ['pink', 'hotpink', 'purple'])).toBe('pink');
+  });
+
+  it('null when nothing is close enough: a short name may be one edit off, a long one three', () => {
+    expect(closestName('box', ['fox'])).toBe('fox');
+    expect(closestName('box', ['fix'])).toBeNull();
+    expect(closestName('makeSky', ['makeSphere', 'createSky2000'])).toBeNull();
+    expect(closestName('pinkish', ['pink', 'hotpink'])).toBeNull();
+    expect(closestName('anything', [])).toBeNull();
+    expect(closestName('colour', ['color'], 0)).toBeNull(); // the limit can be given
+  });
+
+  it('a tie goes to the name that keeps the letters written, then to the one with the same case', () => {
+    expect(closestName('gren', ['grey', 'green'])).toBe('green'); // both one edit; green holds g, r, e, n
+    expect(closestName('Red', ['RED', 'red'])).toBe('red'); // both 0 edits case aside; with case "red" is 1 edit, "RED" 2
   });
 });

@@ -100,3 +100,13 @@ describe('pink through the shading', () => {
     expect(colorName([230, 10, 10])).toBe('red');
   });
 });
+
+describe('a misspelt colour name', () => {
+  it('names the nearest colour name, and none when nothing is near', async () => {
+    const { toColor } = await import('../../lib/color.js');
+    expect(() => toColor('pinkk')).toThrow(`color must be a colour like '#ff5160', 'rgb(255, 81, 96)' or 'pink', got "pinkk" (did you mean 'pink'?)`);
+    expect(() => toColor('Yelow', 'material.color')).toThrow(/^material\.color must be .* got "yelow" \(did you mean 'yellow'\?\)$/);
+    expect(() => toColor('pinkish')).toThrow(/got "pinkish"$/);
+    expect(() => toColor('#ff51')).toThrow(/got "#ff51"$/); // not a name: no guess
+  });
+});

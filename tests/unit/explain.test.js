@@ -132,3 +132,18 @@ describe('inspectPixel: bad coordinates name the field', () => {
     });
   }
 });
+
+describe('the names in the record', () => {
+  it('each test and the hit name their shape: its own name, else "sphere 1", "plane 1"', () => {
+    const scene = new Scene({ background: [0, 0, 0] })
+      .add(new Plane([0, -4, 0], [0, 1, 0]))
+      .add(new Sphere([0, 0, -20], 4))
+      .add(new Sphere([8, 0, -20], 1, { name: 'moon' }))
+      .add(new PointLight([0, 20, 0]));
+    const camera = new Camera({ width: 32, height: 24 });
+    const centre = inspectPixel(scene, camera, 16, 12);
+    expect(centre.tests.map((t) => t.name)).toEqual(['sphere 1', 'moon']);
+    expect(centre.hit.name).toBe('sphere 1');
+    expect(inspectPixel(scene, camera, 16, 23).hit.name).toBe('plane 1'); // the bottom row: the ground
+  });
+});

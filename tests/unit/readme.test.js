@@ -18,10 +18,11 @@ describe('README', () => {
     }
   });
 
-  it.each(pages)('%s has a title, a description, the shared stylesheet, <main id="sketch"> and its script', (file) => {
+  it.each(pages)('%s has a title and a heading with its number, a description, the shared stylesheet, <main id="sketch"> and its script', (file) => {
     const html = readFileSync(`sketches/${file}`, 'utf8');
     const [, number, slug] = /^(\d\d)-(.+)\.html$/.exec(file);
     expect(html).toMatch(new RegExp(`<title>${number} · [^<]+</title>`));
+    expect(html).toMatch(new RegExp(`<h1>${number} · [^<]+</h1>`)); // the heading has its number, as the title
     expect(html).toMatch(/<meta name="description" content="[^"]+">/);
     expect(html).toContain('<link rel="stylesheet" href="./sketch.css">');
     expect(html).toContain('<main id="sketch"');

@@ -83,3 +83,17 @@ describe('Scene: bad input names the field', () => {
     expect(scene.objects).toEqual([]);
   });
 });
+
+describe('shapeName: what an unnamed shape is called on the page', () => {
+  it('its own name, else its kind and its number among that kind, from 1', async () => {
+    const { shapeName } = await import('../../lib/scene.js');
+    const scene = new Scene()
+      .add(new Plane([0, -1, 0], [0, 1, 0]))
+      .add(new Sphere([0, 0, -20], 4))
+      .add(new Sphere([5, 0, -20], 1, { name: 'moon' }))
+      .add(new Box([-1, -1, -9], [1, 1, -7]))
+      .add(new Sphere([-5, 0, -20], 1));
+    expect(scene.objects.map((o) => shapeName(o, scene.objects))).toEqual(['plane 1', 'sphere 1', 'moon', 'box 1', 'sphere 3']);
+    expect(shapeName(new Sphere([0, 0, 0], 1), [])).toBe('sphere'); // not in the list: its kind alone
+  });
+});

@@ -58,3 +58,40 @@ describe('swapHooks: which page scripts a save swaps in place', () => {
     expect(swapHooks(ROOT, file, `${SKETCH}// setTimeout in a comment is nothing\nconst view = { timeout: 1 };\n`)).not.toBeNull();
   });
 });
+
+describe("syntaxErrorsWhereTheyAre: a page's script importing what the kit does not have", () => {
+  const file = resolve('sketches/10-playground.js');
+  const SKETCH = "import p5 from 'p5';\nimport { Scene, Spehre } from '../lib/index.js';\nimport '../lib/p5/index.js';\nnew p5(() => {});\n";
+
+  it('a name the kit does not export: shown on the page at the import, with the nearest export', () => {
+    const code = transform(SKETCH, file);
+    expect(code).toContain('"SyntaxError: The requested module \'../lib/index.js\' does not provide an export named \'Spehre\'"');
+    expect(code).toContain('"file":"sketches/10-playground.js","line":2,"column":17');
+    expect(code).toContain('"suggestion":"did you mean Sphere?"');
+    expect(SKETCH.split('\n')[1].slice(16, 22)).toBe('Spehre'); // column 17 is where the name starts
+  });
+
+  it('a p5 method of the addon imported as if exported: the method it is, and how to call it', () => {
+    const veiw = transform("import p5 from 'p5';\nimport { createTracerVeiw } from '../lib/p5/index.js';\n", file);
+    expect(veiw).toContain('"suggestion":"did you mean createTracerView? It is a method of p, not an export: write p.createTracerView({ … })"');
+    const exact = transform("import { createInspector } from '../lib/p5/index.js';\n", file);
+    expect(exact).toContain('"suggestion":"createInspector is a method of p, not an export: write p.createInspector({ … })"');
+  });
+
+  it('a kit file that is not there names the nearest file; good imports and other modules are left alone', () => {
+    const code = transform("import '../lib/p5/indx.js';\n", file);
+    expect(code).toContain('there is no lib/p5/indx.js');
+    expect(code).toContain(`"suggestion":"did you mean '../lib/p5/index.js'?"`);
+    expect(transform("import { Scene, Sphere, Camera, render } from '../lib/index.js';\nimport { TracerView, FACTORIES } from '../lib/p5/index.js';\n", file)).toBeNull();
+    expect(transform("import { Spehre } from '../lib/index.js';\n", resolve('lib/some-helper.js'))).toBeNull(); // not a page's script
+    expect(transform("import { anything } from './helper.js';\n", file)).toBeNull(); // the sketch's own module: the browser says
+  });
+
+  it('every page the dev server serves gets the classic script that reports a module the browser refused', () => {
+    const [tag] = plugin.transformIndexHtml();
+    expect(tag).toMatchObject({ tag: 'script', injectTo: 'head-prepend' });
+    expect(tag.children).toContain('import("/lib/p5/error-panel.js")');
+    expect(tag.children).toContain('showModuleFailure');
+    expect(tag.attrs?.type).toBeUndefined(); // classic: it runs even when every module of the page fails
+  });
+});
