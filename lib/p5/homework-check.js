@@ -6,6 +6,7 @@
  *   p.createHomeworkCheck({ view, check: checkTrafficSignal, parent: 'check', problem });
  */
 import { element, resolveParent, sketchNode } from './dom.js';
+import { createAnnouncer } from './announce.js';
 import { checkOptions } from '../check.js';
 
 /**
@@ -26,17 +27,20 @@ export function createHomeworkCheck(p, options) {
   const button = element('button', { type: 'button', class: 'rt-button' }, 'Check my scene');
   const results = element('div', { 'data-check-results': '' }, 'Press the button to check your scene against the task.');
   const warning = problem ? element('p', { class: 'hw-warning', role: 'alert' }, problem) : null;
-  host.append(button, results, ...(warning ? [warning] : []));
-  const run = () => showCheck(results, check(view.scene, view.camera));
+  const announcer = createAnnouncer({ name: 'check' }); // the verdict is said; the list is read on demand
+  host.append(button, results, announcer.element, ...(warning ? [warning] : []));
+  const run = () => announcer.say(showCheck(results, check(view.scene, view.camera)));
   button.addEventListener('click', run);
-  return { button, results, run, destroy: () => { button.remove(); results.remove(); warning?.remove(); } };
+  return { button, results, run, destroy: () => { announcer.destroy(); button.remove(); results.remove(); announcer.element.remove(); warning?.remove(); } };
 }
 
 /**
  * Shows a check's result in `target` (a DOM element): a headline ("Passed!"
  * or "Not yet: n checks to fix") and one line per check, ✓, ✗ or – (waiting),
  * with its message. The element gets `data-check="passed"|"not-yet"`; each
- * line `data-check-item="passed"|"failed"|"skipped"`.
+ * line `data-check-item="passed"|"failed"|"skipped"`, and says in words (for a
+ * screen reader; the marks are hidden from it) "passed", "to fix" or "waiting".
+ * Returns the verdict in one line: the headline and the checks to fix.
  */
 export function showCheck(target, { passed, checks }) {
   const toFix = checks.filter((c) => !c.passed && !c.skipped && !c.bonus).length;
@@ -47,9 +51,14 @@ export function showCheck(target, { passed, checks }) {
     const state = c.passed ? 'passed' : c.skipped ? 'skipped' : 'failed';
     const item = element('li', { 'data-check-item': state, class: `hw-${state}${c.bonus ? ' hw-bonus' : ''}` });
     item.append(element('span', { class: 'hw-mark', 'aria-hidden': 'true' }, c.passed ? '✓' : c.skipped ? '–' : '✗'),
-      element('b', {}, c.label), element('span', { class: 'hw-detail' }, c.detail));
+      element('b', {}, element('span', { class: 'rt-visually-hidden' }, `${STATE_WORDS[state]}: `), c.label), element('span', { class: 'hw-detail' }, ' ', c.detail));
     list.append(item);
   }
   target.dataset.check = passed ? 'passed' : 'not-yet';
   target.replaceChildren(element('p', { class: 'hw-headline' }, headline), list);
+  const labels = checks.filter((c) => !c.passed && !c.skipped && !c.bonus).map((c) => c.label);
+  return labels.length ? `${headline} To fix: ${labels.join('; ')}.` : headline;
 }
+
+/** Each check's state in words. */
+const STATE_WORDS = { passed: 'Passed', failed: 'To fix', skipped: 'Waiting' };

@@ -18,6 +18,7 @@ import { toHex, colorName } from '../color.js';
 import { formatNumber, formatVector, formatAngle } from '../format.js';
 import { show, checkOptions } from '../check.js';
 import { useStyle, element, resolveParent, copyText } from './dom.js';
+import { createAnnouncer } from './announce.js';
 
 /** Relative tolerance within which the two intersection routes "agree". */
 export const AGREE_TOLERANCE = 1e-9;
@@ -57,16 +58,18 @@ export function createInspector(p, options) { // no options: checkOptions gives 
 export class Inspector {
   /** The last `inspectPixel` record shown, or null. */
   record = null;
-  #unsubscribe;
+  #unsubscribe; #announcer;
 
   constructor({ view, parent, title }) {
     if (!view || typeof view.onSelect !== 'function') throw new TypeError(`view must be a tracer view (createTracerView), got ${show(view)}`);
     this.view = view;
     useStyle();
-    this.element = element('section', { class: 'rt-inspector', 'data-inspector': '', 'aria-live': 'polite', 'aria-label': 'Pixel inspector' });
+    // Not a live region: its tables are read on demand; the pixel is said in one short status line.
+    this.element = element('section', { class: 'rt-inspector', 'data-inspector': '', 'aria-label': 'Pixel inspector' });
+    this.#announcer = createAnnouncer({ name: 'pixel' });
     this.answer = element('p', { class: 'rt-answer', 'data-answer': '' });
     this.body = element('div', { class: 'rt-inspector-body' });
-    this.element.append(...[title && element('h2', { class: 'rt-inspector-title' }, title), this.answer, this.body, this.#csvTools()].filter(Boolean));
+    this.element.append(...[title && element('h2', { class: 'rt-inspector-title' }, title), this.answer, this.#announcer.element, this.body, this.#csvTools()].filter(Boolean));
     resolveParent(parent, view.figure?.parentElement ?? document.body).append(this.element);
     this.#unsubscribe = view.onSelect((selected) => this.show(selected));
     this.show(view.selected);
@@ -84,6 +87,7 @@ export class Inspector {
     }
     const r = this.record = inspectPixel(this.view.scene, this.view.camera, selected.x, selected.y);
     this.answer.textContent = answerLine(r);
+    this.#announcer.say(pixelAnnouncement(r));
     this.element.dataset.x = String(r.x);
     this.element.dataset.y = String(r.y);
     this.#showBody(r, rowsThatMatter(r));
@@ -132,6 +136,7 @@ export class Inspector {
   /** Stops following the view and removes the panel. */
   destroy() {
     this.#unsubscribe();
+    this.#announcer.destroy();
     this.element.remove();
   }
 
@@ -155,6 +160,26 @@ export class Inspector {
  */
 export function answerLine({ x, y, h, v }) {
   return `Pixel: ${x},${y}; H: ${formatAngle(h)}; V: ${formatAngle(v)}`;
+}
+
+/**
+ * What a screen reader says of a selected pixel: its answer line, its colour
+ * name and what its ray hit, in one short sentence.
+ * @example
+ * pixelAnnouncement(inspectPixel(classScene(), camera, 11, 12)); // 'Pixel: 11,12; H: -5.7; V: -0.6. Pink, the pink sphere.'
+ */
+export function pixelAnnouncement(r) {
+  const name = colorName(r.color);
+  const hit = r.hit ? `the ${hitName(r.hit)}` : 'no hit, the background';
+  return `${answerLine(r)}. ${name.charAt(0).toUpperCase()}${name.slice(1)}, ${hit}.`;
+}
+
+/** "pink sphere" for a sphere named pink; "ground" for one named ground; "sphere 2" for one with no name. */
+function hitName(hit) {
+  const kind = hit.object?.radius ? 'sphere' : hit.object?.normal ? 'plane' : hit.object?.min ? 'box' : 'object';
+  const name = hit.object?.name?.trim();
+  if (!name) return `${kind} ${hit.index}`;
+  return /^(pink|red|orange|yellow|green|cyan|blue|purple|white|gray|grey|black|brown)$/i.test(name) ? `${name} ${kind}` : name;
 }
 
 /** What a number of roots means for the ray. */
