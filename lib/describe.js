@@ -129,13 +129,14 @@ function surfacePhrase(s) {
   return article(`${colorOf(s.object)} ${s.surface}`);
 }
 
-/** "pink sphere", "glowing yellow sphere (a light)", "orange sphere called yellow". */
+/** "pink sphere", "white mirror sphere", "glowing yellow sphere (a light)", "orange sphere called yellow". */
 function nounPhrase(o) {
-  const color = colorOf(o), kind = kindOf(o);
-  if (o.material.isEmissive) return `glowing ${color} ${kind} (a light)`;
+  const m = o.material, color = colorOf(o), kind = kindOf(o);
+  if (m.isEmissive) return `glowing ${color} ${kind} (a light)`;
+  const words = [color, m.reflection >= 0.5 && 'mirror', m.transparency >= 0.5 && 'glass', kind].filter(Boolean).join(' ');
   const name = typeof o.name === 'string' ? o.name.trim() : '';
-  const called = name && name !== color && !/^(sphere|box|plane)\s*\d*$/i.test(name) ? ` called ${name.slice(0, 40)}` : '';
-  return `${color} ${kind}${called}`;
+  const said = name && (words.split(' ').includes(name.toLowerCase()) || /^(sphere|box|plane)\s*\d*$/i.test(name));
+  return name && !said ? `${words} called ${name.slice(0, 40)}` : words;
 }
 
 function kindOf(o) {
