@@ -276,7 +276,7 @@ function lightsSection(r) {
         element('span', { class: 'rt-swatch rt-swatch-small', style: `background: ${toHex(added.map((c) => Math.min(1, c) * 255))}` }),
         element('span', { class: 'rt-value rt-wrap', 'data-field': 'contribution', 'data-value': added.join(','), ...at }, `(${added.map(formatNumber).join(', ')})`)));
   });
-  return section('Lights (one shadow ray each)', table(['light', 'cos θ', 'shadow ray', 'adds (r, g, b)'], rows));
+  return section('Lights (one shadow ray each)', table(['light', 'cos θ', 'shadow ray', 'adds (r, g, b)'], rows, 'Lights'));
 }
 
 function sphereCell(test, i) {
@@ -317,7 +317,7 @@ function quadraticSection(r, tests = r.tests, more = null) {
       element('td', {}, value('t0', q.t0, at)),
       element('td', {}, value('t1', q.t1, at)));
   });
-  return section('Quadratic route: At² + Bt + C = 0', rows.length ? table(head, rows) : noSpheres(), more,
+  return section('Quadratic route: At² + Bt + C = 0', rows.length ? table(head, rows, 'Quadratic route') : noSpheres(), more,
     element('p', { class: 'rt-note' }, 'Discriminant < 0: no hit; = 0: tangent; > 0: two hits, t = (−B ± √(B² − 4AC)) / 2A. The nearest hit is the smallest positive t (highlighted row).'));
 }
 
@@ -335,7 +335,7 @@ function geometricSection(r, tests = r.tests, more = null) {
         title: agree ? 'Both routes find the same roots' : 'The two routes disagree',
       }, agree ? '✓' : '✗')));
   });
-  return section('Geometric route: tca = L·Rd, d² = L·L − tca², thc = √(r² − d²)', rows.length ? table(head, rows) : noSpheres(), more,
+  return section('Geometric route: tca = L·Rd, d² = L·L − tca², thc = √(r² − d²)', rows.length ? table(head, rows, 'Geometric route') : noSpheres(), more,
     element('p', { class: 'rt-note' }, 'd > r: the ray passes the sphere by. Otherwise t = tca ∓ thc — the same roots as the quadratic.'));
 }
 
@@ -352,8 +352,9 @@ function noSpheres() {
   return element('p', { class: 'rt-muted rt-empty', 'data-field': 'no-spheres' }, 'No spheres in the scene yet: nothing to test this ray against.');
 }
 
-function table(head, rows) {
-  return element('div', { class: 'rt-table-wrap' }, element('table', { class: 'rt-table' },
+/** A table in a box that scrolls sideways when narrow: the box takes focus (the arrow keys scroll it) and is named. */
+function table(head, rows, name) {
+  return element('div', { class: 'rt-table-wrap', tabindex: '0', role: 'region', 'aria-label': `${name} table` }, element('table', { class: 'rt-table' },
     element('thead', {}, element('tr', {}, ...head.map((h) => element('th', { scope: 'col' }, h)))),
     element('tbody', {}, ...rows)));
 }
