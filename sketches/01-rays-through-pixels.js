@@ -50,7 +50,7 @@ new p5((p) => {
     slow.parent(controls); again.parent(controls);
     view.figure.after(controls.elt);
     slow.changed(() => view.setRenderMode(slow.checked() ? 'slow' : 'scanline'));
-    again.mousePressed(() => view.restart());
+    again.elt.addEventListener('click', () => view.restart()); // a click, Enter or Space (p5's mousePressed is the mouse only)
 
     // Pointing at a pixel shows its ray; leaving the picture shows the selected one again.
     view.canvas.addEventListener('pointermove', (e) => { hovered = view.pixelAt(e.clientX, e.clientY); });

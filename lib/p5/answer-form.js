@@ -77,7 +77,9 @@ export function createAnswerForm(p, options) {
     read() {
       const values = readBoxes(boxes);
       if (!values) {
-        result.replaceChildren('Fix the box marked in red, then Check again.');
+        // names the boxes in words, not only by their red mark
+        const bad = Object.values(boxes).filter((b) => b.message.textContent).map((b) => b.input.getAttribute('aria-label'));
+        result.replaceChildren(`Fix ${bad.length === 1 ? 'the box' : 'the boxes'} ${bad.join(', ')} (marked in red, the reason beside it), then Check again.`);
         result.dataset.result = 'error';
       }
       return values;

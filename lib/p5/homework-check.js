@@ -8,6 +8,7 @@
  *   p.createHomeworkCheck({ view, check: checkTrafficSignal, parent: 'check', problem });
  */
 import { element, resolveParent, sketchNode, useStyle } from './dom.js';
+import { createAnnouncer } from './announce.js';
 import { checkOptions } from '../check.js';
 
 /**
@@ -29,11 +30,12 @@ export function createHomeworkCheck(p, options) {
   const button = element('button', { type: 'button', class: 'rt-button' }, 'Check my scene');
   const results = element('div', { 'data-check-results': '' }, 'Press the button to check your scene against the task.');
   const warning = problem ? element('p', { class: 'hw-warning', role: 'alert' }, problem) : null;
-  const box = element('div', { class: 'rt-check' }, button, results, warning); // a block of its own, whatever the page around it
+  const announcer = createAnnouncer({ name: 'check' }); // the verdict is said; the list is read on demand
+  const box = element('div', { class: 'rt-check' }, button, results, announcer.element, warning); // a block of its own, whatever the page around it
   host.append(box);
-  const run = () => showCheck(results, check(view.scene, view.camera, { prefix: libraryPrefix(p) }));
+  const run = () => announcer.say(showCheck(results, check(view.scene, view.camera, { prefix: libraryPrefix(p) })));
   button.addEventListener('click', run);
-  return { button, results, run, destroy: () => box.remove() };
+  return { button, results, run, destroy: () => { announcer.destroy(); box.remove(); } };
 }
 
 /** 'RT.' in a global-mode sketch that has the one-file build's RT, else ''. */
@@ -45,7 +47,9 @@ function libraryPrefix(p) {
  * Shows a check's result in `target` (a DOM element): a headline ("Passed!"
  * or "Not yet: n checks to fix") and one line per check, ✓, ✗ or – (waiting),
  * with its message. The element gets `data-check="passed"|"not-yet"`; each
- * line `data-check-item="passed"|"failed"|"skipped"`.
+ * line `data-check-item="passed"|"failed"|"skipped"`, and says in words (for a
+ * screen reader; the marks are hidden from it) "passed", "to fix" or "waiting".
+ * Returns the verdict in one line: the headline and the checks to fix.
  */
 export function showCheck(target, { passed, checks }) {
   const toFix = checks.filter((c) => !c.passed && !c.skipped && !c.bonus).length;
@@ -56,9 +60,14 @@ export function showCheck(target, { passed, checks }) {
     const state = c.passed ? 'passed' : c.skipped ? 'skipped' : 'failed';
     const item = element('li', { 'data-check-item': state, class: `hw-${state}${c.bonus ? ' hw-bonus' : ''}` });
     item.append(element('span', { class: 'hw-mark', 'aria-hidden': 'true' }, c.passed ? '✓' : c.skipped ? '–' : '✗'),
-      element('b', {}, c.label), element('span', { class: 'hw-detail' }, c.detail));
+      element('b', {}, element('span', { class: 'rt-visually-hidden' }, `${STATE_WORDS[state]}: `), c.label), element('span', { class: 'hw-detail' }, ' ', c.detail));
     list.append(item);
   }
   target.dataset.check = passed ? 'passed' : 'not-yet';
   target.replaceChildren(element('p', { class: 'hw-headline' }, headline), list);
+  const labels = checks.filter((c) => !c.passed && !c.skipped && !c.bonus).map((c) => c.label);
+  return labels.length ? `${headline} To fix: ${labels.join('; ')}.` : headline;
 }
+
+/** Each check's state in words. */
+const STATE_WORDS = { passed: 'Passed', failed: 'To fix', skipped: 'Waiting' };

@@ -18,6 +18,7 @@ import { toHex, colorName } from '../color.js';
 import { formatNumber, formatVector, formatAngle } from '../format.js';
 import { show, checkOptions } from '../check.js';
 import { useStyle, element, resolveParent, copyText } from './dom.js';
+import { createAnnouncer } from './announce.js';
 
 /** Relative tolerance within which the two intersection routes "agree". */
 export const AGREE_TOLERANCE = 1e-9;
@@ -57,16 +58,18 @@ export function createInspector(p, options) { // no options: checkOptions gives 
 export class Inspector {
   /** The last `inspectPixel` record shown, or null. */
   record = null;
-  #unsubscribe;
+  #unsubscribe; #announcer;
 
   constructor({ view, parent, title }) {
     if (!view || typeof view.onSelect !== 'function') throw new TypeError(`view must be a tracer view (createTracerView), got ${show(view)}`);
     this.view = view;
     useStyle();
-    this.element = element('section', { class: 'rt-inspector', 'data-inspector': '', 'aria-live': 'polite', 'aria-label': 'Pixel inspector' });
+    // Not a live region: its tables are read on demand; the pixel is said in one short status line.
+    this.element = element('section', { class: 'rt-inspector', 'data-inspector': '', 'aria-label': 'Pixel inspector' });
+    this.#announcer = createAnnouncer({ name: 'pixel' });
     this.answer = element('p', { class: 'rt-answer', 'data-answer': '' });
     this.body = element('div', { class: 'rt-inspector-body' });
-    this.element.append(...[title && element('h2', { class: 'rt-inspector-title' }, title), this.answer, this.body, this.#csvTools()].filter(Boolean));
+    this.element.append(...[title && element('h2', { class: 'rt-inspector-title' }, title), this.answer, this.#announcer.element, this.body, this.#csvTools()].filter(Boolean));
     resolveParent(parent, view.figure?.parentElement ?? document.body).append(this.element);
     this.#unsubscribe = view.onSelect((selected) => this.show(selected));
     this.show(view.selected);
@@ -84,6 +87,7 @@ export class Inspector {
     }
     const r = this.record = inspectPixel(this.view.scene, this.view.camera, selected.x, selected.y);
     this.answer.textContent = answerLine(r);
+    this.#announcer.say(pixelAnnouncement(r));
     this.element.dataset.x = String(r.x);
     this.element.dataset.y = String(r.y);
     this.#showBody(r, rowsThatMatter(r));
@@ -132,6 +136,7 @@ export class Inspector {
   /** Stops following the view and removes the panel. */
   destroy() {
     this.#unsubscribe();
+    this.#announcer.destroy();
     this.element.remove();
   }
 
@@ -155,6 +160,26 @@ export class Inspector {
  */
 export function answerLine({ x, y, h, v }) {
   return `Pixel: ${x},${y}; H: ${formatAngle(h)}; V: ${formatAngle(v)}`;
+}
+
+/**
+ * What a screen reader says of a selected pixel: its answer line, its colour
+ * name and what its ray hit, in one short sentence.
+ * @example
+ * pixelAnnouncement(inspectPixel(classScene(), camera, 11, 12)); // 'Pixel: 11,12; H: -5.7; V: -0.6. Pink, the pink sphere.'
+ */
+export function pixelAnnouncement(r) {
+  const name = colorName(r.color);
+  const hit = r.hit ? `the ${hitName(r.hit)}` : 'no hit, the background';
+  return `${answerLine(r)}. ${name.charAt(0).toUpperCase()}${name.slice(1)}, ${hit}.`;
+}
+
+/** "pink sphere" for a sphere named pink; "ground" for one named ground; "sphere 2" for one with no name. */
+function hitName(hit) {
+  const kind = hit.object?.radius ? 'sphere' : hit.object?.normal ? 'plane' : hit.object?.min ? 'box' : 'object';
+  const name = hit.object?.name?.trim();
+  if (!name) return `${kind} ${hit.index}`;
+  return /^(pink|red|orange|yellow|green|cyan|blue|purple|white|gray|grey|black|brown)$/i.test(name) ? `${name} ${kind}` : name;
 }
 
 /** What a number of roots means for the ray. */
@@ -251,7 +276,7 @@ function lightsSection(r) {
         element('span', { class: 'rt-swatch rt-swatch-small', style: `background: ${toHex(added.map((c) => Math.min(1, c) * 255))}` }),
         element('span', { class: 'rt-value rt-wrap', 'data-field': 'contribution', 'data-value': added.join(','), ...at }, `(${added.map(formatNumber).join(', ')})`)));
   });
-  return section('Lights (one shadow ray each)', table(['light', 'cos θ', 'shadow ray', 'adds (r, g, b)'], rows));
+  return section('Lights (one shadow ray each)', table(['light', 'cos θ', 'shadow ray', 'adds (r, g, b)'], rows, 'Lights'));
 }
 
 function sphereCell(test) {
@@ -292,7 +317,7 @@ function quadraticSection(r, tests = r.tests, more = null) {
       element('td', {}, value('t0', q.t0, at)),
       element('td', {}, value('t1', q.t1, at)));
   });
-  return section('Quadratic route: At² + Bt + C = 0', rows.length ? table(head, rows) : noSpheres(), more,
+  return section('Quadratic route: At² + Bt + C = 0', rows.length ? table(head, rows, 'Quadratic route') : noSpheres(), more,
     element('p', { class: 'rt-note' }, 'Discriminant < 0: no hit; = 0: tangent; > 0: two hits, t = (−B ± √(B² − 4AC)) / 2A. The nearest hit is the smallest positive t (highlighted row).'));
 }
 
@@ -310,7 +335,7 @@ function geometricSection(r, tests = r.tests, more = null) {
         title: agree ? 'Both routes find the same roots' : 'The two routes disagree',
       }, agree ? '✓' : '✗')));
   });
-  return section('Geometric route: tca = L·Rd, d² = L·L − tca², thc = √(r² − d²)', rows.length ? table(head, rows) : noSpheres(), more,
+  return section('Geometric route: tca = L·Rd, d² = L·L − tca², thc = √(r² − d²)', rows.length ? table(head, rows, 'Geometric route') : noSpheres(), more,
     element('p', { class: 'rt-note' }, 'd > r: the ray passes the sphere by. Otherwise t = tca ∓ thc — the same roots as the quadratic.'));
 }
 
@@ -327,8 +352,9 @@ function noSpheres() {
   return element('p', { class: 'rt-muted rt-empty', 'data-field': 'no-spheres' }, 'No spheres in the scene yet: nothing to test this ray against.');
 }
 
-function table(head, rows) {
-  return element('div', { class: 'rt-table-wrap' }, element('table', { class: 'rt-table' },
+/** A table in a box that scrolls sideways when narrow: the box takes focus (the arrow keys scroll it) and is named. */
+function table(head, rows, name) {
+  return element('div', { class: 'rt-table-wrap', tabindex: '0', role: 'region', 'aria-label': `${name} table` }, element('table', { class: 'rt-table' },
     element('thead', {}, element('tr', {}, ...head.map((h) => element('th', { scope: 'col' }, h)))),
     element('tbody', {}, ...rows)));
 }

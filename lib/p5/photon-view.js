@@ -17,6 +17,8 @@ import { checkOptions, positiveInteger, show } from '../check.js';
 import { registerView } from './page-state.js';
 import { useStyle, element, resolveParent, sketchNode } from './dom.js';
 import { RAY_COLORS } from './scene-view.js';
+import { arrowMove } from './tracer-input.js';
+import { describeScene } from '../describe.js';
 
 const OPTIONS = ['scene', 'camera', 'seed', 'eyeRadius', 'photons', 'samplePaths', 'scale', 'parent', 'label', 'budgetMs', 'link', 'sceneView'];
 
@@ -41,6 +43,8 @@ export function createPhotonView(p, options) {
   return new PhotonView(p, options);
 }
 
+let ids = 0;
+
 export class PhotonView {
   #tracer; #target; #ctx; #image; #page; #raf = 0; #destroyed = false;
 
@@ -56,7 +60,7 @@ export class PhotonView {
     this.link = link;
     this.sceneView = sceneView;
     useStyle();
-    this.#buildDom(p, parent, label, scale, camera);
+    this.#buildDom(p, parent, label, scale, camera, scene);
     this.#page = registerView(this);
     this.#schedule();
   }
@@ -108,11 +112,14 @@ export class PhotonView {
     })));
   }
 
-  #buildDom(p, parent, label, scale, camera) {
+  #buildDom(p, parent, label, scale, camera, scene) {
     const W = camera.width, H = camera.height;
+    const described = element('p', { id: `rt-photon-description-${++ids}`, hidden: '', 'data-picture-description': '' },
+      `${W} by ${H} pixels, made by photons from the lights. ${describeScene(scene, camera)}`);
     const c = this.canvasElement = element('canvas', {
       class: 'rt-photon-canvas', 'data-tracer': '', 'data-photons': '', 'data-width': W, 'data-height': H, width: W, height: H,
-      'aria-label': 'The picture made by the photons that reached the eye',
+      role: 'img', tabindex: '0', 'aria-describedby': described.id,
+      'aria-label': 'The picture made by the photons that reached the eye: click a pixel, or use the arrow keys, to select it in the other picture',
     });
     Object.assign(c.style, { width: `${W * scale}px`, height: `${H * scale}px`, imageRendering: 'pixelated', display: 'block', background: '#000', cursor: 'crosshair' });
     this.#ctx = c.getContext('2d');
@@ -120,7 +127,7 @@ export class PhotonView {
     this.countText = element('p', { class: 'rt-photon-count', 'data-photon-count': '' });
     const more = element('button', { type: 'button', class: 'rt-button', 'data-photons-more': '' }, `Send ${this.photonsPerRun.toLocaleString('en-US')} more`);
     more.addEventListener('click', () => this.more());
-    this.figure = element('figure', { class: 'rt-view rt-photon-view' }, label ? element('figcaption', { class: 'rt-label' }, label) : null, c, this.countText, more);
+    this.figure = element('figure', { class: 'rt-view rt-photon-view' }, label ? element('figcaption', { class: 'rt-label' }, label) : null, c, this.countText, more, described);
     resolveParent(parent, sketchNode(p)).append(this.figure);
     c.addEventListener('pointerdown', (e) => {
       if (!this.link) return;
@@ -128,6 +135,12 @@ export class PhotonView {
       const x = Math.min(W - 1, Math.max(0, Math.floor(((e.clientX - box.left) / box.width) * W)));
       const y = Math.min(H - 1, Math.max(0, Math.floor(((e.clientY - box.top) / box.height) * H)));
       this.link.select(x, y);
+    });
+    c.addEventListener('keydown', (e) => { // the same keys as the tracer view's: arrows, Shift for ten
+      const next = this.link && arrowMove(e.key, e.shiftKey, this.link.selected, W, H);
+      if (!next) return;
+      e.preventDefault();
+      this.link.select(next.x, next.y);
     });
   }
 }

@@ -38,7 +38,8 @@ export function findPixels(rgba, width, height, test) {
 export function createPixelMarks(p, options) {
   const { view, name = 'pixel-marks' } = checkOptions(options, ['view', 'name'], 'createPixelMarks');
   const { width, height } = view.camera;
-  p.createCanvas(width, height).parent(view.canvas.parentElement).class(name).attribute(`data-${name}`, '').attribute('data-overlay', '');
+  // aria-hidden: the marks repeat what the picture and the count say
+  p.createCanvas(width, height).parent(view.canvas.parentElement).class(name).attribute(`data-${name}`, '').attribute('data-overlay', '').attribute('aria-hidden', 'true');
   p.pixelDensity(1);
   const marks = {
     clear() {
@@ -82,7 +83,7 @@ export function createPixelHighlight(p, options) {
   const { view, name, label, test, describe } = checkOptions(options, ['view', 'name', 'label', 'test', 'describe'], 'createPixelHighlight');
   const marks = createPixelMarks(p, { view, name: `${name}-marks` });
   const box = element('input', { type: 'checkbox', [`data-show-${name}`]: '' });
-  const count = element('span', { [`data-${name}-count`]: '' });
+  const count = element('span', { [`data-${name}-count`]: '', role: 'status', 'aria-atomic': 'true' }); // the count is said when it changes
   const controls = element('div', { class: 'controls' }, element('label', {}, box, label), count);
   view.figure.after(controls);
   let found = null, foundIn = null; // the marked pixels, and the { scene, camera } of their picture

@@ -27,6 +27,7 @@ import { show, checkOptions } from '../check.js';
 import {
   imagePlane, pixelCenter, pickImagePlane, geometricConstruction, raySegments, sceneBounds, orbitCamera, screenRay, projectToScreen, HUGE_RADIUS,
 } from '../rays3d.js';
+import { listenForOrbitKeys, createOrbitButtons } from './scene-view-keys.js';
 import { useStyle, element, resolveParent } from './dom.js';
 import { INK, MUTED, RAY, NORMAL, LIT, SHADOW, CONSTRUCT, FONT } from './diagrams/style.js';
 
@@ -86,6 +87,8 @@ export class SceneView {
   #extra = []; #drag = null; #target; #geometry = null; #glass = null; #geometryKey = '';
   /** Shoot: rays in flight `{ segments, t0 }`, the pixel traced last, the row / column fan ('h' / 'v'). */
   #constructionSphere = null; #construction = []; #constructionLabels = [];
+  /** @type {HTMLButtonElement|null} the Stop button (none without controls) */
+  stopButton = null;
   #flying = []; #shots = 0; #shooting = false; #lastShot = null; #fan = null; #fanSegments = []; #watching = 0; #labels = [];
 
   constructor(p, options = {}) {
@@ -151,6 +154,17 @@ export class SceneView {
     return this.redraw();
   }
 
+  /** Turns the view by `yaw` and `pitch` degrees (the arrow keys do this); redraws. */
+  turn(yaw, pitch) {
+    return this.setOrbit({ yaw: this.#orbit.yaw + yaw, pitch: this.#orbit.pitch + pitch });
+  }
+
+  /** Multiplies the view's distance by `factor` (< 1: nearer; + and − do this), within what the wheel allows. */
+  zoom(factor) {
+    const r = this.#bounds.radius;
+    return this.setOrbit({ distance: clamp(this.#orbit.distance * factor, r * 0.3, r * 8) });
+  }
+
   /** Back to the first point of view. */
   reset() {
     this.#orbit = { ...this.#home };
@@ -188,12 +202,26 @@ export class SceneView {
     this.#flying = [];
     this.#lastShot = null;
     this.#shots = 0;
+    if (!this.#shooting) this.#modeBeforeShoot = this.#view.renderMode;
     this.#shooting = true;
+    if (this.stopButton) this.stopButton.disabled = false;
     this.#view.renderer.slowRaysPerSecond = raysPerSecond;
     this.#view.setRenderMode('slow');
     this.#watchTrace();
     return this;
   }
+
+  /** Stops a Shoot: no more rays fly, and the picture finishes at full speed in the order it had before. */
+  stop() {
+    if (!this.#shooting) return this;
+    this.#shooting = false;
+    this.#flying = [];
+    if (this.stopButton) this.stopButton.disabled = true;
+    this.#view.setRenderMode(this.#modeBeforeShoot === 'slow' ? 'coarse' : this.#modeBeforeShoot);
+    return this.redraw();
+  }
+
+  #modeBeforeShoot = 'coarse';
 
   /** Changes how fast Shoot sends rays, even while it runs. */
   setSpeed(raysPerSecond) {
@@ -234,7 +262,14 @@ export class SceneView {
   /** Draws on the next animation frame (once, however often it is asked). */
   redraw() {
     if (!this.#raf && !this.#destroyed) this.#raf = requestAnimationFrame(this.#frame);
-    if (this.canvas) this.canvas.dataset.state = 'drawing';
+    const c = this.canvas;
+    if (c) {
+      c.dataset.state = 'drawing';
+      // where it looks from, for tests and tools: the arrow keys change these
+      c.dataset.yaw = String(Math.round(this.#orbit.yaw * 100) / 100);
+      c.dataset.pitch = String(Math.round(this.#orbit.pitch * 100) / 100);
+      c.dataset.distance = String(Math.round(this.#orbit.distance * 100) / 100);
+    }
     return this;
   }
 
@@ -320,7 +355,10 @@ export class SceneView {
         this.#pictureKey = '';
         this.redraw();
       }
-      if (this.#shooting && (v.done || v.renderMode !== 'slow')) this.#shooting = false;
+      if (this.#shooting && (v.done || v.renderMode !== 'slow')) {
+        this.#shooting = false;
+        if (this.stopButton) this.stopButton.disabled = true;
+      }
       if (progress !== seen) {
         const now = performance.now();
         // keep the trace's pace: while it runs, redraw only when enough time has passed since the last draw
@@ -643,6 +681,8 @@ export class SceneView {
       reset.addEventListener('click', () => this.reset());
       const shoot = element('button', { type: 'button', class: 'rt-button', 'data-view3d-shoot': '', title: 'Trace the picture again, one ray at a time, and watch each ray fly' }, 'Shoot rays');
       shoot.addEventListener('click', () => this.shoot());
+      this.stopButton = element('button', { type: 'button', class: 'rt-button', 'data-view3d-stop': '', title: 'Stop shooting rays (Esc)', disabled: '' }, 'Stop');
+      this.stopButton.addEventListener('click', () => this.stop());
       const speedText = element('span', { class: 'rt-view3d-speed-text' }, `${this.raysPerSecond} rays/s`);
       const speed = element('input', {
         type: 'range', min: '0', max: String(SPEEDS.length - 1), step: '1', value: String(SPEEDS.indexOf(this.raysPerSecond)),
@@ -657,7 +697,7 @@ export class SceneView {
       speedLabel.style.display = 'inline-flex';
       speedLabel.style.alignItems = 'center';
       speedLabel.style.gap = '0.4rem';
-      this.bar.append(shoot, speedLabel, reset);
+      this.bar.append(shoot, this.stopButton, speedLabel, reset, createOrbitButtons(this));
     }
     this.figure.append(this.bar);
     const host = resolveParent(parent, null);
@@ -691,7 +731,8 @@ export class SceneView {
     c.style.cursor = 'grab';
     c.setAttribute('data-view3d', '');
     c.setAttribute('tabindex', '0');
-    c.setAttribute('aria-label', 'The scene in 3D: drag to turn it, the wheel to zoom, click a pixel of the image plane to select it');
+    c.setAttribute('role', 'img');
+    c.setAttribute('aria-label', 'The scene in 3D: the arrow keys or dragging turn it, + and − or the wheel zoom it, Esc stops shooting rays; click a pixel of the image plane to select it');
     c.classList.add('rt-view3d-canvas');
     const s = this.#selected;
     c.setAttribute('data-selected', s ? `${s.x},${s.y}` : '');
@@ -709,6 +750,7 @@ export class SceneView {
     };
     c.addEventListener('keydown', keys);
     this.#view.canvas.addEventListener('keydown', keys);
+    listenForOrbitKeys(c, this.figure, this);
     c.addEventListener('pointerdown', (e) => {
       if (e.button !== 0) return;
       c.setPointerCapture?.(e.pointerId);

@@ -33,6 +33,7 @@ import { drawOverlay } from './tracer-overlay.js';
 import { pixelAt, listenForPixels } from './tracer-input.js';
 import { pngDataURL, pngFilename, download, createSaveButton } from './tracer-export.js';
 import { checkScale, pictureScale, sizePicture } from './tracer-layout.js';
+import { createPictureWords } from './picture-words.js';
 
 /**
  * Creates a tracer view inside a p5 sketch (call it from setup()).
@@ -80,7 +81,7 @@ export class TracerView {
   #renderer; #page; #imageData = null; #raf = 0; #destroyed = false;
   #scale; #grid; #mode; #selected = null; #listeners = [];
   #shownCurrent = null; #progressText = ''; #shownProblem = null;
-  #ctx; #overlayCtx; #onResize;
+  #ctx; #overlayCtx; #onResize; #words;
 
   /**
    * @param {import('p5').default} p
@@ -224,6 +225,7 @@ export class TracerView {
     if (done) {
       if (this.#shownCurrent) this.#drawOverlay(); // the "now tracing" marker goes
       this.#page.done();
+      this.#words.done();
       this.figure.dataset.state = 'done';
     }
   }
@@ -234,6 +236,7 @@ export class TracerView {
     this.#destroyed = true;
     cancelAnimationFrame(this.#raf);
     this.#renderer.terminate();
+    this.#words.destroy();
     window.removeEventListener('resize', this.#onResize);
     this.#page.unregister();
     this.figure.remove();
@@ -263,6 +266,7 @@ export class TracerView {
     }
     this.#blit(); // the cleared buffer: the old picture must not pass for the new one
     this.#showLegend();
+    this.#words.changed();
     this.figure.dataset.state = 'rendering';
     this.#page.rendering();
     this.#schedule();
@@ -334,6 +338,7 @@ export class TracerView {
       class: 'rt-canvas', 'data-tracer': '', tabindex: '0',
       'aria-label': 'Traced picture: click a pixel, or use the arrow keys, to inspect it',
     });
+    this.#words = createPictureWords(c, this); // role="img", described by what the scene shows
     c.style.imageRendering = 'pixelated'; // inline too: crisp pixels even before the stylesheet loads
     this.#ctx = c.getContext('2d');
     this.overlay = element('canvas', { class: 'rt-overlay', 'data-overlay': '', 'aria-hidden': 'true' });
@@ -350,7 +355,7 @@ export class TracerView {
     this.legendHost = element('div', { class: 'rt-legend-host' });
     this.workerNote = element('p', { class: 'rt-note rt-view-note', 'data-message': 'view-workers', role: 'status', hidden: true });
 
-    this.figure.append(stage, element('div', { class: 'rt-bar' }, this.progressBar, save), this.workerNote, this.legendHost);
+    this.figure.append(stage, element('div', { class: 'rt-bar' }, this.progressBar, save), this.workerNote, this.legendHost, this.#words.details, this.#words.description);
     parent.append(this.figure);
   }
 

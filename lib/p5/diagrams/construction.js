@@ -5,6 +5,7 @@ import { label, labelPlacer } from './labels.js';
 import { fmt } from '../../format.js';
 import { panel, closePanel, placeholder, clip, unclip, line, arrow, screenArrow, dot, ring, rightAngle, dimension, darker } from './draw.js';
 import { focusTest } from './focus.js';
+import { nameDiagram } from './aria.js';
 
 /**
  * The lesson's geometric route for one ray and one sphere, drawn in the plane
@@ -35,11 +36,14 @@ export function drawGeometricConstruction(p, o) {
   const name = sphere?.name ? ` · ${sphere.name} sphere` : '';
   const content = panel(p, x, y, w, h, 'Geometric route' + name);
   if (!sphere || !ray) {
+    nameDiagram(p, o, 'Geometric route: click a pixel to see L, tca, d and thc for its ray.');
     placeholder(p, content, 'Click a pixel to see L, tca, d and thc for its ray.');
     return closePanel(p);
   }
   const f = construction(result ?? intersectGeometric(ray, sphere), sphere, ray);
-  const area = drawFormulas(p, content, f);
+  const lines = formulaLines(f);
+  nameDiagram(p, o, `Geometric route${sphere.name ? ` for the ${sphere.name} sphere` : ''}: ${lines.map(([text]) => text).join('; ')}.`);
+  const area = drawFormulas(p, content, lines);
   const m = constructionMapping(f.tca, f.d, f.r, area);
   clip(p, area);
   const marks = drawFigure(p, m, area, sphere, f);
@@ -58,15 +62,19 @@ function construction(g, sphere, ray) {
   return { g, r, tca, d, hit, inside, L, t0, t1, roots };
 }
 
-/** The formulas with this ray's numbers, one a line at the top of `content`; returns the area left under them. */
-function drawFormulas(p, content, { g, r, tca, d, hit, inside, L }) {
-  const lines = [
+/** The formulas with this ray's numbers, one a line: `[text, color]`. */
+function formulaLines({ g, r, tca, d, hit, inside, L }) {
+  return [
     [`L = C − Ro = (${fmt(L.x)}, ${fmt(L.y)}, ${fmt(L.z)})`, INK],
     [`tca = L·Rd = ${fmt(tca)}${tca < 0 ? (inside ? '  (< 0, but Ro is inside: fine)' : '  (< 0: C is behind Ro)') : ''}`, INK],
     [`d² = L·L − tca² = ${fmt(g.d2)},  d = ${fmt(d)},  r = ${fmt(r)}`, INK],
     hit ? [`thc = √(r² − d²) = ${fmt(g.thc)}`, INK] : ['d > r: the ray passes by, no hit', SHADOW],
     hit ? [`t = tca ∓ thc:  t0 = ${fmt(g.t0)},  t1 = ${fmt(g.t1)}  →  ${g.t === null ? 'both behind the eye' : `t = ${fmt(g.t)}`}`, g.t === null ? SHADOW : RAY] : null,
   ].filter(Boolean);
+}
+
+/** The formula lines at the top of `content`; returns the area left under them. */
+function drawFormulas(p, content, lines) {
   const lineHeight = 18;
   lines.forEach(([text, color], i) => label(p, text, content.x + 8, content.y + 8 + i * lineHeight, { color, align: 'left', halo: false, size: 13 }));
   const top = content.y + lines.length * lineHeight + 4;

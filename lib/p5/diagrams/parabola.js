@@ -5,6 +5,7 @@ import { fmt, sign } from '../../format.js';
 import { niceTicks } from '../../numbers.js';
 import { panel, closePanel, placeholder, clip, unclip, dot } from './draw.js';
 import { focusTest } from './focus.js';
+import { nameDiagram } from './aria.js';
 
 /**
  * f(t) = At² + Bt + C, the lesson's quadratic, over a range around its roots
@@ -24,11 +25,15 @@ export function drawParabola(p, o) {
   const content = panel(p, x, y, w, h, 'f(t) = At² + Bt + C' + (o.record ? `  ·  pixel ${o.record.x},${o.record.y}` : ''));
   const { A, B, C } = q;
   if (![A, B, C].every(Number.isFinite) || A === 0) {
+    nameDiagram(p, o, 'The parabola f(t) = At² + Bt + C: click a pixel to see the quadratic of its ray.');
     placeholder(p, content, 'Click a pixel to see the quadratic of its ray.');
     return closePanel(p);
   }
   const curve = quadratic(q, A, B, C);
-  const area = drawFormulas(p, content, curve);
+  const lines = formulaLines(curve);
+  const roots = curve.roots === 2 ? `roots t0 = ${fmt(curve.t0)} and t1 = ${fmt(curve.t1)}` : curve.roots === 1 ? `one root t = ${fmt(curve.t0)}` : 'no root: the curve stays above the t axis';
+  nameDiagram(p, o, `The parabola${o.record ? ` of pixel ${o.record.x},${o.record.y}` : ''}: ${lines.map(([text]) => text).join('; ')}; ${roots}.`);
+  const area = drawFormulas(p, content, lines);
   const m = plotMapping(curve, area);
   clip(p, area);
   drawAxes(p, m, area, curve);
@@ -52,13 +57,17 @@ function quadratic(q, A, B, C) {
   return { A, B, C, discriminant, roots, t0, t1, tv, fv, f };
 }
 
-/** f(t) and B² − 4AC with what it means, at the top of `content`; returns the plot's area under them. */
-function drawFormulas(p, content, { A, B, C, discriminant, roots }) {
+/** f(t) and B² − 4AC with what it means: `[text, color]` lines. */
+function formulaLines({ A, B, C, discriminant, roots }) {
   const meaning = roots === 2 ? ['> 0: two roots, the ray goes in and out', RAY] : roots === 1 ? ['= 0: one root, the ray just touches', LIT] : ['< 0: no real root, no hit', SHADOW];
-  const lines = [
+  return [
     [`f(t) = ${fmt(A, 2)}t² ${sign(B)} ${fmt(Math.abs(B), 2)}t ${sign(C)} ${fmt(Math.abs(C), 2)}`, INK],
     [`B² − 4AC = ${fmt(discriminant)} ${meaning[0]}`, meaning[1]],
   ];
+}
+
+/** The formula lines at the top of `content`; returns the plot's area under them. */
+function drawFormulas(p, content, lines) {
   lines.forEach(([text, color], i) => label(p, text, content.x + 8, content.y + 10 + i * 19, { color, align: 'left', halo: false }));
   return { x: content.x + 8, y: content.y + 2 * 19 + 14, w: content.w - 16, h: content.h - 2 * 19 - 14 - 24 };
 }

@@ -3,6 +3,8 @@
  * the image plane, the spheres, the lights and the selected ray.
  */
 import { isHuge } from '../../modes.js';
+import { nameDiagram } from './aria.js';
+import { colorWord } from '../../describe.js';
 import { MUTED, RAY } from './style.js';
 import { fmt } from '../../format.js';
 import { labelPlacer, ON_LABEL, ON_THICK, ON_THIN } from './labels.js';
@@ -69,6 +71,7 @@ function drawPlaneView(p, o, view) {
     placeholder(p, content, 'Pass a scene and a camera to draw this view.');
     return closePanel(p);
   }
+  nameDiagram(p, o, planeViewWords(view, scene, camera, record));
   const keyHeight = 26;
   const area = { x: content.x, y: content.y, w: content.w, h: content.h - keyHeight };
   const pr = (q) => ({ u: view.u(q), v: view.v(q) });
@@ -101,6 +104,16 @@ function drawPlaneView(p, o, view) {
   unclip(p);
   lineKey(p, { x: content.x, y: content.y + content.h - keyHeight + 4, w: content.w });
   closePanel(p);
+}
+
+/** What a side or top view shows, in a few words: its spheres, lights and the selected ray. */
+function planeViewWords(view, scene, camera, record) {
+  const spheres = scene.spheres.filter((s) => !s.material.isEmissive).map((s) => (isHuge(s) ? 'the ground' : `${s.name || colorWord(s.material.color)}`));
+  const shown = `${view.title}: the eye, the image plane of ${camera[view.cells]} ${view.cellWord}s, ${spheres.length ? `the spheres ${spheres.join(', ')}` : 'no spheres'} and ${scene.lights.length} ${scene.lights.length === 1 ? 'light' : 'lights'}.`;
+  if (!record) return `${shown} Click a pixel to see its ray.`;
+  const { name, value } = view.angle(record);
+  const hit = record.hit ? `hits ${record.hit.object.name || 'an object'} at t = ${fmt(record.hit.t)}` : 'hits nothing';
+  return `${shown} The ray of pixel ${record.x},${record.y}, ${name} = ${fmt(value)}°, ${hit}.`;
 }
 
 /**

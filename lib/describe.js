@@ -1,0 +1,236 @@
+/**
+ * The picture in words, for a screen reader: what a scene shows through a
+ * camera ("a pink sphere in the middle, a white sphere on the left, …, a gray
+ * floor, on a white background; two lights") and the traced picture itself
+ * as rows of colour names (what p5's gridOutput() does for shapes).
+ *
+ * Where things are is measured the way the camera sees them: a coarse grid
+ * of the camera's own rays (and one ray toward each sphere's centre, so a small
+ * one is not missed between them). What each ray meets first is seen; what it
+ * meets behind that is "behind" it.
+ */
+import { colorName } from './color.js';
+
+/** The coarse grid of rays, at most this many a side (fewer for a smaller picture). */
+const SAMPLE_COLUMNS = 24;
+const SAMPLE_ROWS = 18;
+/** Objects named one by one, the largest on screen first; the rest are counted. */
+const NAMED = 8;
+/** The share of a shape's rays another shape must meet first for it to be "behind" that one. */
+const HIDDEN_SHARE = 0.25;
+const NUMBER_WORDS = ['no', 'one', 'two', 'three', 'four', 'five', 'six', 'seven', 'eight', 'nine', 'ten'];
+
+/**
+ * One sentence saying what the scene shows through the camera: each shape's
+ * colour name and kind, where it is in the picture (left, middle, right; at
+ * the top, at the bottom; behind another), the floor, the background and the lights.
+ * @param {import('./scene.js').Scene} scene
+ * @param {import('./camera.js').Camera} camera
+ * @returns {string}
+ * @example
+ * describeScene(classScene(), new Camera({ width: 64, height: 48 }));
+ * // 'A pink sphere in the middle; a white sphere on the left; …; and a gray floor, on a white background. Two lights.'
+ */
+export function describeScene(scene, camera) {
+  const seen = sampleScene(scene, camera);
+  const flat = [], round = [];
+  for (const s of seen) (s.surface ? flat : round).push(s);
+  round.sort((a, b) => b.first - a.first);
+  const parts = round.slice(0, NAMED).map((s) => objectPhrase(s, seen));
+  const more = round.length - NAMED;
+  if (more > 0) parts.push(`${count(more)} more ${more === 1 ? 'shape' : 'shapes'}`);
+  parts.push(...flat.map(surfacePhrase));
+  const things = parts.length ? list(parts) : 'nothing';
+  const background = `on a ${colorWord(scene.background)} background`;
+  const hidden = scene.objects.filter((o) => !o.material.isEmissive).length - seen.filter((s) => !s.object.material.isEmissive).length;
+  const outOfView = hidden > 0 ? ` ${capital(count(hidden))} ${hidden === 1 ? 'shape is' : 'shapes are'} out of view.` : '';
+  const lights = scene.lights.length;
+  return `${capital(things)}, ${background}.${outOfView} ${capital(count(lights))} ${lights === 1 ? 'light' : 'lights'}.`;
+}
+
+/**
+ * What each shape looks like from the camera: `{ object, first, any, x, y, behind }`
+ * for every shape at least one ray meets (first: how many rays meet it first;
+ * x, y: where on the picture, 0–1; behind: the shape in front of it most often).
+ */
+export function sampleScene(scene, camera) {
+  const objects = scene.objects;
+  const seen = objects.map((object) => ({ object, first: 0, any: 0, sx: 0, sy: 0, fx: 0, fy: 0, covers: new Map(), surface: surfaceKind(object, camera) }));
+  const ray = { origin: camera.position, direction: { x: 0, y: 0, z: -1 } };
+  const ts = new Float64Array(objects.length);
+  const cast = (px, py) => {
+    camera.directionAt(px, py, ray.direction);
+    let nearest = -1;
+    for (let i = 0; i < objects.length; i++) {
+      ts[i] = objects[i].hit(ray);
+      if (ts[i] !== Infinity && (nearest < 0 || ts[i] < ts[nearest])) nearest = i;
+    }
+    if (nearest < 0) return;
+    const u = (px + 0.5) / camera.width, v = (py + 0.5) / camera.height;
+    for (let i = 0; i < objects.length; i++) {
+      if (ts[i] === Infinity) continue;
+      const s = seen[i];
+      s.any++; s.sx += u; s.sy += v;
+      if (i === nearest) { s.first++; s.fx += u; s.fy += v; } else s.covers.set(nearest, (s.covers.get(nearest) ?? 0) + 1);
+    }
+  };
+  const columns = Math.min(SAMPLE_COLUMNS, camera.width), rows = Math.min(SAMPLE_ROWS, camera.height);
+  for (let j = 0; j < rows; j++) {
+    for (let i = 0; i < columns; i++) cast(((i + 0.5) * camera.width) / columns - 0.5, ((j + 0.5) * camera.height) / rows - 0.5);
+  }
+  for (const o of objects) {
+    if (!o.center || !o.radius) continue;
+    const p = camera.project(o.center);
+    if (p.depth > 0 && p.x >= -0.5 && p.x <= camera.width - 0.5 && p.y >= -0.5 && p.y <= camera.height - 0.5) cast(p.x, p.y);
+  }
+  return seen.filter((s) => s.any > 0).map((s) => {
+    const n = s.first || s.any;
+    const x = (s.first ? s.fx : s.sx) / n, y = (s.first ? s.fy : s.sy) / n;
+    let behind = null, most = 0;
+    for (const [i, k] of s.covers) if (k > most && !seen[i].surface) { most = k; behind = seen[i].object; }
+    // "behind" only when a good part of it is hidden, not for a ray or two along an edge
+    if (most < Math.max(2, s.any * HIDDEN_SHARE)) behind = null;
+    return { object: s.object, first: s.first, any: s.any, x, y, behind, surface: s.surface };
+  });
+}
+
+/**
+ * 'floor', 'ceiling' or 'wall' for a plane, or a sphere so big the camera sees
+ * it as one (the class scene's ground); null for an ordinary shape.
+ */
+function surfaceKind(o, camera) {
+  let normal, below;
+  if (o.normal && o.point) {
+    normal = o.normal;
+    below = camera.position.y > o.point.y;
+  } else if (o.center && o.radius >= 100) {
+    const e = camera.position, c = o.center;
+    const dx = e.x - c.x, dy = e.y - c.y, dz = e.z - c.z, d = Math.hypot(dx, dy, dz);
+    if (d - o.radius > o.radius / 10 || d < o.radius) return null; // far off, or the camera is inside it
+    normal = { y: dy / d };
+    below = dy > 0;
+  } else {
+    return null;
+  }
+  if (Math.abs(normal.y) < 0.7) return 'wall';
+  return below ? 'floor' : 'ceiling';
+}
+
+/** "a white sphere on the left", "a blue sphere on the right, behind the yellow sphere". */
+function objectPhrase(s, seen) {
+  const where = [horizontal(s.x), vertical(s.y)].filter(Boolean).join(' ');
+  const front = s.behind && seen.find((t) => t.object === s.behind);
+  const behind = front ? `, behind the ${colorOf(front.object)} ${kindOf(front.object)}` : '';
+  return `${article(nounPhrase(s.object))} ${where}${behind}`.trim();
+}
+
+/** "a gray floor". */
+function surfacePhrase(s) {
+  return article(`${colorOf(s.object)} ${s.surface}`);
+}
+
+/** "pink sphere", "white mirror sphere", "glowing yellow sphere (a light)", "orange sphere called yellow". */
+function nounPhrase(o) {
+  const m = o.material, color = colorOf(o), kind = kindOf(o);
+  if (m.isEmissive) return `glowing ${color} ${kind} (a light)`;
+  const words = [color, m.reflection >= 0.5 && 'mirror', m.transparency >= 0.5 && 'glass', kind].filter(Boolean).join(' ');
+  const name = typeof o.name === 'string' ? o.name.trim() : '';
+  const said = name && (words.split(' ').includes(name.toLowerCase()) || /^(sphere|box|plane)\s*\d*$/i.test(name));
+  return name && !said ? `${words} called ${name.slice(0, 40)}` : words;
+}
+
+function kindOf(o) {
+  if (o.radius) return 'sphere';
+  if (o.min && o.max) return 'box';
+  if (o.normal) return 'plane';
+  return 'shape';
+}
+
+/** A shape's colour name: its glow for a light, else its surface colour. */
+function colorOf(o) {
+  const m = o.material;
+  return colorWord(m.isEmissive ? m.emission : m.color);
+}
+
+/** The nearest simple colour's name for a 0–1 colour (brighter than 1 counts as 1). */
+export function colorWord(rgb) {
+  return colorName(rgb.map((c) => Math.min(1, c) * 255));
+}
+
+function horizontal(x) {
+  if (x < 1 / 3) return 'on the left';
+  if (x > 2 / 3) return 'on the right';
+  return 'in the middle';
+}
+
+function vertical(y) {
+  if (y < 1 / 4) return 'at the top';
+  if (y > 3 / 4) return 'at the bottom';
+  return '';
+}
+
+function article(phrase) {
+  return (/^[aeiou]/i.test(phrase) ? 'an ' : 'a ') + phrase;
+}
+
+function count(n) {
+  return NUMBER_WORDS[n] ?? n.toLocaleString('en');
+}
+
+function capital(text) {
+  return text.charAt(0).toUpperCase() + text.slice(1);
+}
+
+function list(parts) {
+  if (parts.length < 3) return parts.join(' and ');
+  return `${parts.slice(0, -1).join('; ')}; and ${parts.at(-1)}`; // semicolons: a part may hold a comma
+}
+
+/**
+ * The traced picture as rows of colour names, top to bottom: at most `rows`
+ * rows of at most `columns` cells, each cell the commonest colour name of the
+ * pixels it covers (a few of them, evenly spread), runs of one colour counted:
+ * `'Row 1 of 12: 16 white'`, `'Row 6 of 12: 5 white, 2 gray, 6 pink, 3 white'`.
+ * @param {Uint8ClampedArray} rgba the picture, width × height × 4 bytes
+ * @returns {string[]}
+ */
+export function pictureRows(rgba, width, height, { columns = 16, rows = 12 } = {}) {
+  const cols = Math.min(columns, width), rowCount = Math.min(rows, height);
+  const lines = [];
+  for (let j = 0; j < rowCount; j++) {
+    const names = [];
+    for (let i = 0; i < cols; i++) names.push(cellName(rgba, width, i * width / cols, (i + 1) * width / cols, j * height / rowCount, (j + 1) * height / rowCount));
+    lines.push(`Row ${j + 1} of ${rowCount}: ${runs(names)}`);
+  }
+  return lines;
+}
+
+/** The commonest colour name among up to 4 × 4 pixels spread over the cell [x0, x1) × [y0, y1). */
+function cellName(rgba, width, x0, x1, y0, y1) {
+  const tally = new Map();
+  let best = '', most = 0;
+  const nx = Math.min(4, Math.ceil(x1 - x0)), ny = Math.min(4, Math.ceil(y1 - y0));
+  for (let b = 0; b < ny; b++) {
+    const y = Math.floor(y0 + ((b + 0.5) * (y1 - y0)) / ny);
+    for (let a = 0; a < nx; a++) {
+      const x = Math.floor(x0 + ((a + 0.5) * (x1 - x0)) / nx), i = 4 * (y * width + x);
+      const name = colorName([rgba[i], rgba[i + 1], rgba[i + 2]]);
+      const k = (tally.get(name) ?? 0) + 1;
+      tally.set(name, k);
+      if (k > most) { most = k; best = name; }
+    }
+  }
+  return best;
+}
+
+/** ['white', 'white', 'pink'] → '2 white, 1 pink'. */
+function runs(names) {
+  const out = [];
+  for (let i = 0; i < names.length;) {
+    let j = i;
+    while (j < names.length && names[j] === names[i]) j++;
+    out.push(`${j - i} ${names[i]}`);
+    i = j;
+  }
+  return out.join(', ');
+}
