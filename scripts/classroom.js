@@ -57,7 +57,7 @@ export function teachersAnswers({ served }) {
  */
 export function isTeacherOnly(url, root) {
   let path = url.split(/[?#]/)[0];
-  try { path = decodeURIComponent(path); } catch { return false; } // a malformed URL is Vite's to refuse
+  try { path = decodeURIComponent(path); } catch { /* a malformed escape: the path as it is */ }
   path = posix.normalize(path.replaceAll('\\', '/')).toLowerCase();
   const base = root.split(sep).join('/').toLowerCase().replace(/\/?$/, '/');
   path = path.replace(/^\/@id\//, '/').replace(/^\/@fs\//, '/').replace(/^\/+/, '/');
