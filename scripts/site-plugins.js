@@ -11,7 +11,8 @@
  * - apiLine: under each lesson page, "API:" and the names its sketch uses,
  *   linked into the reference;
  * - fromFileNotice: a lesson page opened from a file (a built page
- *   double-clicked) says why its picture is missing and what to run.
+ *   double-clicked) says why its picture is missing and what to run; the
+ *   gallery's own notice gets the same inline style.
  */
 import { createHash } from 'node:crypto';
 import { readFileSync } from 'node:fs';
@@ -133,8 +134,15 @@ export function fromFileNotice() {
   };
 }
 
-/** A lesson page with the notice under its header; any other page as it is. */
+const LESSON_PAGE = /[\\/]sketches[\\/]\d\d-[\w-]+\.html$/;
+
+/**
+ * A lesson page with the notice under its header; a page with a notice of
+ * its own (the gallery) with what shows it; any other page as it is.
+ */
 export function fromFileNoticeInto(html, { filename }) {
-  if (!/[\\/]sketches[\\/]\d\d-[\w-]+\.html$/.test(filename) || !html.includes('</header>')) return html;
-  return html.replace('</head>', `  ${FROM_FILE_HEAD}\n</head>`).replace('</header>', `</header>\n  ${FROM_FILE_NOTICE}`);
+  const lesson = LESSON_PAGE.test(filename) && html.includes('</header>');
+  if (!lesson && !html.includes('class="from-file"')) return html;
+  const withHead = html.replace('</head>', `  ${FROM_FILE_HEAD}\n</head>`);
+  return lesson ? withHead.replace('</header>', `</header>\n  ${FROM_FILE_NOTICE}`) : withHead;
 }
