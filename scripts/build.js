@@ -3,8 +3,13 @@
  * steps, every sketch, the API reference in dist/api/), the one-file builds
  * beside it (dist/raytracing-sketchbook.js, a classic script defining RT, and
  * dist/raytracing-sketchbook.mjs) and the package's types (types/).
+ * The homework's reference solutions are left out (vite.config.js);
+ * `npm run build -- --with-solutions` writes a private copy with them into
+ * dist-teacher/ instead, so dist/ is always the one to publish.
  */
 import { spawnSync } from 'node:child_process';
+
+if (process.argv.includes('--with-solutions')) process.env.SKETCHBOOK_WITH_SOLUTIONS = '1';
 
 const steps = [
   ['the site', ['node_modules/vite/bin/vite.js', 'build']],
