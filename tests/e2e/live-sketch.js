@@ -4,11 +4,9 @@
  * .js, ignored by git) so a test can save a new version while the page is
  * open, as a teacher does, and removed afterwards.
  */
-import { writeFileSync, rmSync } from 'node:fs';
+import { mkdirSync, writeFileSync, rmSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { expect } from '@playwright/test';
-
-const DIR = resolve('tests/e2e/pages');
 
 /** The README's page recipe, for tests/e2e/pages/<slug>.js. */
 function page(slug) {
@@ -67,18 +65,23 @@ export function lineOf(source, text) {
   return index + 1;
 }
 
-/** Writes tests/e2e/pages/<slug>.html and .js; returns the page's URL and helpers. */
-export function liveSketch(slug, source) {
-  writeFileSync(resolve(DIR, `${slug}.html`), page(slug));
-  writeFileSync(resolve(DIR, `${slug}.js`), source);
+/**
+ * Writes tests/e2e/pages/<slug>.html and .js; returns the page's URL and helpers.
+ * `folder`: another folder three levels down (the class server does not serve tests/).
+ */
+export function liveSketch(slug, source, folder = 'tests/e2e/pages') {
+  const dir = resolve(folder);
+  mkdirSync(dir, { recursive: true });
+  writeFileSync(resolve(dir, `${slug}.html`), page(slug));
+  writeFileSync(resolve(dir, `${slug}.js`), source);
   return {
-    url: `/tests/e2e/pages/${slug}.html`,
-    file: `tests/e2e/pages/${slug}.js`,
+    url: `/${folder}/${slug}.html`,
+    file: `${folder}/${slug}.js`,
     /** Saves a new version of the script, as an editor does. */
-    save: (text) => writeFileSync(resolve(DIR, `${slug}.js`), text),
+    save: (text) => writeFileSync(resolve(dir, `${slug}.js`), text),
     remove: () => {
-      rmSync(resolve(DIR, `${slug}.js`), { force: true });
-      rmSync(resolve(DIR, `${slug}.html`), { force: true });
+      rmSync(resolve(dir, `${slug}.js`), { force: true });
+      rmSync(resolve(dir, `${slug}.html`), { force: true });
     },
   };
 }
