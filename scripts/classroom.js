@@ -114,10 +114,19 @@ class CompressedCache {
  * A connect middleware: holds an answer's body until it ends, then gives it
  * an ETag (its own, or one of its content), answers 304 to a request that
  * has it already, and compresses a text body for a browser that accepts it.
+ * An answer marked immutable (p5's pre-bundle: its URL names its version) is
+ * kept as sent, and given again without asking Vite, which would make its
+ * 8 MB source map again for each student.
  */
 export function compressAndRevalidate(cache = new CompressedCache()) {
+  const kept = new Map(); // URL → { headers, body } of immutable answers
   return (req, res, next) => {
     if (req.headers.upgrade) return next(); // the live-reload WebSocket
+    const found = req.method === 'GET' || req.method === 'HEAD' ? kept.get(req.url) : undefined;
+    if (found) {
+      for (const [name, value] of Object.entries(found.headers)) res.setHeader(name, value);
+      return void send(req, res, () => found.body, cache);
+    }
     const chunks = [];
     const original = { write: res.write, end: res.end, writeHead: res.writeHead };
     res.writeHead = (status, reason, headers) => {
@@ -138,7 +147,7 @@ export function compressAndRevalidate(cache = new CompressedCache()) {
     res.end = (chunk, encoding, done) => {
       add(chunk, encoding);
       Object.assign(res, original);
-      finish(req, res, Buffer.concat(chunks), cache).then(() => {
+      finish(req, res, Buffer.concat(chunks), cache, kept).then(() => {
         if (typeof chunk === 'function') chunk();
         else (typeof encoding === 'function' ? encoding : done)?.();
       }, (error) => { res.statusCode = 500; res.end(String(error)); });
@@ -148,14 +157,29 @@ export function compressAndRevalidate(cache = new CompressedCache()) {
   };
 }
 
-async function finish(req, res, body, cache) {
-  if (res.statusCode !== 200) return void res.end(body);
-  let etag = res.getHeader('etag');
-  if (!etag) {
-    etag = `W/"${createHash('sha1').update(body).digest('base64url')}"`;
-    res.setHeader('ETag', etag);
-  }
+const KEPT_AT_MOST = 100; // immutable answers: p5 and a few more pre-bundled packages
+
+/** An answer from the server behind: its ETag, and kept when immutable; then sent. */
+function finish(req, res, body, cache, kept) {
+  if (res.statusCode !== 200) return Promise.resolve(void res.end(body));
+  if (!res.getHeader('etag')) res.setHeader('ETag', `W/"${createHash('sha1').update(body).digest('base64url')}"`);
   if (!res.getHeader('cache-control')) res.setHeader('Cache-Control', 'no-cache'); // revalidate each visit
+  const script = /javascript/.test(String(res.getHeader('content-type') ?? ''));
+  if (req.method === 'GET' && /immutable/.test(String(res.getHeader('cache-control')))) {
+    const headers = res.getHeaders();
+    for (const name of ['content-length', 'content-encoding', 'vary']) delete headers[name];
+    const whole = script ? withoutInlineSourceMap(body) : body;
+    kept.set(req.url, { headers, body: whole });
+    if (kept.size > KEPT_AT_MOST) kept.delete(kept.keys().next().value);
+    return send(req, res, () => whole, cache);
+  }
+  return send(req, res, () => (script ? withoutInlineSourceMap(body) : body), cache);
+}
+
+/** A 200 answer whose headers are set: a 304 to a request that has it, else its body, compressed when it is worth it. */
+async function send(req, res, body, cache) {
+  const etag = res.getHeader('etag');
+  res.statusCode = 200;
   if (req.headers['if-none-match'] === etag) {
     for (const name of ['content-type', 'content-length']) res.removeHeader(name);
     res.statusCode = 304;
@@ -163,14 +187,13 @@ async function finish(req, res, body, cache) {
   }
   if (req.method === 'HEAD') return void res.end();
   const type = String(res.getHeader('content-type') ?? '');
-  const sent = () => (/javascript/.test(type) ? withoutInlineSourceMap(body) : body);
   const encoding = encodingFor(req.headers['accept-encoding']);
-  if (!encoding || body.length < SMALLEST || !COMPRESSIBLE.test(type) || res.getHeader('content-encoding')) {
-    const out = sent();
-    res.setHeader('Content-Length', out.length);
-    return void res.end(out);
+  const whole = body();
+  if (!encoding || whole.length < SMALLEST || !COMPRESSIBLE.test(type) || res.getHeader('content-encoding')) {
+    res.setHeader('Content-Length', whole.length);
+    return void res.end(whole);
   }
-  const out = await cache.get(encoding, etag, sent);
+  const out = await cache.get(encoding, etag, () => whole);
   res.setHeader('Content-Encoding', encoding);
   res.setHeader('Vary', 'Accept-Encoding');
   res.setHeader('Content-Length', out.length);

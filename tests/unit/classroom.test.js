@@ -65,6 +65,7 @@ describe('what a student\'s browser gets', () => {
         statusCode: 200,
         setHeader: (name, value) => { sent.headers[name.toLowerCase()] = value; },
         getHeader: (name) => sent.headers[name.toLowerCase()],
+        getHeaders: () => ({ ...sent.headers }),
         removeHeader: (name) => { delete sent.headers[name.toLowerCase()]; },
         writeHead() { throw new Error('replaced by the middleware'); },
         write() { throw new Error('replaced by the middleware'); },
@@ -89,6 +90,20 @@ describe('what a student\'s browser gets', () => {
     const again = await request(middleware, { 'accept-encoding': 'br', 'if-none-match': first.headers.etag }, serve);
     expect(again.status).toBe(304);
     expect(again.body).toBeNull();
+  });
+
+  it('keeps an immutable answer and gives it again without asking the server behind', async () => {
+    const middleware = compressAndRevalidate();
+    const script = 'export default "p5, pre-bundled";\n'.repeat(100);
+    let asked = 0;
+    const serve = (res) => { asked += 1; res.setHeader('Content-Type', 'text/javascript'); res.setHeader('Cache-Control', 'max-age=31536000,immutable'); res.end(script); };
+    const first = await request(middleware, { 'accept-encoding': 'gzip' }, serve);
+    const second = await request(middleware, { 'accept-encoding': 'gzip' }, serve);
+    expect(asked).toBe(1);
+    expect(gunzipSync(second.body).toString()).toBe(script);
+    expect([second.status, second.headers.etag, second.headers['cache-control']]).toEqual([200, first.headers.etag, 'max-age=31536000,immutable']);
+    const revalidated = await request(middleware, { 'if-none-match': first.headers.etag }, serve);
+    expect([revalidated.status, asked]).toEqual([304, 1]);
   });
 
   it('passes an error and a small answer through as they are', async () => {
