@@ -5,7 +5,8 @@
  * you can see. The road, the pole and the signal's housing are here already;
  * your task is the three lights: write them in addLights() below, save (the
  * page reloads), then press "Check my scene".
- * The teacher's answer: open this page with ?solution=1.
+ * The teacher's answer: open this page with ?solution=1 (on the teacher's own
+ * `npm start`; the class server and the built site do not have it).
  */
 import p5 from 'p5';
 import { Scene, Sphere, Box, Plane, PointLight, Camera, checkTrafficSignal, solutionParameter } from '../lib/index.js';
