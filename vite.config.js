@@ -3,6 +3,7 @@ import { readdirSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { includeText, oneFileInDev, apiReference, apiLine, fromFileNotice } from './scripts/site-plugins.js';
 import { p5OfflineI18n } from './scripts/p5-offline-i18n.js';
+import { teachersAnswers, classroom } from './scripts/classroom.js';
 import { reloadItsPagesOnly, swapSketchesInPlace, syntaxErrorsWhereTheyAre } from './scripts/vite-live-coding.js';
 
 // Every page is an entry of the static build: the gallery, the web editor's
@@ -16,16 +17,24 @@ const sketchPages = readdirSync('sketches')
 // page loads only its own origin's files, so nothing it uses is refused.
 const isolation = { 'Cross-Origin-Opener-Policy': 'same-origin', 'Cross-Origin-Embedder-Policy': 'require-corp' };
 
-export default defineConfig({
+// The homework's reference solutions: served by the teacher's own `npm start`;
+// not by `npm run class` (mode "class") nor in `npm run build`, unless
+// `npm run build -- --with-solutions` (a private copy, into dist-teacher/).
+const withSolutions = process.env.SKETCHBOOK_WITH_SOLUTIONS === '1';
+
+export default defineConfig(({ command, mode }) => ({
   base: './',
   // p5's translations from node_modules, not a CDN (scripts/p5-offline-i18n.js): in the build and the dev server's bundle of p5.
   // A saved sketch is swapped in place, or reloads only the pages running it; a syntax error is shown at its line (scripts/vite-live-coding.js).
   // The web editor's page, its one-file build, the API reference and each lesson's
   // "API:" line, and the notice a lesson page shows when opened from a file: scripts/site-plugins.js.
-  plugins: [p5OfflineI18n(), reloadItsPagesOnly(), swapSketchesInPlace(), syntaxErrorsWhereTheyAre(), includeText(), oneFileInDev(), apiReference(), apiLine(), fromFileNotice()],
+  // The answers and the class server's ways (compressed, revalidated, p5 minified): scripts/classroom.js.
+  plugins: [teachersAnswers({ served: command === 'serve' ? mode !== 'class' : withSolutions }), ...(mode === 'class' ? [classroom()] : []),
+    p5OfflineI18n(), reloadItsPagesOnly(), swapSketchesInPlace(), syntaxErrorsWhereTheyAre(), includeText(), oneFileInDev(), apiReference(), apiLine(), fromFileNotice()],
   optimizeDeps: { rolldownOptions: { plugins: [p5OfflineI18n()] } },
   build: {
     target: 'es2022',
+    outDir: withSolutions ? 'dist-teacher' : 'dist',
     chunkSizeWarningLimit: 1500, // p5 itself is 1.3 MB: one library, loaded once per page
     rollupOptions: { input: [resolve('index.html'), resolve('web-editor.html'), ...sketchPages] },
   },
@@ -36,4 +45,4 @@ export default defineConfig({
     // Test output must not reload pages under test.
     watch: { ignored: ['**/test-results/**', '**/playwright-report/**', '**/__screenshots__/**', '**/tests/pictures/**'] },
   },
-});
+}));

@@ -90,7 +90,7 @@ export default defineConfig({
   worker: { format: 'iife' },
   build: {
     target: 'es2022',
-    outDir: 'dist',
+    outDir: process.env.SKETCHBOOK_WITH_SOLUTIONS === '1' ? 'dist-teacher' : 'dist', // beside the site (vite.config.js)
     emptyOutDir: false, // the site is already there
     copyPublicDir: false,
     minify: false, // a file a teacher can read

@@ -5,8 +5,13 @@
  * dist/raytracing-sketchbook.mjs), the web editor's ready folder made of
  * them (dist/web-editor/, and as dist/raytracing-sketchbook-web-editor.zip)
  * and the package's types (types/).
+ * The homework's reference solutions are left out (vite.config.js);
+ * `npm run build -- --with-solutions` writes a private copy with them into
+ * dist-teacher/ instead, so dist/ is always the one to publish.
  */
 import { spawnSync } from 'node:child_process';
+
+if (process.argv.includes('--with-solutions')) process.env.SKETCHBOOK_WITH_SOLUTIONS = '1';
 
 const steps = [
   ['the site', ['node_modules/vite/bin/vite.js', 'build']],

@@ -50,7 +50,7 @@ export function portFrom(argv) {
 
 async function main() {
   const port = portFrom(process.argv);
-  const vite = spawn(join(ROOT, 'node_modules/.bin/vite'), ['--host', '--port', String(port), '--strictPort'], { cwd: ROOT, stdio: ['inherit', 'pipe', 'inherit'] });
+  const vite = spawn(join(ROOT, 'node_modules/.bin/vite'), ['--host', '--mode', 'class', '--port', String(port), '--strictPort'], { cwd: ROOT, stdio: ['inherit', 'pipe', 'inherit'] });
   let said = false;
   vite.stdout.on('data', async (chunk) => {
     process.stdout.write(chunk);

@@ -7,14 +7,17 @@
  * - oneFileInDev: the dev server answers /raytracing-sketchbook.js and .mjs
  *   with the one-file builds, and the web editor's ready folder as its .zip
  *   (npm run build writes them into dist/);
- * - apiReference: /api/ is the API reference, generated from the JSDoc;
+ * - apiReference: /api/ is the API reference, generated from the JSDoc
+ *   (made once and kept, made again after a change to lib/);
  * - apiLine: under each lesson page, "API:" and the names its sketch uses,
  *   linked into the reference;
  * - fromFileNotice: a lesson page opened from a file (a built page
- *   double-clicked) says why its picture is missing and what to run.
+ *   double-clicked) says why its picture is missing and what to run; the
+ *   gallery's own notice gets the same inline style.
  */
+import { createHash } from 'node:crypto';
 import { readFileSync } from 'node:fs';
-import { resolve } from 'node:path';
+import { resolve, sep } from 'node:path';
 import { build } from 'vite';
 import { apiReferenceHTML, namesUsedBy, apiLineHTML } from './api-reference.js';
 import { ZIP_NAME, readyFolderZip } from './ready-folder.js';
@@ -60,21 +63,40 @@ export function oneFileInDev() {
   };
 }
 
-/** The API reference at /api/ (a page of its own in dist/api/index.html). */
-export function apiReference() {
+/**
+ * The API reference at /api/ (a page of its own in dist/api/index.html).
+ * Making it reads every file of lib/ (about 200 ms): the server makes it
+ * once, again after a change to lib/ or package.json, and answers from
+ * memory, so a class opening it at once does not hold up anyone's sketch.
+ * @param {() => string} [make] the page (apiReferenceHTML; a test counts its calls)
+ */
+export function apiReference(make = apiReferenceHTML) {
+  let page = null;
+  const current = () => {
+    if (page) return page;
+    const html = make();
+    return (page = { html, etag: `W/"${createHash('sha1').update(html).digest('base64url')}"` });
+  };
   return {
     name: 'api-reference',
     configureServer(server) {
+      const root = server.config.root.split(sep).join('/');
+      const madeFrom = (file) => file.split(sep).join('/').startsWith(`${root}/lib/`) || file.split(sep).join('/') === `${root}/package.json`;
+      for (const event of ['add', 'change', 'unlink']) server.watcher.on(event, (file) => { if (madeFrom(file)) page = null; });
       server.middlewares.use((req, res, next) => {
         const path = req.url.split('?')[0];
         if (path !== '/api/' && path !== '/api/index.html' && path !== '/api') return next();
         if (path === '/api') { res.statusCode = 301; res.setHeader('Location', '/api/'); return res.end(); }
+        const { html, etag } = current();
+        res.setHeader('ETag', etag);
+        res.setHeader('Cache-Control', 'no-cache');
+        if (req.headers['if-none-match'] === etag) { res.statusCode = 304; return res.end(); }
         res.setHeader('Content-Type', 'text/html; charset=utf-8');
-        res.end(apiReferenceHTML());
+        res.end(html);
       });
     },
     generateBundle() {
-      this.emitFile({ type: 'asset', fileName: 'api/index.html', source: apiReferenceHTML() });
+      this.emitFile({ type: 'asset', fileName: 'api/index.html', source: make() });
     },
   };
 }
@@ -118,8 +140,15 @@ export function fromFileNotice() {
   };
 }
 
-/** A lesson page with the notice under its header; any other page as it is. */
+const LESSON_PAGE = /[\\/]sketches[\\/]\d\d-[\w-]+\.html$/;
+
+/**
+ * A lesson page with the notice under its header; a page with a notice of
+ * its own (the gallery) with what shows it; any other page as it is.
+ */
 export function fromFileNoticeInto(html, { filename }) {
-  if (!/[\\/]sketches[\\/]\d\d-[\w-]+\.html$/.test(filename) || !html.includes('</header>')) return html;
-  return html.replace('</head>', `  ${FROM_FILE_HEAD}\n</head>`).replace('</header>', `</header>\n  ${FROM_FILE_NOTICE}`);
+  const lesson = LESSON_PAGE.test(filename) && html.includes('</header>');
+  if (!lesson && !html.includes('class="from-file"')) return html;
+  const withHead = html.replace('</head>', `  ${FROM_FILE_HEAD}\n</head>`);
+  return lesson ? withHead.replace('</header>', `</header>\n  ${FROM_FILE_NOTICE}`) : withHead;
 }

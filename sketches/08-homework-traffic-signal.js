@@ -5,7 +5,8 @@
  * you can see. The road, the pole and the signal's housing are here already;
  * your task is the three lights: write them in addLights() below, save (the
  * page reloads), then press "Check my scene".
- * The teacher's answer: open this page with ?solution=1.
+ * The teacher's answer: open this page with ?solution=1 (on the teacher's own
+ * `npm start`; the class server and the built site do not have it).
  */
 import p5 from 'p5';
 import { Sphere, trafficSignalScene, trafficSignalCamera, checkTrafficSignal, solutionParameter } from '../lib/index.js';
@@ -36,11 +37,14 @@ new p5((p) => {
   p.setup = async () => {
     p.noCanvas(); // the tracer view brings its own canvas
     const { solution, message } = solutionParameter(location.search); // ?solution=1: the teacher's answer
-    const scene = makeScene(solution ? (await import('./solutions/08-traffic-signal.js')).addLights : addLights);
+    // Served to a class or built, the answer stays on the teacher's computer: `elsewhere` says so (scripts/classroom.js).
+    const reference = solution ? await import('./solutions/08-traffic-signal.js') : null;
+    const answer = reference?.addLights;
+    const scene = makeScene(answer ?? addLights);
     const view = p.createTracerView({ scene, camera: makeCamera(), parent: 'picture',
-      label: solution ? 'The reference solution (sketches/solutions/08-traffic-signal.js)' : 'Your traffic signal' });
+      label: answer ? 'The reference solution (sketches/solutions/08-traffic-signal.js)' : 'Your traffic signal' });
     p.createInspector({ view, parent: 'sketch' });
 
-    p.createHomeworkCheck({ view, check: checkTrafficSignal, parent: 'check', problem: message });
+    p.createHomeworkCheck({ view, check: checkTrafficSignal, parent: 'check', problem: reference?.elsewhere ?? message });
   };
 }, 'sketch');

@@ -39,19 +39,24 @@ for (const file of sketchPages) {
   });
 }
 
-test('a lesson page opened from a file says why nothing traces, and what to run', async ({ page, baseURL }) => {
-  const folder = mkdtempSync(join(tmpdir(), 'rt-from-file-'));
-  try {
-    // The page as the server sends it, saved and opened by double-click: its module script cannot load from there.
-    const html = await (await page.request.get(`${baseURL}/sketches/01-rays-through-pixels.html`)).text();
-    writeFileSync(join(folder, 'lesson.html'), html);
-    await page.goto(pathToFileURL(join(folder, 'lesson.html')).href);
-    const notice = page.locator('.from-file');
-    await expect(notice).toBeVisible();
-    await expect(notice).toContainText('opened from a file');
-    await expect(notice).toContainText('npm run preview');
-    await expect(page.locator('[data-tracer]')).toHaveCount(0);
-  } finally {
-    rmSync(folder, { recursive: true, force: true });
-  }
-});
+for (const [what, path] of [['a lesson page', '/sketches/01-rays-through-pixels.html'], ['the gallery', '/']]) {
+  test(`${what} opened from a file says why nothing traces, and what to run, in its own style`, async ({ page, baseURL }) => {
+    const folder = mkdtempSync(join(tmpdir(), 'rt-from-file-'));
+    try {
+      // The page as the server sends it, saved and opened by double-click: its module script and stylesheets cannot load from there.
+      const html = await (await page.request.get(`${baseURL}${path}`)).text();
+      writeFileSync(join(folder, 'page.html'), html);
+      await page.goto(pathToFileURL(join(folder, 'page.html')).href);
+      const notice = page.locator('.from-file');
+      await expect(notice).toBeVisible();
+      await expect(notice).toContainText('opened from a file');
+      await expect(notice).toContainText('npm run preview');
+      // Its style is inline: a framed box, not bare text among the page's.
+      expect(await notice.evaluate((e) => { const s = getComputedStyle(e); return [s.borderTopStyle, s.borderTopWidth, s.borderTopColor]; }))
+        .toEqual(['solid', '2px', 'rgb(214, 51, 108)']);
+      await expect(page.locator('[data-tracer]')).toHaveCount(0);
+    } finally {
+      rmSync(folder, { recursive: true, force: true });
+    }
+  });
+}

@@ -4,11 +4,9 @@
  * .js, ignored by git) so a test can save a new version while the page is
  * open, as a teacher does, and removed afterwards.
  */
-import { writeFileSync, rmSync } from 'node:fs';
+import { mkdirSync, writeFileSync, rmSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { expect } from '@playwright/test';
-
-const DIR = resolve('tests/e2e/pages');
 
 /** The README's page recipe, for tests/e2e/pages/<slug>.js; `main` what the page's main holds (nothing: the sketch makes it all). */
 function page(slug, main = '') {
@@ -69,19 +67,22 @@ export function lineOf(source, text) {
 
 /**
  * Writes tests/e2e/pages/<slug>.html and .js; returns the page's URL and helpers.
- * @param {{ main?: string }} [options] `main`: markup inside the page's main (a column the sketch draws into)
+ * @param {{ main?: string, folder?: string }} [options] `main`: markup inside the page's main (a column the sketch draws into);
+ * `folder`: another folder three levels down (the class server does not serve tests/)
  */
-export function liveSketch(slug, source, { main = '' } = {}) {
-  writeFileSync(resolve(DIR, `${slug}.html`), page(slug, main));
-  writeFileSync(resolve(DIR, `${slug}.js`), source);
+export function liveSketch(slug, source, { main = '', folder = 'tests/e2e/pages' } = {}) {
+  const dir = resolve(folder);
+  mkdirSync(dir, { recursive: true });
+  writeFileSync(resolve(dir, `${slug}.html`), page(slug, main));
+  writeFileSync(resolve(dir, `${slug}.js`), source);
   return {
-    url: `/tests/e2e/pages/${slug}.html`,
-    file: `tests/e2e/pages/${slug}.js`,
+    url: `/${folder}/${slug}.html`,
+    file: `${folder}/${slug}.js`,
     /** Saves a new version of the script, as an editor does. */
-    save: (text) => writeFileSync(resolve(DIR, `${slug}.js`), text),
+    save: (text) => writeFileSync(resolve(dir, `${slug}.js`), text),
     remove: () => {
-      rmSync(resolve(DIR, `${slug}.js`), { force: true });
-      rmSync(resolve(DIR, `${slug}.html`), { force: true });
+      rmSync(resolve(dir, `${slug}.js`), { force: true });
+      rmSync(resolve(dir, `${slug}.html`), { force: true });
     },
   };
 }

@@ -1,6 +1,6 @@
 // Every lesson page gets the notice it shows when opened from a file (a built
 // page double-clicked): inline, since such a page loads no stylesheet and no
-// script of its own files; other pages are left as they are.
+// script of its own files; the gallery's notice gets the same style.
 import { describe, it, expect } from 'vitest';
 import { readdirSync, readFileSync } from 'node:fs';
 import { resolve } from 'node:path';
@@ -17,10 +17,12 @@ describe('fromFileNoticeInto', () => {
     expect(html.indexOf(FROM_FILE_HEAD)).toBeLessThan(html.indexOf('</head>'));
   });
 
-  it('leaves the gallery and other pages alone', () => {
-    for (const name of ['index.html', 'web-editor.html']) {
-      const html = readFileSync(name, 'utf8');
-      expect(fromFileNoticeInto(html, { filename: resolve(name) })).toBe(html);
-    }
+  it('gives the gallery\'s own notice the same inline style, and leaves other pages alone', () => {
+    const gallery = readFileSync('index.html', 'utf8');
+    const built = fromFileNoticeInto(gallery, { filename: resolve('index.html') });
+    expect(built.indexOf(FROM_FILE_HEAD)).toBeLessThan(built.indexOf('</head>'));
+    expect(built.split('class="from-file"').length).toBe(2); // its own notice, not a second one
+    const editor = readFileSync('web-editor.html', 'utf8');
+    expect(fromFileNoticeInto(editor, { filename: resolve('web-editor.html') })).toBe(editor);
   });
 });
