@@ -17,6 +17,7 @@ import { inspectPixel } from '../explain.js';
 import { toHex, colorName } from '../color.js';
 import { formatNumber, formatVector, formatAngle } from '../format.js';
 import { show, checkOptions } from '../check.js';
+import { PLAIN_NUMBER } from '../values.js';
 import { useStyle, element, resolveParent, copyText } from './dom.js';
 
 /** Relative tolerance within which the two intersection routes "agree". */
@@ -358,8 +359,6 @@ export function pixelCSV(r) {
   if (rows.length === 0) rows.push([...pixel, ...CSV_HEAD.slice(4, -4).map(() => ''), ...after]);
   return [CSV_HEAD, ...rows].map((row) => row.map(csvCell).join(',')).join('\n') + '\n';
 }
-
-const PLAIN_NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
 
 /**
  * One CSV cell. Text a spreadsheet would run as a formula (it starts with
