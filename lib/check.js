@@ -71,6 +71,17 @@ function showWithin(value, depth) {
   return Array.isArray(value) ? `[${parts.join(', ')}]` : `{${parts.join(',')}}`;
 }
 
+/** Runs `make`; a TypeError or RangeError it throws gets the field's path in front ("objects[2]." + "radius must…"). */
+export function withPath(make, prefix) {
+  try {
+    return make();
+  } catch (error) {
+    if (error instanceof TypeError) throw new TypeError(prefix + error.message, { cause: error });
+    if (error instanceof RangeError) throw new RangeError(prefix + error.message, { cause: error });
+    throw error;
+  }
+}
+
 /** A whole number in [0, limit) — a pixel coordinate. */
 export function pixelCoordinate(value, field, limit) {
   finiteNumber(value, field);

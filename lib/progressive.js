@@ -13,6 +13,7 @@
  */
 import { renderPixel, renderPackedPixel, prepareFrame } from './render.js';
 import { TILE } from './bounds.js';
+import { checkScene, checkCamera } from './scene-check.js';
 import { positiveInteger, finiteNumber, show, checkOptions } from './check.js';
 
 /** The render orders a ProgressiveRenderer knows. */
@@ -104,10 +105,10 @@ export class ProgressiveRenderer {
     const shader = changes.shader ?? this.shader;
     if (!scene || !Array.isArray(scene.objects)) throw new TypeError(`scene must be a Scene, got ${show(scene)}`);
     if (!camera || typeof camera.directionAt !== 'function') throw new TypeError(`camera must be a Camera, got ${show(camera)}`);
-    positiveInteger(camera.width, 'camera.width');
-    positiveInteger(camera.height, 'camera.height');
     if (!ORDERS.includes(mode)) throw new RangeError(`mode must be one of ${ORDERS.map((m) => `'${m}'`).join(', ')}, got ${show(mode)}`);
     if (typeof shader !== 'function') throw new TypeError(`shader must be a function (scene, camera, x, y, target), got ${show(shader)}`);
+    checkCamera(camera); // as they are now: either may have been changed in place since
+    checkScene(scene);
     if (changes.slowRaysPerStep !== undefined) this.slowRaysPerStep = positiveInteger(changes.slowRaysPerStep, 'slowRaysPerStep');
 
     this.scene = scene;

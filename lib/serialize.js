@@ -18,7 +18,7 @@ import { PointLight } from './lights.js';
 import { Sphere } from './shapes/sphere.js';
 import { Plane } from './shapes/plane.js';
 import { Box } from './shapes/box.js';
-import { show } from './check.js';
+import { show, withPath as named } from './check.js';
 
 const SCENE_FIELDS = ['background', 'ambient', 'shadows', 'bias', 'epsilon', 'maxDepth', 'specular', 'objects'];
 const MATERIAL_FIELDS = ['color', 'emission', 'reflection', 'transparency', 'ior', 'specular', 'shininess'];
@@ -248,17 +248,6 @@ export function objectFromJSON(o, path) {
   const item = named(() => kind.build(o, material), `${path}.`);
   item.name = o.name ?? '';
   return item;
-}
-
-/** Runs `make`; a TypeError or RangeError it throws gets the field's path in front. */
-function named(make, prefix) {
-  try {
-    return make();
-  } catch (error) {
-    if (error instanceof TypeError) throw new TypeError(prefix + error.message, { cause: error });
-    if (error instanceof RangeError) throw new RangeError(prefix + error.message, { cause: error });
-    throw error;
-  }
 }
 
 /* ---- to code ---- */
