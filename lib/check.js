@@ -100,27 +100,34 @@ export function pixelCoordinate(value, field, limit) {
  * @param {object|undefined} options
  * @param {readonly string[]} known the keys this options object takes
  * @param {string} where what the options are for, as a student would say it ("material", "camera")
- * @returns {object} the options, or `{}` when undefined
+ * @returns {any} the options' own keys in an object with no prototype (empty when
+ *   undefined): read options from it, so a key set on Object.prototype anywhere is no option here
  */
 export function checkOptions(options, known, where) {
-  if (options === undefined) return {};
+  const own = Object.create(null);
+  if (options === undefined) return own;
   if (options === null || typeof options !== 'object' || Array.isArray(options)) {
     throw new TypeError(`${where} options must be an object like { ${known[0]}: … }, got ${show(options)}`);
   }
   for (const key of Object.keys(options)) {
     if (!known.includes(key)) throw new TypeError(unknownOption(key, known, where));
+    own[key] = options[key];
   }
-  return options;
+  return own;
 }
+
+/** The longest option key worth comparing with the known ones: known keys are short, and the distance takes length² time. */
+export const OPTION_KEY_MAX = 40;
 
 /** The message for an unknown key: the closest known key, and the whole list when none is close. */
 function unknownOption(key, known, where) {
+  const message = `unknown ${where} option ${show(key)}`;
+  if (key.length > OPTION_KEY_MAX) return known.length ? `${message} (known options: ${known.join(', ')})` : `${message} (it takes no options)`;
   let best = null, bestDistance = Infinity;
   for (const name of known) {
     const d = editDistance(key.toLowerCase(), name.toLowerCase());
     if (d < bestDistance) { best = name; bestDistance = d; }
   }
-  const message = `unknown ${where} option ${show(key)}`;
   if (best === null) return `${message} (it takes no options)`;
   const close = bestDistance <= Math.max(2, Math.floor(key.length / 2));
   return close

@@ -55,6 +55,7 @@ export class ProgressiveRenderer {
   /** 'slow' mode at `slowRaysPerSecond`: rays owed (fractional) and when the last step ran. */
   #credit = 0;
   #lastStepAt = null;
+  #raysPerSecond = 0;
 
   /**
    * @param {object} options
@@ -80,11 +81,6 @@ export class ProgressiveRenderer {
     this.slowRaysPerStep = positiveInteger(slowRaysPerStep, 'slowRaysPerStep');
     /** The traced image, RGBA, width·height·4 bytes; a new array when the camera's size changes. */
     this.buffer = null;
-    /**
-     * In 'slow' mode, when above 0: rays per second instead of
-     * `slowRaysPerStep` per step (slower than one a frame, for rays a class
-     * can follow with its eyes).
-     */
     this.slowRaysPerSecond = 0;
     /** In 'slow' and 'scanline' modes the pixel `{ x, y }` traced last, else null. */
     this.current = null;
@@ -98,7 +94,7 @@ export class ProgressiveRenderer {
    */
   restart(changes = {}) {
     if (changes === null || typeof changes !== 'object') throw new TypeError(`changes must be an object like { camera }, got ${show(changes)}`);
-    checkOptions(changes, CHANGES, 'restart');
+    changes = checkOptions(changes, CHANGES, 'restart');
     const scene = changes.scene ?? this.scene;
     const camera = changes.camera ?? this.camera;
     const mode = changes.mode ?? this.mode;
@@ -168,6 +164,19 @@ export class ProgressiveRenderer {
     const count = Math.floor(this.#credit);
     this.#credit -= count;
     return count;
+  }
+
+  /**
+   * In 'slow' mode, when above 0: rays per second instead of
+   * `slowRaysPerStep` per step (slower than one a frame, for rays a class
+   * can follow with its eyes). A finite number ≥ 0, else a Type/RangeError:
+   * Infinity would owe Infinity × 0 = NaN rays and trace nothing.
+   */
+  get slowRaysPerSecond() { return this.#raysPerSecond; }
+  set slowRaysPerSecond(n) {
+    finiteNumber(n, 'slowRaysPerSecond');
+    if (n < 0) throw new RangeError(`slowRaysPerSecond must not be negative, got ${n}`);
+    this.#raysPerSecond = n;
   }
 
   /** True once every pixel is traced. */

@@ -74,7 +74,12 @@ function checkMaterial(m, path) {
   return m;
 }
 
-/** A colour already checked: an array stays (the same array), text or a number becomes [r, g, b]. */
+/**
+ * A colour already checked: an array stays (the same array), text or a number becomes [r, g, b].
+ * @param {any} value
+ * @param {string} field
+ * @returns {number[]}
+ */
 function asColor(value, field) {
-  return Array.isArray(value) || ArrayBuffer.isView(value) ? value : toColor(value, field);
+  return Array.isArray(value) || ArrayBuffer.isView(value) ? /** @type {number[]} */ (value) : toColor(value, field);
 }
