@@ -40,21 +40,77 @@ export function answerText({ x, y, h, v }) {
 /** A number as typed: 30, -82, 7.5 (never "-0"). */
 const plain = (n) => String(n === 0 ? 0 : n);
 
-const NUMBER = String.raw`[+\-−]?(?:\d+(?:\.\d*)?|\.\d+)`;
-const ANSWER_LINE = new RegExp(String.raw`^\s*pixel\s*:?\s*(${NUMBER})\s*,\s*(${NUMBER})\s*[;,]?\s*h\s*[:=]?\s*(${NUMBER})\s*°?\s*[;,]?\s*v\s*[:=]?\s*(${NUMBER})\s*°?\s*;?\s*$`, 'i');
+/** The longest answer line read (after trimming): the slide's line is ~30 characters. */
+export const ANSWER_LINE_MAX = 200;
+
+/**
+ * One token at a time, from where the last one ended (sticky): a word, a
+ * number or a separator after optional spaces. Each alternative starts with a
+ * different kind of character and nothing repeats inside a repeat, so reading
+ * a line takes time in proportion to its length, however it is spaced.
+ */
+const TOKEN = /\s*(?:([a-z]+)|([+\-−]?(?:\d+(?:\.\d*)?|\.\d+))|([:;,=°]))/iy;
+
+/**
+ * The answer line's shape, token by token: a word (lower case), '#' for a
+ * number, a separator; `?` after a separator makes it optional.
+ */
+const SHAPE = ['pixel', ':?', '#', ',', '#', ';,?', 'h', ':=?', '#', '°?', ';,?', 'v', ':=?', '#', '°?', ';?'];
 
 /**
  * Reads an answer line (`Pixel: 10,12; H: 30; V: -82`, any case and spacing,
  * a typographic minus too) into the text of its four boxes, `{ x, y, h, v }`;
- * null when the text is not an answer line. The boxes check the values.
+ * null when the text is not an answer line, or is longer than ANSWER_LINE_MAX
+ * (then it is an ordinary paste, and the box it lands in says what is wrong).
+ * The boxes check the values.
  * @param {string} text
  * @example
  * readAnswerLine('pixel 10, 12; h 30; v -82'); // { x: '10', y: '12', h: '30', v: '-82' }
  * readAnswerLine('pink!');                     // null
  */
 export function readAnswerLine(text) {
-  const m = ANSWER_LINE.exec(String(text ?? ''));
-  if (!m) return null;
-  const [x, y, h, v] = m.slice(1).map((s) => s.replace('−', '-'));
+  const line = String(text ?? '').trim();
+  return line.length > ANSWER_LINE_MAX ? null : answerLineBoxes(line);
+}
+
+/**
+ * readAnswerLine without the length cap (exported for the test that times it
+ * on long lines): the boxes' texts, or null.
+ * @param {string} line trimmed
+ */
+export function answerLineBoxes(line) {
+  const tokens = tokenize(line);
+  if (!tokens) return null;
+  const numbers = [];
+  let i = 0;
+  for (const want of SHAPE) {
+    const token = tokens[i];
+    const optional = want.length > 1 && want.endsWith('?');
+    const matches = want === '#' ? token?.number !== undefined
+      : optional ? token?.mark !== undefined && want.slice(0, -1).includes(token.mark)
+        : token !== undefined && (token.word === want || token.mark === want);
+    if (matches) {
+      if (want === '#') numbers.push(token.number.replace('−', '-'));
+      i++;
+    } else if (!optional) return null;
+  }
+  if (i !== tokens.length) return null;
+  const [x, y, h, v] = numbers;
   return { x, y, h, v };
+}
+
+/**
+ * The line's tokens, `{ word }`, `{ number }` or `{ mark }`; null at a
+ * character that starts none, or past the most an answer line has.
+ */
+function tokenize(line) {
+  const tokens = [];
+  TOKEN.lastIndex = 0;
+  while (TOKEN.lastIndex < line.length) {
+    if (tokens.length === SHAPE.length) return null;
+    const m = TOKEN.exec(line);
+    if (!m) return null;
+    tokens.push(m[1] !== undefined ? { word: m[1].toLowerCase() } : m[2] !== undefined ? { number: m[2] } : { mark: m[3] });
+  }
+  return tokens;
 }

@@ -71,6 +71,17 @@ function showWithin(value, depth) {
   return Array.isArray(value) ? `[${parts.join(', ')}]` : `{${parts.join(',')}}`;
 }
 
+/** Runs `make`; a TypeError or RangeError it throws gets the field's path in front ("objects[2]." + "radius must…"). */
+export function withPath(make, prefix) {
+  try {
+    return make();
+  } catch (error) {
+    if (error instanceof TypeError) throw new TypeError(prefix + error.message, { cause: error });
+    if (error instanceof RangeError) throw new RangeError(prefix + error.message, { cause: error });
+    throw error;
+  }
+}
+
 /** A whole number in [0, limit) — a pixel coordinate. */
 export function pixelCoordinate(value, field, limit) {
   finiteNumber(value, field);
@@ -89,22 +100,29 @@ export function pixelCoordinate(value, field, limit) {
  * @param {object|undefined} options
  * @param {readonly string[]} known the keys this options object takes
  * @param {string} where what the options are for, as a student would say it ("material", "camera")
- * @returns {object} the options, or `{}` when undefined
+ * @returns {any} the options' own keys in an object with no prototype (empty when
+ *   undefined): read options from it, so a key set on Object.prototype anywhere is no option here
  */
 export function checkOptions(options, known, where) {
-  if (options === undefined) return {};
+  const own = Object.create(null);
+  if (options === undefined) return own;
   if (options === null || typeof options !== 'object' || Array.isArray(options)) {
     throw new TypeError(`${where} options must be an object like { ${known[0]}: … }, got ${show(options)}`);
   }
   for (const key of Object.keys(options)) {
     if (!known.includes(key)) throw new TypeError(unknownOption(key, known, where));
+    own[key] = options[key];
   }
-  return options;
+  return own;
 }
+
+/** The longest option key (or name) worth comparing with the known ones: known keys are short, and the distance takes length² time. */
+export const OPTION_KEY_MAX = 40;
 
 /** The message for an unknown key: the closest known key, and the whole list when none is close. */
 function unknownOption(key, known, where) {
   const message = `unknown ${where} option ${show(key)}`;
+  if (key.length > OPTION_KEY_MAX) return known.length ? `${message} (known options: ${known.join(', ')})` : `${message} (it takes no options)`;
   const best = closestName(key, known, Infinity);
   if (best === null) return `${message} (it takes no options)`;
   return closestName(key, known, Math.max(2, Math.floor(key.length / 2))) === best
@@ -125,6 +143,7 @@ function unknownOption(key, known, where) {
  * @returns {string|null}
  */
 export function closestName(name, names, most = name.length <= 4 ? 1 : name.length <= 8 ? 2 : 3) {
+  if (name.length > OPTION_KEY_MAX) return null; // names worth suggesting are short; the distance takes length² time
   let best = null, bestScore = null;
   const lower = name.toLowerCase();
   for (const candidate of names) {

@@ -64,13 +64,30 @@ function parseString(text, field) {
 
 /**
  * '#rrggbb' for 0–255 channel values (clamped, so the answer is always six digits).
- * @param {Iterable<number>} rgb `[r, g, b]`, each 0–255
+ * @param {ArrayLike<number>} rgb `[r, g, b]`, each 0–255
  * @returns {string}
  * @example
  * toHex([255, 81, 96]); // '#ff5160'
  */
-export function toHex([r, g, b]) {
+export function toHex(rgb) {
+  checkChannels(rgb, 'toHex');
+  const r = rgb[0], g = rgb[1], b = rgb[2];
   return '#' + [r, g, b].map((c) => Math.round(clamp(c, 0, 255)).toString(16).padStart(2, '0')).join('');
+}
+
+/**
+ * A TypeError naming `where` unless `rgb` holds three finite numbers: a NaN
+ * would print as '#NaN0000' or be named a colour it is not. Allocates nothing
+ * (colorName may run for every pixel of a picture).
+ */
+function checkChannels(rgb, where) {
+  if (rgb === null || typeof rgb !== 'object' || !(rgb.length >= 3)) {
+    throw new TypeError(`${where} takes [r, g, b], got ${show(rgb)}`);
+  }
+  const r = rgb[0], g = rgb[1], b = rgb[2];
+  if (!(Number.isFinite(r) && Number.isFinite(g) && Number.isFinite(b))) { // also not '12', not undefined
+    throw new TypeError(`${where} takes [r, g, b], three finite numbers, got ${show(rgb)}`);
+  }
 }
 
 /** '#rrggbb' for 0–1 channel values (clamped). */
@@ -84,13 +101,15 @@ export function colorToHex(rgb) {
  * yellow, green, cyan, blue or purple. A red that is not fully saturated and
  * not dark is "pink", and so is a light magenta: the lesson's pink sphere,
  * [1, 0.32, 0.36], stays pink as its shading darkens, until it is dim red.
- * @param {Iterable<number>} rgb `[r, g, b]`, each 0–255
+ * @param {ArrayLike<number>} rgb `[r, g, b]`, each 0–255
  * @returns {string}
  * @example
  * colorName([255, 81, 96]); // 'pink'
  * colorName([20, 200, 40]); // 'green'
  */
-export function colorName([r, g, b]) {
+export function colorName(rgb) {
+  checkChannels(rgb, 'colorName');
+  const r = rgb[0], g = rgb[1], b = rgb[2];
   const { h, s, l } = rgbToHsl(r / 255, g / 255, b / 255);
   if (l < 0.1) return 'black';
   if (l > 0.93) return 'white';

@@ -28,11 +28,10 @@ export class Material {
     if (options === null || typeof options !== 'object') {
       throw new TypeError(`material must be an object like { color: [1, 0, 0] }, got ${show(options)}`);
     }
-    checkOptions(options, OPTIONS, 'material');
     const {
       color = [1, 1, 1], emission = 0, reflection = 0, transparency = 0,
       ior = 1.1, specular = 0, shininess = 50,
-    } = options;
+    } = checkOptions(options, OPTIONS, 'material');
     this.color = toColor(color, 'color');
     this.emission = toColor(emission, 'emission');
     this.reflection = numberInRange(reflection, 'reflection', 0, 1);
@@ -63,8 +62,7 @@ export class Material {
  */
 export function shapeOptions(value) {
   if (value === undefined || value instanceof Material) return { name: '', material: Material.from(value) };
-  checkOptions(value, [...OPTIONS, 'name'], 'material');
-  const { name = '', ...material } = value;
+  const { name = '', ...material } = checkOptions(value, [...OPTIONS, 'name'], 'material');
   if (typeof name !== 'string') throw new TypeError(`name must be text, got ${show(name)}`);
   return { name, material: Material.from(material) };
 }

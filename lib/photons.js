@@ -39,8 +39,7 @@ export class PhotonTracer {
    * @param {number} [options.samplePaths=40] how many photon paths to keep for drawing (the first ones, and as many that reached the eye)
    */
   constructor(options) {
-    checkOptions(options, OPTIONS, 'photon tracer');
-    const { scene, camera, seed = 1, eyeRadius = 1, maxBounces = 4, samplePaths = 40 } = options ?? {};
+    const { scene, camera, seed = 1, eyeRadius = 1, maxBounces = 4, samplePaths = 40 } = checkOptions(options, OPTIONS, 'photon tracer');
     if (!scene || !Array.isArray(scene.objects)) throw new TypeError(`scene must be a Scene, got ${show(scene)}`);
     if (!camera || typeof camera.directionAt !== 'function') throw new TypeError(`camera must be a Camera, got ${show(camera)}`);
     if (!Number.isInteger(seed)) throw new TypeError(`seed must be a whole number, got ${show(seed)}`);

@@ -13,6 +13,7 @@
  */
 import { renderPixel, renderPackedPixel, prepareFrame } from './render.js';
 import { TILE } from './bounds.js';
+import { checkScene, checkCamera } from './scene-check.js';
 import { positiveInteger, finiteNumber, show, checkOptions } from './check.js';
 
 /** The render orders a ProgressiveRenderer knows. */
@@ -54,6 +55,7 @@ export class ProgressiveRenderer {
   /** 'slow' mode at `slowRaysPerSecond`: rays owed (fractional) and when the last step ran. */
   #credit = 0;
   #lastStepAt = null;
+  #raysPerSecond = 0;
 
   /**
    * @param {object} options
@@ -79,11 +81,6 @@ export class ProgressiveRenderer {
     this.slowRaysPerStep = positiveInteger(slowRaysPerStep, 'slowRaysPerStep');
     /** The traced image, RGBA, width·height·4 bytes; a new array when the camera's size changes. */
     this.buffer = null;
-    /**
-     * In 'slow' mode, when above 0: rays per second instead of
-     * `slowRaysPerStep` per step (slower than one a frame, for rays a class
-     * can follow with its eyes).
-     */
     this.slowRaysPerSecond = 0;
     /** In 'slow' and 'scanline' modes the pixel `{ x, y }` traced last, else null. */
     this.current = null;
@@ -97,17 +94,17 @@ export class ProgressiveRenderer {
    */
   restart(changes = {}) {
     if (changes === null || typeof changes !== 'object') throw new TypeError(`changes must be an object like { camera }, got ${show(changes)}`);
-    checkOptions(changes, CHANGES, 'restart');
+    changes = checkOptions(changes, CHANGES, 'restart');
     const scene = changes.scene ?? this.scene;
     const camera = changes.camera ?? this.camera;
     const mode = changes.mode ?? this.mode;
     const shader = changes.shader ?? this.shader;
     if (!scene || !Array.isArray(scene.objects)) throw new TypeError(`scene must be a Scene, got ${show(scene)}`);
     if (!camera || typeof camera.directionAt !== 'function') throw new TypeError(`camera must be a Camera, got ${show(camera)}`);
-    positiveInteger(camera.width, 'camera.width');
-    positiveInteger(camera.height, 'camera.height');
     if (!ORDERS.includes(mode)) throw new RangeError(`mode must be one of ${ORDERS.map((m) => `'${m}'`).join(', ')}, got ${show(mode)}`);
     if (typeof shader !== 'function') throw new TypeError(`shader must be a function (scene, camera, x, y, target), got ${show(shader)}`);
+    checkCamera(camera); // as they are now: either may have been changed in place since
+    checkScene(scene);
     if (changes.slowRaysPerStep !== undefined) this.slowRaysPerStep = positiveInteger(changes.slowRaysPerStep, 'slowRaysPerStep');
 
     this.scene = scene;
@@ -167,6 +164,19 @@ export class ProgressiveRenderer {
     const count = Math.floor(this.#credit);
     this.#credit -= count;
     return count;
+  }
+
+  /**
+   * In 'slow' mode, when above 0: rays per second instead of
+   * `slowRaysPerStep` per step (slower than one a frame, for rays a class
+   * can follow with its eyes). A finite number ≥ 0, else a Type/RangeError:
+   * Infinity would owe Infinity × 0 = NaN rays and trace nothing.
+   */
+  get slowRaysPerSecond() { return this.#raysPerSecond; }
+  set slowRaysPerSecond(n) {
+    finiteNumber(n, 'slowRaysPerSecond');
+    if (n < 0) throw new RangeError(`slowRaysPerSecond must not be negative, got ${n}`);
+    this.#raysPerSecond = n;
   }
 
   /** True once every pixel is traced. */

@@ -31,8 +31,7 @@ export class Scene {
    * scene.objects.length; // 1 shape; scene.lights.length: 1 light
    */
   constructor(options = {}) {
-    checkOptions(options, OPTIONS, 'scene');
-    const { background = [0, 0, 0], ambient = 0, shadows = true, bias = 1e-4, epsilon = EPSILON, maxDepth = 5, specular = true } = options;
+    const { background = [0, 0, 0], ambient = 0, shadows = true, bias = 1e-4, epsilon = EPSILON, maxDepth = 5, specular = true } = checkOptions(options, OPTIONS, 'scene');
     this.background = toColor(background, 'background');
     this.ambient = numberInRange(ambient, 'ambient', 0, 1);
     this.shadows = bool(shadows, 'shadows');

@@ -18,7 +18,7 @@ import { PointLight } from './lights.js';
 import { Sphere } from './shapes/sphere.js';
 import { Plane } from './shapes/plane.js';
 import { Box } from './shapes/box.js';
-import { show } from './check.js';
+import { show, withPath as named } from './check.js';
 
 const SCENE_FIELDS = ['background', 'ambient', 'shadows', 'bias', 'epsilon', 'maxDepth', 'specular', 'objects'];
 const MATERIAL_FIELDS = ['color', 'emission', 'reflection', 'transparency', 'ior', 'specular', 'shininess'];
@@ -60,9 +60,7 @@ export function sceneToJSON(scene) {
  * copy.objects.length; // as many shapes as the original
  */
 export function sceneFromJSON(json) {
-  const data = parse(json, 'scene');
-  onlyFields(data, SCENE_FIELDS, 'scene');
-  const { objects = [], ...options } = data;
+  const { objects = [], ...options } = onlyFields(parse(json, 'scene'), SCENE_FIELDS, 'scene');
   const scene = new Scene(options);
   if (!Array.isArray(objects)) throw new TypeError(`objects must be an array, got ${show(objects)}`);
   objects.forEach((o, i) => scene.add(objectFromJSON(o, `objects[${i}]`)));
@@ -78,9 +76,7 @@ export function cameraToJSON(camera) {
 
 /** A Camera from JSON data or text, checked; errors name the field. */
 export function cameraFromJSON(json) {
-  const data = parse(json, 'camera');
-  onlyFields(data, CAMERA_FIELDS, 'camera');
-  return new Camera(data);
+  return new Camera(onlyFields(parse(json, 'camera'), CAMERA_FIELDS, 'camera'));
 }
 
 /**
@@ -218,47 +214,39 @@ function pathOf(entry) {
 
 /** A misspelt field would silently fall back to its default: name it instead. */
 function onlyFields(data, allowed, path) {
+  const own = Object.create(null); // read fields from this: nothing set on Object.prototype is a field
   for (const key of Object.keys(data)) {
     if (!allowed.includes(key)) {
       throw new TypeError(`${path} has no field ${show(key)} (its fields: ${allowed.join(', ')})`);
     }
+    own[key] = data[key];
   }
+  return own;
 }
 
 /**
  * One object of scene JSON as a shape or point light, with sceneFromJSON's
  * checks and messages: `path` ('objects[2]') starts them.
  */
-export function objectFromJSON(o, path) {
-  if (o === null || typeof o !== 'object' || Array.isArray(o)) throw new TypeError(`${path} must be an object, got ${show(o)}`);
-  if (!Object.hasOwn(TYPES, o.type)) {
-    throw new TypeError(`${path}.type must be one of ${Object.keys(TYPES).map((t) => `"${t}"`).join(', ')}, got ${show(o.type)}`);
+export function objectFromJSON(given, path) {
+  if (given === null || typeof given !== 'object' || Array.isArray(given)) throw new TypeError(`${path} must be an object, got ${show(given)}`);
+  const type = Object.hasOwn(given, 'type') ? given.type : undefined;
+  if (typeof type !== 'string' || !Object.hasOwn(TYPES, type)) { // ["sphere"] is not "sphere"
+    throw new TypeError(`${path}.type must be one of ${Object.keys(TYPES).map((t) => `"${t}"`).join(', ')}, got ${show(type)}`);
   }
-  const kind = TYPES[o.type];
-  onlyFields(o, ['type', 'name', ...kind.fields], path);
+  const kind = TYPES[type];
+  const o = onlyFields(given, ['type', 'name', ...kind.fields], path);
   if (o.name !== undefined && typeof o.name !== 'string') throw new TypeError(`${path}.name must be a string, got ${show(o.name)}`);
   let material;
   if (kind.fields.includes('material') && o.material !== undefined) {
     if (o.material === null || typeof o.material !== 'object' || Array.isArray(o.material)) {
       throw new TypeError(`${path}.material must be an object, got ${show(o.material)}`);
     }
-    onlyFields(o.material, MATERIAL_FIELDS, `${path}.material`);
-    material = named(() => new Material(o.material), `${path}.material.`);
+    material = named(() => new Material(onlyFields(o.material, MATERIAL_FIELDS, `${path}.material`)), `${path}.material.`);
   }
   const item = named(() => kind.build(o, material), `${path}.`);
   item.name = o.name ?? '';
   return item;
-}
-
-/** Runs `make`; a TypeError or RangeError it throws gets the field's path in front. */
-function named(make, prefix) {
-  try {
-    return make();
-  } catch (error) {
-    if (error instanceof TypeError) throw new TypeError(prefix + error.message, { cause: error });
-    if (error instanceof RangeError) throw new RangeError(prefix + error.message, { cause: error });
-    throw error;
-  }
 }
 
 /* ---- to code ---- */

@@ -7,7 +7,23 @@
 import { toColor, colorToHex } from './color.js';
 import { show } from './check.js';
 
-const NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
+/**
+ * A plain number as typed: 12, -3.5, .5, 1e-3. The dot and its digits come
+ * as one optional group, so no two repeats compete for the same digits and
+ * a test takes time in proportion to the text (`\d+\.?\d*` took 3 s on
+ * 60,000 digits then a letter).
+ */
+export const PLAIN_NUMBER = /^[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:e[+-]?\d+)?$/i;
+
+/** The longest text a number or colour box reads: past it, a message, not a long wait. */
+export const TYPED_MAX = 100;
+
+/** A RangeError starting with `label` when `text` is longer than TYPED_MAX. */
+function notTooLong(text, label) {
+  if (text.length > TYPED_MAX) {
+    throw new RangeError(`${label} is too long: ${text.length.toLocaleString('en')} characters, at most ${TYPED_MAX}`);
+  }
+}
 
 /**
  * The number typed in a box, else a TypeError/RangeError whose message
@@ -21,9 +37,10 @@ export function readNumber(text, label, { min = -Infinity, max = Infinity, above
   const wanted = integer ? 'a whole number' : 'a number';
   const range = Number.isFinite(min) && Number.isFinite(max) ? ` from ${min} to ${max}` : '';
   if (t === '') throw new TypeError(`${label} is empty: type ${wanted}${range}`);
-  if (!NUMBER.test(t)) throw new TypeError(`${label} must be ${wanted}, got ${show(t)}`);
+  notTooLong(t, label);
+  if (!PLAIN_NUMBER.test(t)) throw new TypeError(`${label} must be ${wanted}, got ${show(t)}`);
   const n = Number(t);
-  if (!Number.isFinite(n)) throw new RangeError(`${label} is too big, got ${t}`);
+  if (!Number.isFinite(n)) throw new RangeError(`${label} is too big, got ${show(t)}`);
   if (integer && !Number.isInteger(n)) throw new RangeError(`${label} must be a whole number, got ${n}`);
   if (above !== undefined && !(n > above)) throw new RangeError(`${label} must be greater than ${above}, got ${n}`);
   if (n < min || n > max) {
@@ -40,8 +57,9 @@ export function readNumber(text, label, { min = -Infinity, max = Infinity, above
 export function readColor(text, label) {
   const t = String(text ?? '').trim();
   if (t === '') throw new TypeError(`${label} is empty: type a colour like #ff5160, pink, or 1, 0.3, 0.4`);
+  notTooLong(t, label);
   const parts = t.replace(/^\[|\]$/g, '').split(/\s*,\s*|\s+/);
-  if (parts.every((p) => NUMBER.test(p)) && (parts.length === 1 || parts.length === 3)) {
+  if (parts.every((p) => PLAIN_NUMBER.test(p)) && (parts.length === 1 || parts.length === 3)) {
     const rgb = parts.map(Number);
     return withLabel(() => toColor(rgb.length === 1 ? rgb[0] : rgb, label), label);
   }

@@ -17,6 +17,7 @@ import { inspectPixel } from '../explain.js';
 import { toHex, colorName } from '../color.js';
 import { formatNumber, formatVector, formatAngle } from '../format.js';
 import { show, checkOptions } from '../check.js';
+import { PLAIN_NUMBER } from '../values.js';
 import { useStyle, element, resolveParent, copyText } from './dom.js';
 import { createAnnouncer } from './announce.js';
 
@@ -385,16 +386,20 @@ export function pixelCSV(r) {
   return [CSV_HEAD, ...rows].map((row) => row.map(csvCell).join(',')).join('\n') + '\n';
 }
 
-const PLAIN_NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
+/**
+ * What a cell may start with that a spreadsheet could run as a formula, or
+ * skip on its way to one: = + - @ | a tab or CR, a space, a zero-width or
+ * bidi mark, a full-width ＝＋－＠, or a quote (as in "=1 or '=1).
+ */
+const FORMULA_START = /^[=+\-@|\t\r "'\u200B-\u200F\u202A-\u202E\u2060-\u2069\uFEFF＝＋－＠]/;
 
 /**
- * One CSV cell. Text a spreadsheet would run as a formula (it starts with
- * `=`, `+`, `-`, `@`, a tab or a CR, as a name like =HYPERLINK(…) can) gets a leading '
- * so it shows as text; plain numbers stay numbers. A cell with a quote, a
- * comma, a CR or a LF is quoted.
+ * One CSV cell. Text a spreadsheet would run as a formula (FORMULA_START:
+ * a name like =HYPERLINK(…) can) gets a leading ' so it shows as text; plain
+ * numbers stay numbers. A cell with a quote, a comma, a CR or a LF is quoted.
  */
 export function csvCell(cell) {
   let text = String(cell);
-  if (/^[=+\-@\t\r]/.test(text) && !PLAIN_NUMBER.test(text)) text = `'${text}`;
+  if (FORMULA_START.test(text) && !PLAIN_NUMBER.test(text)) text = `'${text}`;
   return /[",\r\n]/.test(text) ? `"${text.replace(/"/g, '""')}"` : text;
 }

@@ -49,8 +49,7 @@ export class PhotonView {
   #tracer; #target; #ctx; #image; #page; #raf = 0; #destroyed = false;
 
   constructor(p, options = {}) {
-    checkOptions(options, OPTIONS, 'photon view');
-    const { scene, camera, seed = 1, eyeRadius = 2, photons = 1_000_000, samplePaths = 12, scale = 10, parent, label = 'From the light: photons', budgetMs = 12, link = null, sceneView = null } = options;
+    const { scene, camera, seed = 1, eyeRadius = 2, photons = 1_000_000, samplePaths = 12, scale = 10, parent, label = 'From the light: photons', budgetMs = 12, link = null, sceneView = null } = checkOptions(options, OPTIONS, 'photon view');
     this.photonsPerRun = positiveInteger(photons, 'photons');
     if (!(typeof scale === 'number' && scale > 0 && Number.isFinite(scale))) throw new RangeError(`scale must be a number greater than 0, got ${show(scale)}`);
     if (!(typeof budgetMs === 'number' && budgetMs > 0 && Number.isFinite(budgetMs))) throw new RangeError(`budgetMs must be a number of milliseconds greater than 0, got ${show(budgetMs)}`);

@@ -92,8 +92,7 @@ export class SceneView {
   #flying = []; #shots = 0; #shooting = false; #lastShot = null; #fan = null; #fanSegments = []; #watching = 0; #labels = [];
 
   constructor(p, options = {}) {
-    checkOptions(options, OPTIONS, 'scene view');
-    const { view, width = 480, height = 360, parent, label = 'The scene in 3D', planeDistance = 'auto', frustum = true, orbit = {}, controls = true, raysPerSecond = 4, construction = null } = options;
+    const { view, width = 480, height = 360, parent, label = 'The scene in 3D', planeDistance = 'auto', frustum = true, orbit = {}, controls = true, raysPerSecond = 4, construction = null } = checkOptions(options, OPTIONS, 'scene view');
     if (construction !== null && !(construction instanceof Sphere)) throw new TypeError(`construction must be a Sphere of the scene, got ${show(construction)}`);
     this.#constructionSphere = construction;
     if (!SPEEDS.includes(raysPerSecond)) throw new RangeError(`raysPerSecond must be one of ${SPEEDS.join(', ')}, got ${show(raysPerSecond)}`);
@@ -923,9 +922,9 @@ function nearestAhead(scene, camera) {
 }
 
 function checkOrbit(orbit) {
-  checkOptions(orbit, ['yaw', 'pitch', 'distance'], 'orbit');
+  const own = checkOptions(orbit, ['yaw', 'pitch', 'distance'], 'orbit');
   const out = {};
-  for (const key of Object.keys(orbit)) {
+  for (const key of Object.keys(own)) {
     const v = orbit[key];
     if (typeof v !== 'number' || !Number.isFinite(v) || (key === 'distance' && v <= 0)) throw new RangeError(`orbit.${key} must be a ${key === 'distance' ? 'distance greater than 0' : 'number of degrees'}, got ${show(v)}`);
     out[key] = v;

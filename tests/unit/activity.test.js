@@ -49,3 +49,32 @@ describe('the answer line', () => {
     }
   });
 });
+
+describe('readAnswerLine on long pasted text', () => {
+  it('reads a line in time proportional to its length, whatever its spacing', async () => {
+    const { answerLineBoxes } = await import('../../lib/activity.js');
+    const { timeRatio } = await import('./linear-time.js');
+    const spaces = timeRatio(answerLineBoxes, (n) => `pixel 1,1 h 1 v 1${' '.repeat(n)}x`);
+    const pad = (n) => ' '.repeat(n / 4);
+    const tokens = timeRatio(answerLineBoxes, (n) => `pixel${pad(n)}1,${pad(n)}2 h${pad(n)}3 v${pad(n)}4 x`);
+    expect(spaces).toBeLessThan(400); // the old regular expression: cubic, 26 s on 1,600 spaces
+    expect(tokens).toBeLessThan(400);
+  });
+
+  it('still reads a line with long runs of spaces up to the cap, and is null past it (an ordinary paste)', async () => {
+    const { ANSWER_LINE_MAX } = await import('../../lib/activity.js');
+    const wide = `pixel 1,2${' '.repeat(150)}h 3 v 4`;
+    expect(wide.length).toBeLessThanOrEqual(ANSWER_LINE_MAX);
+    expect(readAnswerLine(wide)).toEqual({ x: '1', y: '2', h: '3', v: '4' });
+    expect(readAnswerLine(`   ${wide}   `)).toEqual({ x: '1', y: '2', h: '3', v: '4' }); // trimmed first
+    expect(readAnswerLine(`pixel 1,2${' '.repeat(ANSWER_LINE_MAX)}h 3 v 4`)).toBeNull();
+    expect(readAnswerLine(`pixel 1,1 h 1 v 1${' '.repeat(1e5)}x`)).toBeNull();
+  });
+
+  it('is null for near misses the tokens allow but the line does not', () => {
+    for (const text of ['pixels 1,2; h 3; v 4', 'pixel 1,2; h 3; v 4; v 5', 'pixel 1,2,3; h 3; v 4', 'pixel 1,2; h - 3; v 4', 'pixel 1,2; h 3; v 4 x', 'pixel 1;2; h 3; v 4']) {
+      expect(readAnswerLine(text), text).toBeNull();
+    }
+    expect(readAnswerLine('PIXEL10,12H30V-82')).toEqual({ x: '10', y: '12', h: '30', v: '-82' });
+  });
+});

@@ -25,9 +25,12 @@ describe('editDistance', () => {
 describe('checkOptions', () => {
   const KNOWN = ['color', 'emission', 'reflection'];
 
-  it('returns known options as they are, and {} for undefined', () => {
+  it('returns the known options\' own keys, with no prototype, and {} for undefined', () => {
     const options = { color: 'red', reflection: 0.5 };
-    expect(checkOptions(options, KNOWN, 'material')).toBe(options);
+    const own = checkOptions(options, KNOWN, 'material');
+    expect(own).toEqual(options);
+    expect(Object.getPrototypeOf(own)).toBeNull();
+    expect(Object.getPrototypeOf(checkOptions(undefined, KNOWN, 'material'))).toBeNull();
     expect(checkOptions(undefined, KNOWN, 'material')).toEqual({});
     expect(checkOptions({}, KNOWN, 'material')).toEqual({});
   });

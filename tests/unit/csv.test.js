@@ -23,7 +23,8 @@ function parseCSV(text) {
 
 describe('csvCell', () => {
   it('writes formula starters as text', () => {
-    for (const name of ['=HYPERLINK("http://x","y")', '+1+2', '-2+3', '@SUM(A1)', '\t=1', '\r=1', '=1+1']) {
+    for (const name of ['=HYPERLINK("http://x","y")', '+1+2', '-2+3', '@SUM(A1)', '\t=1', '\r=1', '=1+1',
+      ' =1+1', '\u200B=1+1', '\u202E=1+1', '\uFEFF=1', '＝1+1', '|cmd', '"=1+1', "'=1+1"]) {
       const cell = csvCell(name);
       const text = parseCSV(cell)[0][0];
       expect(text.startsWith("'"), JSON.stringify(name)).toBe(true);

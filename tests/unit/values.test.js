@@ -69,3 +69,29 @@ describe('readColor and colorText', () => {
     for (const rgb of [[2, 2, 2], [2, 1, 0], [0.2, 0.4, 1]]) expect(readColor(colorText(rgb), 'c')).toEqual(rgb);
   });
 });
+
+describe('long typed text', () => {
+  it('tests a number in time proportional to its length (60,000 digits then a letter took 3 s)', async () => {
+    const { PLAIN_NUMBER } = await import('../../lib/values.js');
+    const { timeRatio } = await import('./linear-time.js');
+    const test = (text) => PLAIN_NUMBER.test(text);
+    expect(timeRatio(test, (n) => `${'1'.repeat(n)}x`)).toBeLessThan(400);
+    expect(timeRatio(test, (n) => `${'1'.repeat(n / 2)}.${'1'.repeat(n / 2)}x`)).toBeLessThan(400);
+  });
+
+  it('refuses text past the cap at once, naming the box, without repeating the text', async () => {
+    const { TYPED_MAX } = await import('../../lib/values.js');
+    const long = `${'1'.repeat(60000)}x`;
+    expect(() => readNumber(long, 'Camera H')).toThrow(new RangeError(`Camera H is too long: 60,001 characters, at most ${TYPED_MAX}`));
+    expect(() => readColor(` ${'1, '.repeat(50)} `, 'color')).toThrow(/^color is too long: 149 characters, at most 100$/);
+    expect(readNumber(`  ${'1'.repeat(TYPED_MAX - 1)}  `, 'x')).toBe(Number('1'.repeat(TYPED_MAX - 1))); // trimmed first
+  });
+
+  it('cuts a too-big number in its message', () => {
+    const typed = `${'9'.repeat(90)}e999`;
+    let message = '';
+    try { readNumber(typed, 'x'); } catch (error) { message = error.message; }
+    expect(message).toMatch(/^x is too big, got "9+…$/);
+    expect(message).not.toContain(typed);
+  });
+});
