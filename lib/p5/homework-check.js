@@ -1,7 +1,8 @@
 /**
  * The homework pages' self-check: a "Check my scene" button under the
  * picture and the result of a check (lib/homework.js) as a list, ✓, ✗ or –
- * per check, in the student's words.
+ * per check, in the student's words. Each check sends an `rt-check` event
+ * (bubbling) with `detail: { passed }`.
  *
  *   p.createHomeworkCheck({ view, check: checkTrafficSignal, parent: 'check', problem });
  */
@@ -27,7 +28,12 @@ export function createHomeworkCheck(p, options) {
   const results = element('div', { 'data-check-results': '' }, 'Press the button to check your scene against the task.');
   const warning = problem ? element('p', { class: 'hw-warning', role: 'alert' }, problem) : null;
   host.append(button, results, ...(warning ? [warning] : []));
-  const run = () => showCheck(results, check(view.scene, view.camera));
+  const run = () => {
+    const result = check(view.scene, view.camera);
+    showCheck(results, result);
+    // The page's tasks (task-list.js) hear of each check.
+    results.dispatchEvent(new CustomEvent('rt-check', { bubbles: true, detail: { passed: result.passed } }));
+  };
   button.addEventListener('click', run);
   return { button, results, run, destroy: () => { button.remove(); results.remove(); warning?.remove(); } };
 }
