@@ -13,32 +13,14 @@
  */
 import { inspectPixel } from '../explain.js';
 import { lessonOf, LESSONS } from '../lesson-tasks.js';
-import { PROGRESS_KEY, parseProgress, serializeProgress, markDone, clearProgress, pageProgress, progressText } from '../tasks.js';
+import { markDone, clearProgress, pageProgress, progressText } from '../tasks.js';
+import { loadProgress, saveProgress } from './progress-store.js';
 import { checkOptions, show } from '../check.js';
 import { element, resolveParent, useStyle } from './dom.js';
 
 const OPTIONS = ['page', 'view', 'parent', 'parts', 'hintAfterMs', 'hintAfterTries'];
 /** What the student does that may finish a task whose state it changes (a box, a switch, a drag in 3D). */
 const INPUT_EVENTS = ['input', 'change', 'click', 'pointerup', 'keyup'];
-
-/** The progress kept in this browser; nothing (never an error) when storage is off, empty, corrupt or foreign. */
-export function loadProgress(storage = globalThis.localStorage) {
-  try {
-    return parseProgress(storage?.getItem(PROGRESS_KEY) ?? null, LESSONS);
-  } catch {
-    return {};
-  }
-}
-
-/** Keeps `progress` in this browser; false when the browser will not (storage off or full). */
-export function saveProgress(progress, storage = globalThis.localStorage) {
-  try {
-    storage.setItem(PROGRESS_KEY, serializeProgress(progress));
-    return true;
-  } catch {
-    return false;
-  }
-}
 
 /**
  * @param {import('p5').default} p the sketch
