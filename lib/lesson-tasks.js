@@ -129,7 +129,7 @@ export const LESSONS = [
       hint: 'The button under the photons\' picture sends as many again.',
       done: (e) => e.parts.photons !== undefined && e.parts.photons.tracer.emitted > e.parts.photons.photonsPerRun },
     { id: 'turn', text: 'Turn the 3D view to look at the rays from another side.',
-      hint: 'Drag the 3D view, or Tab to it and press an arrow key.',
+      hint: 'Drag the 3D view with the mouse.',
       done: (e, memory) => turned(e.parts.sceneView, memory) },
   ] },
   { page: '01', title: 'Rays through pixels', tasks: [

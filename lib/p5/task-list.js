@@ -29,8 +29,8 @@ const INPUT_EVENTS = ['input', 'change', 'click', 'pointerup', 'keyup'];
  * @param {import('./tracer-view.js').TracerView} options.view the picture whose selected pixel the tasks look at
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where the list goes; default right after the page's `<main>`
  * @param {object} [options.parts] the page's other parts the tasks look at: `photons`, `sceneView`, `animation`
- * @param {number} [options.hintAfterMs=60000] a task's hint shows after this long on the page…
- * @param {number} [options.hintAfterTries=6] …or after this many pixels selected or answers checked, whichever comes first
+ * @param {number} [options.hintAfterMs=60000] a task's hint shows after this long on the page,
+ * @param {number} [options.hintAfterTries=6] or after this many pixels selected or answers checked, whichever comes first
  * @returns {TaskList}
  * @example
  * const view = p.createTracerView({ scene, camera });
