@@ -283,8 +283,12 @@ function lightCount(scene, memory) {
   return count > memory.first;
 }
 
+/** Shadows are looked for among this many spheres at most: a class's scene, not a 1,000-sphere one (the look is pairs × 400 points). */
+const MAX_SHADOW_SPHERES = 16;
+
 /** A sphere's shadow on another that was not there when the page was first seen. */
 function newShadow(e, memory) {
+  if (e.scene.spheres.length > MAX_SHADOW_SPHERES) return false;
   const pairs = shadowsOnOthers(e.scene, e.camera.position);
   memory.first ??= new Set(pairs);
   return pairs.some((pair) => !memory.first.has(pair));
