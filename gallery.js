@@ -4,6 +4,8 @@
  * title and one line come from the page's <title> and description; its
  * thumbnail is the picture the screenshot tests check for that sketch.
  */
+import { showProgress } from './gallery-progress.js';
+
 const pages = import.meta.glob('./sketches/*.html', { query: '?raw', import: 'default', eager: true });
 const thumbnails = import.meta.glob('./tests/e2e/__screenshots__/gallery.spec.js/*-view0.png', {
   query: '?url', import: 'default', eager: true,
@@ -13,6 +15,7 @@ const list = document.getElementById('sketches');
 for (const path of Object.keys(pages).sort()) {
   list.append(card(path, describe(pages[path])));
 }
+showProgress(list); // each lesson's tasks done in this browser, and the code for the teacher
 
 /** Title, one line and number of a sketch page, read from its HTML. */
 function describe(html) {

@@ -7,7 +7,7 @@ import { teachersAnswers, classroom } from './scripts/classroom.js';
 import { reloadItsPagesOnly, swapSketchesInPlace, syntaxErrorsWhereTheyAre } from './scripts/vite-live-coding.js';
 
 // Every page is an entry of the static build: the gallery, the web editor's
-// steps and each sketch (the API reference is made by a plugin).
+// steps, the teacher's page of progress codes and each sketch (the API reference is made by a plugin).
 const sketchPages = readdirSync('sketches')
   .filter((file) => file.endsWith('.html'))
   .map((file) => resolve('sketches', file));
@@ -36,7 +36,7 @@ export default defineConfig(({ command, mode }) => ({
     target: 'es2022',
     outDir: withSolutions ? 'dist-teacher' : 'dist',
     chunkSizeWarningLimit: 1500, // p5 itself is 1.3 MB: one library, loaded once per page
-    rollupOptions: { input: [resolve('index.html'), resolve('web-editor.html'), ...sketchPages] },
+    rollupOptions: { input: [resolve('index.html'), resolve('web-editor.html'), resolve('teacher.html'), ...sketchPages] },
   },
   worker: { format: 'es' },
   preview: { headers: isolation },

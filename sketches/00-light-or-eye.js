@@ -33,7 +33,8 @@ new p5((p) => {
       view, parent: 'three', orbit: { yaw: -60, pitch: 25 },
       label: 'In 3D: some photons (orange; thick: reached the eye) and the eye ray of the selected pixel',
     });
-    p.createPhotonView({ scene, camera, seed: SEED, eyeRadius: EYE_RADIUS, photons: PHOTONS, parent: 'light', link: view, sceneView });
+    const photons = p.createPhotonView({ scene, camera, seed: SEED, eyeRadius: EYE_RADIUS, photons: PHOTONS, parent: 'light', link: view, sceneView });
     view.select(16, 14);
+    p.createTaskList({ page: '00', view, parts: { photons, sceneView } }); // the page's tasks, ticked off as they are done
   };
 }, document.getElementById('sketch'));

@@ -55,6 +55,7 @@ new p5((p) => {
     // Pointing at a pixel shows its ray; leaving the picture shows the selected one again.
     view.canvas.addEventListener('pointermove', (e) => { hovered = view.pixelAt(e.clientX, e.clientY); });
     view.canvas.addEventListener('pointerleave', () => { hovered = null; });
+    p.createTaskList({ page: '01', view }); // the page's tasks, ticked off as they are done
   };
 
   p.draw = () => {

@@ -55,6 +55,7 @@ new p5((p) => {
     p.pixelDensity(1);
     p.createInspector({ view: views[0], parent: 'sketch' });
     views[0].select(WIDTH / 2, HEIGHT / 2);
+    p.createTaskList({ page: '02', view: views[0] }); // the page's tasks, ticked off as they are done
     p.noLoop();
   };
 

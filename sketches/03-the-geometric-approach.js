@@ -45,6 +45,7 @@ new p5((p) => {
     });
     view.onSelect(() => p.redraw());
     view.select(...FIRST_PIXEL);
+    p.createTaskList({ page: '03', view }); // the page's tasks, ticked off as they are done
     p.noLoop();
   };
 

@@ -57,6 +57,7 @@ new p5((p) => {
       check();
     });
     check();
+    p.createTaskList({ page: '04', view }); // the page's tasks, ticked off as they are done
   };
 
   p.draw = () => pinkOnes.draw();

@@ -35,6 +35,7 @@ new p5((p) => {
       view.setScene(changed);
       shareInLink(json); // the link now shares this scene
     } });
+    p.createTaskList({ page: '05', view }); // the page's tasks, ticked off as they are done
   };
 
   // #scene=… (or an older ?scene=…) in the link, else the class scene; a bad link says why and shows the class scene.

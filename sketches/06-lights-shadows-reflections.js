@@ -59,5 +59,6 @@ new p5((p) => {
       view.restart();
     });
     p.createSceneView({ view, parent: column, width: 600, height: 400, label: 'In 3D: click a pixel to see its shadow rays and bounces' });
+    p.createTaskList({ page: '06', view }); // the page's tasks, ticked off as they are done
   };
 }, document.getElementById('sketch'));

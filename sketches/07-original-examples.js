@@ -47,6 +47,7 @@ new p5((p) => {
     const { name, problem } = exampleInLink(location.search, EXAMPLES); // ?example=animated
     picker.choose(name);
     picker.say(problem);
+    p.createTaskList({ page: '07', view, parts: { animation: movie } }); // the page's tasks, ticked off as they are done
   };
 
   p.draw = () => movie.tick(p.deltaTime);

@@ -45,6 +45,7 @@ new p5((p) => {
       label: answer ? 'The reference solution (sketches/solutions/08-traffic-signal.js)' : 'Your traffic signal' });
     p.createInspector({ view, parent: 'sketch' });
 
+    p.createTaskList({ page: '08', view }); // the page's tasks, ticked off as they are done
     p.createHomeworkCheck({ view, check: checkTrafficSignal, parent: 'check', problem: reference?.elsewhere ?? message });
   };
 }, 'sketch');

@@ -45,6 +45,7 @@ new p5((p) => {
       label: answer ? 'The reference solution (sketches/solutions/09-rear-lights.js)' : 'Your car, seen from behind' });
     p.createInspector({ view, parent: 'sketch' });
 
+    p.createTaskList({ page: '09', view }); // the page's tasks, ticked off as they are done
     p.createHomeworkCheck({ view, check: checkRearLights, parent: 'check', problem: reference?.elsewhere ?? message });
   };
 }, 'sketch');

@@ -21,6 +21,7 @@ import { createExamplePicker } from './example-picker.js';
 import { createAnimation } from './animation.js';
 import { createSceneForm } from './scene-form.js';
 import { createHomeworkCheck } from './homework-check.js';
+import { createTaskList } from './task-list.js';
 import { drawSideView, drawTopView } from './diagrams/plane-views.js';
 import { drawGeometricConstruction } from './diagrams/construction.js';
 import { drawParabola } from './diagrams/parabola.js';
@@ -45,6 +46,7 @@ export const FACTORIES = {
   createAnimation,
   createSceneForm,
   createHomeworkCheck,
+  createTaskList,
   // Diagrams draw into the sketch's own canvas, inside the box { x, y, w, h }.
   drawSideView,
   drawTopView,

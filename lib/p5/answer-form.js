@@ -87,6 +87,7 @@ export function createAnswerForm(p, options) {
     /**
      * The verdict: ✔ or ✘, a swatch of `color` (CSS, e.g. '#ff5160'), the
      * message, `data` on the result's dataset, the answer line and a line of detail.
+     * The form's element then sends an `rt-answer` event (bubbling) with `detail: { ok, answer }`.
      */
     show({ ok, message, color, data = {}, answer: line, detail: more }) {
       const swatch = color && element('span', { class: 'rt-swatch', style: `background: ${color}` });
@@ -94,6 +95,8 @@ export function createAnswerForm(p, options) {
       Object.assign(result.dataset, data);
       if (line !== undefined) answer.textContent = line;
       if (more !== undefined) detail.textContent = more;
+      // The page's tasks (task-list.js) hear of each verdict.
+      section.dispatchEvent(new CustomEvent('rt-answer', { bubbles: true, detail: { ok: Boolean(ok), answer: answer.textContent } }));
     },
   };
 }

@@ -3,7 +3,8 @@
  * picture and the result of a check (lib/homework.js) as a list, ✓, ✗ or –
  * per check, in the student's words. Its hints name the library's classes as
  * the page does: `new RT.Sphere(…)` in a global-mode sketch of the one-file
- * build, `new Sphere(…)` in a module.
+ * build, `new Sphere(…)` in a module. Each check sends an `rt-check` event
+ * (bubbling) with `detail: { passed }`.
  *
  *   p.createHomeworkCheck({ view, check: checkTrafficSignal, parent: 'check', problem });
  */
@@ -33,7 +34,12 @@ export function createHomeworkCheck(p, options) {
   const announcer = createAnnouncer({ name: 'check' }); // the verdict is said; the list is read on demand
   const box = element('div', { class: 'rt-check' }, button, results, announcer.element, warning); // a block of its own, whatever the page around it
   host.append(box);
-  const run = () => announcer.say(showCheck(results, check(view.scene, view.camera, { prefix: libraryPrefix(p) })));
+  const run = () => {
+    const result = check(view.scene, view.camera, { prefix: libraryPrefix(p) });
+    announcer.say(showCheck(results, result));
+    // The page's tasks (task-list.js) hear of each check.
+    results.dispatchEvent(new CustomEvent('rt-check', { bubbles: true, detail: { passed: result.passed } }));
+  };
   button.addEventListener('click', run);
   return { button, results, run, destroy: () => { announcer.destroy(); box.remove(); } };
 }

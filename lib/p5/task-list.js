@@ -1,0 +1,197 @@
+/**
+ * A lesson page's tasks (lib/lesson-tasks.js) as a list under the page, each
+ * ticked off by what the student does there: a pixel selected, a value
+ * changed, a picture traced again, the activity's verdict, a self-check. What
+ * is done is kept in the browser (localStorage, lib/tasks.js), shown as a
+ * strip in the page's header, and announced in one polite status line.
+ *
+ *   p.createTaskList({ page: '01', view });                      // after the page's own setup
+ *   p.createTaskList({ page: '00', view, parts: { photons, sceneView } });
+ *
+ * Controls report what they judged with DOM events on their own element:
+ * `rt-answer` (the answer form's verdict) and `rt-check` (a homework self-check).
+ */
+import { inspectPixel } from '../explain.js';
+import { lessonOf, LESSONS } from '../lesson-tasks.js';
+import { markDone, clearProgress, pageProgress, progressText } from '../tasks.js';
+import { loadProgress, saveProgress } from './progress-store.js';
+import { checkOptions, show } from '../check.js';
+import { element, resolveParent, useStyle } from './dom.js';
+
+const OPTIONS = ['page', 'view', 'parent', 'parts', 'hintAfterMs', 'hintAfterTries'];
+/** What the student does that may finish a task whose state it changes (a box, a switch, a drag in 3D). */
+const INPUT_EVENTS = ['input', 'change', 'click', 'pointerup', 'keyup'];
+
+/**
+ * @param {import('p5').default} p the sketch
+ * @param {object} options
+ * @param {string} options.page the lesson page, '00'–'09'
+ * @param {import('./tracer-view.js').TracerView} options.view the picture whose selected pixel the tasks look at
+ * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where the list goes; default right after the page's `<main>`
+ * @param {object} [options.parts] the page's other parts the tasks look at: `photons`, `sceneView`, `animation`
+ * @param {number} [options.hintAfterMs=60000] a task's hint shows after this long on the page,
+ * @param {number} [options.hintAfterTries=6] or after this many pixels selected or answers checked, whichever comes first
+ * @returns {TaskList}
+ * @example
+ * const view = p.createTracerView({ scene, camera });
+ * p.createTaskList({ page: '01', view }); // "Select any pixel", … ticked off as the student does them
+ */
+export function createTaskList(p, options) {
+  return new TaskList(checkOptions(options, OPTIONS, 'createTaskList'));
+}
+
+/** The task list of one page, what `p.createTaskList({ … })` returns. */
+export class TaskList {
+  #lesson; #view; #parts; #progress; #memory = {}; #items = new Map();
+  #last = null; #tries = 0; #hintAfterTries; #timer = 0; #pending = 0; #cleanups = [];
+
+  constructor({ page, view, parent, parts = {}, hintAfterMs = 60_000, hintAfterTries = 6 }) {
+    this.#lesson = lessonOf(page);
+    if (!this.#lesson) throw new RangeError(`page must be one of ${LESSONS.map((l) => `'${l.page}'`).join(', ')}, got ${show(page)}`);
+    if (!view || typeof view.onSelect !== 'function') throw new TypeError(`createTaskList needs { view }: a tracer view, got ${show(view)}`);
+    this.#view = view;
+    this.#parts = parts;
+    this.#hintAfterTries = hintAfterTries;
+    this.#progress = loadProgress();
+    useStyle();
+    this.#build(parent);
+    this.#listen(hintAfterMs);
+    this.#show();
+  }
+
+  /** The lesson page's tasks `{ id, text, done }`, done as kept in this browser. */
+  get tasks() {
+    const done = this.#progress[this.#lesson.page] ?? [];
+    return this.#lesson.tasks.map((t) => ({ id: t.id, text: t.text, done: done.includes(t.id) }));
+  }
+
+  /** Forgets this page's progress ("Start again"): every task to do again. */
+  startAgain() {
+    this.#progress = clearProgress(loadProgress(), this.#lesson.page);
+    this.#memory = {};
+    saveProgress(this.#progress);
+    this.status.textContent = 'Started again: every task of this page is to do.';
+    this.#show();
+  }
+
+  /** Takes the list and its strip off the page and stops listening. */
+  destroy() {
+    for (const cleanup of this.#cleanups) cleanup();
+    clearTimeout(this.#timer);
+    clearTimeout(this.#pending);
+    this.element.remove();
+    this.strip?.remove();
+  }
+
+  /* ---------------- what happens on the page ---------------- */
+
+  #listen(hintAfterMs) {
+    const view = this.#view;
+    this.#cleanups.push(view.onSelect((s) => {
+      const moved = s && (s.x !== this.#last?.x || s.y !== this.#last?.y);
+      this.#last = s;
+      if (!moved) return this.#later();
+      this.#tries++;
+      this.#judge({ type: 'select', record: inspectPixel(view.scene, view.camera, s.x, s.y) });
+    }));
+    const on = (target, type, handler) => {
+      target.addEventListener(type, handler);
+      this.#cleanups.push(() => target.removeEventListener(type, handler));
+    };
+    on(document, 'rt-answer', (/** @type {CustomEvent} */ e) => { this.#tries++; this.#judge({ type: 'answer', ...e.detail }); });
+    on(document, 'rt-check', (/** @type {CustomEvent} */ e) => { this.#tries++; this.#judge({ type: 'check', ...e.detail }); });
+    for (const type of INPUT_EVENTS) on(document, type, () => this.#later());
+    // A picture traced again (or the photons all sent): the scene may be new.
+    const traced = new MutationObserver(() => { if (document.body.dataset.render === 'done') this.#later(); });
+    traced.observe(document.body, { attributes: true, attributeFilter: ['data-render'] });
+    this.#cleanups.push(() => traced.disconnect());
+    this.#timer = setTimeout(() => this.#showHints(), hintAfterMs);
+  }
+
+  /** A look at the page's state once the handlers of what just happened have run. */
+  #later() {
+    if (this.#pending) return;
+    this.#pending = setTimeout(() => { this.#pending = 0; this.#judge({ type: 'state' }); });
+  }
+
+  /** Asks each task not yet done whether `happened` did it. */
+  #judge(happened) {
+    const view = this.#view;
+    const event = { scene: view.scene, camera: view.camera, mode: view.mode, renderMode: view.renderMode, parts: this.#parts, ...happened };
+    const before = loadProgress(); // another tab of the same browser may have done tasks too
+    let progress = { ...before, [this.#lesson.page]: [...new Set([...(before[this.#lesson.page] ?? []), ...(this.#progress[this.#lesson.page] ?? [])])] };
+    const newly = [];
+    for (const task of this.#lesson.tasks) {
+      if (progress[this.#lesson.page].includes(task.id)) continue;
+      if (task.done(event, (this.#memory[task.id] ??= {}))) {
+        progress = markDone(progress, this.#lesson, task.id);
+        newly.push(task);
+      }
+    }
+    if (newly.length === 0) {
+      if (this.#tries >= this.#hintAfterTries) this.#showHints();
+      return;
+    }
+    this.#progress = progress;
+    saveProgress(progress);
+    this.#show();
+    this.#announce(newly);
+  }
+
+  /* ---------------- on the page ---------------- */
+
+  #announce(newly) {
+    const { done, total, finished } = pageProgress(this.#progress, this.#lesson);
+    const last = newly[newly.length - 1];
+    this.status.textContent = finished ? `Task done: every task of this page (${total} of ${total}). Well done!`
+      : `Task done (${done} of ${total}): ${last.text}`;
+  }
+
+  #showHints() {
+    for (const [id, { hint }] of this.#items) if (!this.tasks.find((t) => t.id === id)?.done) hint.hidden = false;
+  }
+
+  /** Every task's tick, the count, the strip. */
+  #show() {
+    for (const task of this.tasks) {
+      const { item, mark } = this.#items.get(task.id);
+      item.dataset.done = String(task.done);
+      mark.textContent = task.done ? '✓' : '';
+      item.classList.toggle('rt-task-done', task.done);
+    }
+    const progress = pageProgress(this.#progress, this.#lesson);
+    const text = `${progressText(progress)} done${progress.finished ? ': page finished ★' : ''}`;
+    this.count.textContent = text;
+    if (this.strip) this.strip.textContent = `Tasks: ${text}`;
+    this.element.dataset.finished = String(progress.finished);
+  }
+
+  #build(parent) {
+    const list = element('ol', { class: 'rt-task-items' });
+    for (const task of this.#lesson.tasks) {
+      const mark = element('span', { class: 'rt-task-mark', 'aria-hidden': 'true' });
+      const hint = element('p', { class: 'rt-task-hint', 'data-hint': '', hidden: '' }, `Hint: ${task.hint}`);
+      const item = element('li', { 'data-task': task.id, 'data-done': 'false' }, mark, element('span', { class: 'rt-task-text' }, task.text), hint);
+      list.append(item);
+      this.#items.set(task.id, { item, mark, hint });
+    }
+    this.count = element('span', { class: 'rt-task-count', 'data-task-count': '' });
+    this.status = element('p', { class: 'rt-task-status', role: 'status', 'data-task-status': '' });
+    const again = element('button', { type: 'button', class: 'rt-button', 'data-tasks-again': '' }, 'Start again');
+    again.addEventListener('click', () => this.startAgain());
+    const heading = element('h2', { id: 'tasks-heading' }, 'Tasks ', this.count);
+    this.element = element('section', { class: 'rt-tasks card', id: 'tasks', 'data-tasks': this.#lesson.page, 'aria-labelledby': 'tasks-heading' },
+      heading, element('p', { class: 'rt-task-about' }, 'Each task ticks itself off when you do it. Your progress stays in this browser; the gallery shows it, with a code for your teacher.'),
+      list, this.status, again);
+    const main = document.querySelector('main');
+    if (parent != null) resolveParent(parent, main).append(this.element);
+    else if (main) main.after(this.element);
+    else document.body.append(this.element);
+
+    const header = document.querySelector('body > header');
+    if (header) {
+      this.strip = element('a', { class: 'rt-task-strip', href: '#tasks', 'data-task-strip': '' });
+      header.append(this.strip);
+    }
+  }
+}
