@@ -102,7 +102,8 @@ export default defineConfig({
     },
     rollupOptions: {
       external: ['p5'],
-      output: { globals: { p5: 'p5' } },
+      // One file each: the panel's lazily loaded "did you mean" (lib/p5/mistake-hints.js) goes inside, not beside.
+      output: { globals: { p5: 'p5' }, inlineDynamicImports: true },
     },
   },
 });

@@ -27,8 +27,19 @@ export async function hintFor(message, base) {
   const notFunction = /^TypeError: (?:(.*)\.)?([\w$]+) is not a function/.exec(message);
   if (notFunction) return methodHint(notFunction[1], notFunction[2]);
   const notDefined = /^ReferenceError: (?:([\w$]+) is not defined|Can't find variable: ([\w$]+))/.exec(message);
-  if (notDefined) return nameHint(notDefined[1] ?? notDefined[2]);
+  if (notDefined) return nameHint(notDefined[1] ?? notDefined[2], await ownNames(base));
   return null;
+}
+
+/** The names the sketch's file (`url`) writes, its own constants and functions among them; none when it cannot be read. */
+async function ownNames(url) {
+  if (new URL(url).origin !== location.origin || !/\.[cm]?js$/.test(new URL(url).pathname)) return [];
+  try {
+    const response = await fetch(url);
+    return response.ok ? [...new Set((await response.text()).match(/[A-Za-z_$][\w$]*/g))] : [];
+  } catch {
+    return [];
+  }
 }
 
 /** An import the module does not export: the nearest name it does. */
@@ -50,17 +61,24 @@ function methodHint(receiver, name) {
   return `did you mean ${on}${meant}?`;
 }
 
-/** A bare name that is not defined: a p5 or kit function without `p.`, a kit class not imported, or a misspelling of one. */
-function nameHint(name) {
+/**
+ * A bare name that is not defined: a p5 or kit function without `p.`, a kit
+ * class not imported, or a misspelling of one, or of a name the sketch itself
+ * writes (`WIDHT` → its own `WIDTH`, before p5's `width`).
+ */
+function nameHint(name, own) {
   const global = typeof (/** @type {any} */ (window).setup) === 'function' || typeof (/** @type {any} */ (window).draw) === 'function';
   const ofP5 = p5Names();
   if (ofP5.has(name)) {
+    const whose = Object.hasOwn(addon.FACTORIES, name) ? 'a p5 method of the kit' : "p5's";
     return global
-      ? `${name} is p5's: it is there once p5 has started, so use it in setup() or draw()`
-      : `${name} is p5's: in instance mode write p.${name}${ofP5.get(name) ? '(…)' : ''}`;
+      ? `${name} is ${whose}: it is there once p5 has started, so use it in setup() or draw()`
+      : `${name} is ${whose}: in instance mode write p.${name}${ofP5.get(name) ? '(…)' : ''}`;
   }
   const where = Object.hasOwn(library, name) ? 'lib/index.js' : Object.hasOwn(addon, name) ? 'lib/p5/index.js' : null;
   if (where) return `${name} is the kit's: add it to the sketch's import from ${where}`;
+  const mine = closestName(name, own.filter((n) => n !== name));
+  if (mine) return `did you mean ${mine}?`;
   const exported = closestName(name, [...Object.keys(library), ...Object.keys(addon)]);
   const p5Name = closestName(name, ofP5.keys());
   const meant = exported ?? p5Name;

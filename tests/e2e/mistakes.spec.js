@@ -65,6 +65,13 @@ const MISTAKES = [
     line: 'WIDHT',
     message: 'ReferenceError: WIDHT is not defined',
   },
+  {
+    name: "a misspelling of the sketch's own name",
+    source: sketchSource({ top: 'const WIDTH = 64;', before: '    const half = WIDHT / 2;' }),
+    line: 'WIDHT',
+    message: 'ReferenceError: WIDHT is not defined',
+    suggestion: 'did you mean WIDTH?', // the sketch's own, before p5's width
+  },
   // Did you mean …: the nearest name of the kit or p5 (lib/p5/mistake-hints.js).
   {
     name: 'a misspelt kit method on p',
@@ -106,7 +113,7 @@ const MISTAKES = [
     source: sketchSource({ before: '    createInspector({ view });' }),
     line: '    createInspector({ view });',
     message: 'ReferenceError: createInspector is not defined',
-    suggestion: "createInspector is p5's: in instance mode write p.createInspector(…)",
+    suggestion: 'createInspector is a p5 method of the kit: in instance mode write p.createInspector(…)',
   },
   {
     name: 'a misspelt colour name',
