@@ -4,7 +4,7 @@ import globals from 'globals';
 import stylistic from '@stylistic/eslint-plugin';
 
 export default [
-  { ignores: ['dist/**', 'types/**', 'node_modules/**', 'test-results/**', 'playwright-report/**', 'tests/e2e/pages/live-*'] },
+  { ignores: ['dist/**', 'dist-teacher/**', 'bench/live/**', 'types/**', 'node_modules/**', 'test-results/**', 'playwright-report/**', 'tests/e2e/pages/live-*'] },
   js.configs.recommended,
   {
     languageOptions: {
