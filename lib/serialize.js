@@ -18,7 +18,7 @@ import { PointLight } from './lights.js';
 import { Sphere } from './shapes/sphere.js';
 import { Plane } from './shapes/plane.js';
 import { Box } from './shapes/box.js';
-import { show, withPath as named } from './check.js';
+import { checkOptions, show, withPath as named } from './check.js';
 
 const SCENE_FIELDS = ['background', 'ambient', 'shadows', 'bias', 'epsilon', 'maxDepth', 'specular', 'objects'];
 const MATERIAL_FIELDS = ['color', 'emission', 'reflection', 'transparency', 'ior', 'specular', 'shininess'];
@@ -58,11 +58,19 @@ export function sceneToJSON(scene) {
  * @example
  * const copy = sceneFromJSON(JSON.stringify(sceneToJSON(classScene())));
  * copy.objects.length; // as many shapes as the original
+ * @param {object|string} json
+ * @param {object} [options]
+ * @param {number} [options.maxObjects=Infinity] more objects than this is a RangeError naming the limit
+ *   (scenes from a link or a paste: MAX_SCENE_OBJECTS, lib/scene-codec.js)
  */
-export function sceneFromJSON(json) {
-  const { objects = [], ...options } = onlyFields(parse(json, 'scene'), SCENE_FIELDS, 'scene');
-  const scene = new Scene(options);
+export function sceneFromJSON(json, options) {
+  const { maxObjects = Infinity } = checkOptions(options, ['maxObjects'], 'sceneFromJSON');
+  const { objects = [], ...sceneOptions } = onlyFields(parse(json, 'scene'), SCENE_FIELDS, 'scene');
+  const scene = new Scene(sceneOptions);
   if (!Array.isArray(objects)) throw new TypeError(`objects must be an array, got ${show(objects)}`);
+  if (objects.length > maxObjects) {
+    throw new RangeError(`the scene has ${objects.length.toLocaleString('en')} objects, more than the ${maxObjects.toLocaleString('en')} a scene from a link or a paste may have`);
+  }
   objects.forEach((o, i) => scene.add(objectFromJSON(o, `objects[${i}]`)));
   return scene;
 }

@@ -2,7 +2,7 @@
 import { describe, it, expect } from 'vitest';
 import { classScene, render, Camera } from '../../lib/index.js';
 import { sceneToJSON, sceneFromJSON } from '../../lib/serialize.js';
-import { compactSceneJSON, encodeScene, decodeScene, toBase64url, fromBase64url } from '../../lib/scene-codec.js';
+import { compactSceneJSON, encodeScene, decodeScene, toBase64url, fromBase64url, MAX_SCENE_OBJECTS } from '../../lib/scene-codec.js';
 
 describe('the scene in a link', () => {
   const camera = new Camera({ width: 32, height: 24 });
@@ -44,5 +44,23 @@ describe('base64url', () => {
     const bytes = Uint8Array.from({ length: 300 }, (_, i) => (i * 7) % 256);
     expect(toBase64url(bytes)).toBe(Buffer.from(bytes).toString('base64url'));
     expect(fromBase64url(toBase64url(bytes))).toEqual(bytes);
+  });
+});
+
+describe('the size limit of a scene from a link or a paste', () => {
+  const spheres = (n) => ({ objects: Array.from({ length: n }, (_, i) => ({ type: 'sphere', center: [i % 100, Math.floor(i / 100), -50], radius: 0.1 })) });
+
+  it(`MAX_SCENE_OBJECTS (${MAX_SCENE_OBJECTS.toLocaleString('en')}) objects open; one more is a RangeError naming the limit`, () => {
+    expect(decodeScene(encodeScene(spheres(MAX_SCENE_OBJECTS))).objects).toHaveLength(MAX_SCENE_OBJECTS);
+    const over = encodeScene(spheres(MAX_SCENE_OBJECTS + 1));
+    expect(() => decodeScene(over)).toThrow(RangeError);
+    expect(() => decodeScene(over)).toThrow('the scene has 10,001 objects, more than the 10,000 a scene from a link or a paste may have');
+    expect(() => decodeScene(JSON.stringify(spheres(MAX_SCENE_OBJECTS + 1)))).toThrow(/more than the 10,000/); // pasted JSON text
+  });
+
+  it('sceneFromJSON itself has no limit unless asked', () => {
+    expect(sceneFromJSON(spheres(MAX_SCENE_OBJECTS + 1)).objects).toHaveLength(MAX_SCENE_OBJECTS + 1);
+    expect(() => sceneFromJSON(spheres(3), { maxObjects: 2 })).toThrow('the scene has 3 objects, more than the 2 a scene from a link or a paste may have');
+    expect(() => sceneFromJSON(spheres(1), { maxObject: 2 })).toThrow('unknown sceneFromJSON option "maxObject" (did you mean "maxObjects"?)');
   });
 });
