@@ -30,7 +30,7 @@ const INPUT_EVENTS = ['input', 'change', 'click', 'pointerup', 'keyup'];
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where the list goes; default right after the page's `<main>`
  * @param {object} [options.parts] the page's other parts the tasks look at: `photons`, `sceneView`, `animation`
  * @param {number} [options.hintAfterMs=60000] a task's hint shows after this long on the page,
- * @param {number} [options.hintAfterTries=6] or after this many pixels selected or answers checked, whichever comes first
+ * @param {number} [options.hintAfterTries=6] or after this many pixels selected or self-checks run, whichever comes first
  * @returns {TaskList}
  * @example
  * const view = p.createTracerView({ scene, camera });
@@ -98,7 +98,8 @@ export class TaskList {
       target.addEventListener(type, handler);
       this.#cleanups.push(() => target.removeEventListener(type, handler));
     };
-    on(document, 'rt-answer', (/** @type {CustomEvent} */ e) => { this.#tries++; this.#judge({ type: 'answer', ...e.detail }); });
+    // An answer comes with its pixel's selection, already counted as a try.
+    on(document, 'rt-answer', (/** @type {CustomEvent} */ e) => this.#judge({ type: 'answer', ...e.detail }));
     on(document, 'rt-check', (/** @type {CustomEvent} */ e) => { this.#tries++; this.#judge({ type: 'check', ...e.detail }); });
     for (const type of INPUT_EVENTS) on(document, type, () => this.#later());
     // A picture traced again (or the photons all sent): the scene may be new.
