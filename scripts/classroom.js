@@ -22,6 +22,9 @@ import { brotliCompress, gzip, constants } from 'node:zlib';
 /** The folders only the teacher's own server (`npm start`) serves, from the project's root. */
 export const TEACHER_ONLY = ['sketches/solutions', 'tests'];
 
+/** In tests/, what the gallery shows: its thumbnails are the gallery test's pictures of each sketch's first view. */
+export const GALLERY_THUMBNAILS = 'tests/e2e/__screenshots__/gallery.spec.js/';
+
 /** What a page gets instead of a reference solution. */
 export const ELSEWHERE = 'The reference solution is on the teacher\'s computer: this is your own scene.';
 const ANSWER_ELSEWHERE = '\0answer-on-the-teachers-computer';
@@ -62,6 +65,7 @@ export function isTeacherOnly(url, root) {
   const base = root.split(sep).join('/').toLowerCase().replace(/\/?$/, '/');
   path = path.replace(/^\/@id\//, '/').replace(/^\/@fs\//, '/').replace(/^\/+/, '/');
   if (path.startsWith(base)) path = `/${path.slice(base.length)}`;
+  if (path.startsWith(`/${GALLERY_THUMBNAILS}`) && /^[\w-]+\.png$/.test(path.slice(GALLERY_THUMBNAILS.length + 1))) return false;
   return TEACHER_ONLY.some((folder) => path === `/${folder}` || path.startsWith(`/${folder}/`));
 }
 
@@ -239,7 +243,8 @@ export function classroom() {
         // Its own pre-bundle (minified), so the teacher's `npm start` keeps its readable one.
         cacheDir: 'node_modules/.vite-class',
         optimizeDeps: { rolldownOptions: { output: { minify: true } } },
-        server: { fs: { deny: [...VITE_DENIES, ...TEACHER_ONLY.map((folder) => `**/${folder}/**`)] } },
+        // Vite's own refusal too (a 403), but for the gallery's thumbnails, which are in tests/.
+        server: { fs: { deny: [...VITE_DENIES, '**/sketches/solutions/**', '**/tests/**/*.js', '**/tests/**/*solution*'] } },
       };
     },
     configureServer(server) {

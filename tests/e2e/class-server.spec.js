@@ -42,7 +42,8 @@ test('the teacher\'s files are not served, however they are asked for', async ({
   for (const path of ['sketches/solutions/08-traffic-signal.js', 'sketches/solutions/09-rear-lights.js',
     'sketches/solutions/08-traffic-signal.js?import', 'sketches/solutions/08-traffic-signal.js?raw', 'sketches/solutions/',
     'Sketches/Solutions/08-traffic-signal.js', 'sketches/%73olutions/08-traffic-signal.js', 'lib/../sketches/solutions/09-rear-lights.js',
-    `@fs${root}/sketches/solutions/08-traffic-signal.js`, 'tests/unit/homework.test.js', 'tests/e2e/sketches-08-10.spec.js', 'tests/']) {
+    `@fs${root}/sketches/solutions/08-traffic-signal.js`, 'tests/unit/homework.test.js', 'tests/e2e/sketches-08-10.spec.js', 'tests/',
+    'tests/e2e/__screenshots__/sketches-08-10.spec.js/08-homework-traffic-signal-solution.png']) {
     const answer = await request.get(server.url + path);
     expect(answer.status(), path).toBe(404);
     expect(await answer.text(), path).not.toContain('addLights');
@@ -50,6 +51,17 @@ test('the teacher\'s files are not served, however they are asked for', async ({
   for (const path of ['', 'sketches/08-homework-traffic-signal.html', 'sketches/08-homework-traffic-signal.js', 'api/']) {
     expect((await request.get(server.url + path)).status(), path).toBe(200);
   }
+});
+
+test('the gallery shows every thumbnail, with a quiet console', async ({ page }) => {
+  const errors = watchConsole(page);
+  await page.goto(server.url);
+  const thumbnails = page.locator('#sketches img');
+  await expect(thumbnails.first()).toBeVisible();
+  for (const img of await thumbnails.all()) await img.scrollIntoViewIfNeeded(); // they load lazily
+  await expect.poll(() => thumbnails.evaluateAll((imgs) => imgs.filter((img) => !(img.complete && img.naturalWidth > 0)).length)).toBe(0);
+  expect(await thumbnails.count()).toBeGreaterThan(5);
+  expect(errors).toEqual([]);
 });
 
 for (const hw of HOMEWORK) {

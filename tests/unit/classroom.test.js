@@ -13,14 +13,18 @@ describe('the teacher\'s files', () => {
     for (const url of ['/sketches/solutions/08-traffic-signal.js', '/sketches/solutions/08-traffic-signal.js?raw',
       '/tests/unit/homework.test.js', '/tests', '/Sketches/Solutions/08-traffic-signal.js', '/sketches/%73olutions/x.js',
       '/sketches/./solutions/x.js', '/lib/../sketches/solutions/x.js', '//sketches/solutions/x.js',
-      `/@fs${ROOT}/sketches/solutions/x.js`, `/@id/${ROOT}/tests/e2e/helpers.js`, '/sketches\\solutions\\x.js', '/sketches/solutions/%E0%A4%A.js']) {
+      `/@fs${ROOT}/sketches/solutions/x.js`, `/@id/${ROOT}/tests/e2e/helpers.js`, '/sketches\\solutions\\x.js', '/sketches/solutions/%E0%A4%A.js',
+      '/tests/e2e/__screenshots__/sketches-08-10.spec.js/08-homework-traffic-signal-solution.png',
+      '/tests/e2e/__screenshots__/gallery.spec.js/../sketches-08-10.spec.js/x.png', '/tests/e2e/__screenshots__/gallery.spec.js/a/b.png',
+      '/tests/e2e/__screenshots__/gallery.spec.js/x.js']) {
       expect(isTeacherOnly(url, ROOT), url).toBe(true);
     }
   });
 
   it('leave every other file alone', () => {
     for (const url of ['/', '/sketches/08-homework-traffic-signal.js', '/sketches/solutions-notes.html', '/testsuite.html',
-      '/lib/homework.js', '/api/', '/sketches/08-homework-traffic-signal.html?solution=1', '/%E0%A4%A']) {
+      '/lib/homework.js', '/api/', '/sketches/08-homework-traffic-signal.html?solution=1', '/%E0%A4%A',
+      '/tests/e2e/__screenshots__/gallery.spec.js/05-value-boxes-view0.png?import']) { // the gallery's thumbnails
       expect(isTeacherOnly(url, ROOT), url).toBe(false);
     }
   });
