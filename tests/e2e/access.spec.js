@@ -149,8 +149,9 @@ test('a held arrow key is said once, when it rests (debounced)', async ({ page }
       await new Promise((resolve) => setTimeout(resolve, 40));
     }
   }));
-  expect(texts).toHaveLength(1);
-  expect(texts[0]).toMatch(/^Pixel: 23,12;/);
+  const pixelLines = texts.filter((text) => text.startsWith('Pixel:')); // the page's task list may say a task is done, too
+  expect(pixelLines).toHaveLength(1);
+  expect(pixelLines[0]).toMatch(/^Pixel: 23,12;/);
 });
 
 test('the 3D view turns with the arrow keys and zooms with + and −, and by its buttons (Enter, Space)', async ({ page }) => {
