@@ -13,9 +13,9 @@
  * would move up under the copy, and a new view measuring its room there
  * ('auto' scale) would come back smaller than the picture it replaces.
  */
-import p5 from 'p5';
 import { onMistake } from './error-panel.js';
 import { isReload } from './keep-place.js';
+import { registerAddon } from './register.js';
 
 const KEY = 'sketchbook:picture:';
 /** The copies over the page (in it or not, during a swap). */
@@ -200,7 +200,7 @@ function install() {
   // storing. Its pages say so (scripts/vite-live-coding.js's classic script).
   if (flags.__sketchbookDevServer) window.addEventListener('pagehide', storePictures);
   onMistake(showStoredPictures);
-  p5.registerAddon((p5Class, fn, lifecycles) => {
+  registerAddon((p5Class, fn, lifecycles) => { // p5 2.x or 1.x alike
     lifecycles.postsetup = settled;
   });
 }
