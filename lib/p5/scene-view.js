@@ -262,8 +262,8 @@ export class SceneView {
   redraw() {
     if (!this.#raf && !this.#destroyed) this.#raf = requestAnimationFrame(this.#frame);
     const c = this.canvas;
-    if (c) {
-      c.dataset.state = 'drawing';
+    if (c) c.dataset.state = 'drawing';
+    if (c && this.#orbit) { // p5 1.x sets the canvas up inside the constructor, before the orbit is known
       // where it looks from, for tests and tools: the arrow keys change these
       c.dataset.yaw = String(Math.round(this.#orbit.yaw * 100) / 100);
       c.dataset.pitch = String(Math.round(this.#orbit.pitch * 100) / 100);
