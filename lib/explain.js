@@ -8,6 +8,8 @@ import { trace } from './trace.js';
 import { writePixel, checkSceneAndCamera } from './render.js';
 import { pixelCoordinate } from './check.js';
 import { shapeName } from './scene.js';
+import { sampleOffsets } from './camera.js';
+import { clamp } from './numbers.js';
 
 const _bytes = new Uint8ClampedArray(4);
 
@@ -38,5 +40,28 @@ export function inspectPixel(scene, camera, x, y) {
   const color = trace(scene, ray, [0, 0, 0], steps);
   writePixel(_bytes, 0, color);
   if (steps.hit) steps.hit.name = shapeName(steps.hit.object, scene.objects);
-  return { x, y, h, v, ray, tests, hit: steps.hit, light: color, color: [_bytes[0], _bytes[1], _bytes[2]] };
+  const record = { x, y, h, v, ray, tests, hit: steps.hit, light: color, color: [_bytes[0], _bytes[1], _bytes[2]] };
+  if (camera.samples > 1) addSamples(record, scene, camera);
+  return record;
+}
+
+/**
+ * Several rays per pixel: `record.samples`, one entry per sub-pixel ray
+ * `{ dx, dy, ray, h, v, hit, color }` (its offset from the pixel's centre, what
+ * it hit, its colour as bytes), and `record.color` becomes their average, the
+ * very bytes render() gives the pixel. The rest of the record (the tests, the
+ * hit) stays the ray through the pixel's centre.
+ */
+function addSamples(record, scene, camera) {
+  const offsets = sampleOffsets(camera.samples), sum = [0, 0, 0];
+  record.samples = [];
+  for (let s = 0; s < offsets.length; s += 2) {
+    const dx = offsets[s], dy = offsets[s + 1], { ray, h, v } = camera.primaryRay(record.x + dx, record.y + dy);
+    const steps = {}, light = trace(scene, ray, [0, 0, 0], steps);
+    for (let c = 0; c < 3; c++) sum[c] += clamp(light[c], 0, 1);
+    writePixel(_bytes, 0, light);
+    record.samples.push({ dx, dy, ray, h, v, hit: steps.hit ? shapeName(steps.hit.object, scene.objects) : null, color: [_bytes[0], _bytes[1], _bytes[2]] });
+  }
+  writePixel(_bytes, 0, sum.map((c) => c / camera.samples));
+  record.color = [_bytes[0], _bytes[1], _bytes[2]];
 }

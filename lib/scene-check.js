@@ -38,8 +38,8 @@ export function checkScene(scene) {
  * @param {Camera} camera
  */
 export function checkCamera(camera) {
-  const { width, height, fov, position, yaw, pitch } = camera;
-  withPath(() => new Camera({ width, height, fov, position, yaw, pitch }), 'camera.');
+  const { width, height, fov, position, yaw, pitch, samples } = camera;
+  withPath(() => new Camera({ width, height, fov, position, yaw, pitch, samples }), 'camera.');
 }
 
 /** The scene's own options as they are now. */

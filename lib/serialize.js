@@ -22,7 +22,7 @@ import { checkOptions, show, withPath as named } from './check.js';
 
 const SCENE_FIELDS = ['background', 'ambient', 'shadows', 'bias', 'epsilon', 'maxDepth', 'specular', 'objects'];
 const MATERIAL_FIELDS = ['color', 'emission', 'reflection', 'transparency', 'ior', 'specular', 'shininess'];
-const CAMERA_FIELDS = ['width', 'height', 'fov', 'position', 'yaw', 'pitch'];
+const CAMERA_FIELDS = ['width', 'height', 'fov', 'position', 'yaw', 'pitch', 'samples'];
 
 /** Each type: its JSON fields, and how to build it from them. */
 const TYPES = {
@@ -78,8 +78,10 @@ export function sceneFromJSON(json, options) {
 /** The camera as plain JSON-ready data. */
 export function cameraToJSON(camera) {
   if (!(camera instanceof Camera)) throw new TypeError(`camera must be a Camera, got ${show(camera)}`);
-  const { width, height, fov, position, yaw, pitch } = camera;
-  return { width, height, fov, position: vector(position), yaw, pitch };
+  const { width, height, fov, position, yaw, pitch, samples } = camera;
+  const json = { width, height, fov, position: vector(position), yaw, pitch };
+  if (samples !== 1) json.samples = samples; // one ray per pixel, the usual: links and files stay as they were
+  return json;
 }
 
 /** A Camera from JSON data or text, checked; errors name the field. */
