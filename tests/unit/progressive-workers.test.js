@@ -18,7 +18,7 @@ async function runToDone(r, { budgetMs = 8, maxSteps = 5000 } = {}) {
   for (let i = 0; i < maxSteps && !r.done; i++) {
     const before = r.traced;
     const { changed, done } = r.step(budgetMs);
-    steps.push({ changed, done, pass: r.pass, traced: r.traced, before, progress: r.progress });
+    steps.push({ changed, done, pass: r.blockSize, traced: r.traced, before, progress: r.progress });
     if (!done) await tick();
   }
   return steps;
