@@ -18,7 +18,9 @@ const _bytes = new Uint8ClampedArray(4);
  * `{ x, y, h, v, ray, tests, hit, color }` — `tests` one entry per sphere
  * `{ sphere, index, name, quadratic, geometric }`; `hit` the nearest hit record
  * (its `name` too) or null; `color` `[r, g, b]` bytes, identical to `render`'s
- * pixel. `name`: the shape's own, else "sphere 1", "plane 1", … (shapeName).
+ * pixel; `tracedColor` the colour as traced, before it became bytes (0–1, a
+ * bright highlight over 1; `light` is its old name). `name`: the shape's own,
+ * else "sphere 1", "plane 1", … (shapeName).
  * @example
  * const record = inspectPixel(classScene(), new Camera({ width: 64, height: 48 }), 32, 24);
  * record.tests[0].quadratic.discriminant; // the first sphere's discriminant for this pixel's ray
@@ -40,7 +42,7 @@ export function inspectPixel(scene, camera, x, y) {
   const color = trace(scene, ray, [0, 0, 0], steps);
   writePixel(_bytes, 0, color);
   if (steps.hit) steps.hit.name = shapeName(steps.hit.object, scene.objects);
-  const record = { x, y, h, v, ray, tests, hit: steps.hit, light: color, color: [_bytes[0], _bytes[1], _bytes[2]] };
+  const record = { x, y, h, v, ray, tests, hit: steps.hit, tracedColor: color, light: color, color: [_bytes[0], _bytes[1], _bytes[2]] };
   if (camera.samples > 1) addSamples(record, scene, camera);
   return record;
 }

@@ -1,6 +1,10 @@
 /**
- * A whole frame into an RGBA buffer: one primary ray per pixel, traced by
- * `trace`, written as bytes the way the inspector writes them too.
+ * A whole frame into an RGBA buffer, tile by tile: each primary ray is tested
+ * only against the shapes that can be under its tile (bounds.js), and traced
+ * by the fast kernel over the packed scene (kernel.js) or, when the scene does
+ * not pack, by trace.js: the same bytes either way. One ray per pixel, or the
+ * camera's `samples` averaged. Colours become bytes in one place, writePixel,
+ * which the inspector uses too.
  */
 import { Ray } from './ray.js';
 import { copy } from './vec3.js';
