@@ -10,6 +10,7 @@ export { Plane } from './shapes/plane.js';
 export { Box } from './shapes/box.js';
 export { Material } from './material.js';
 export { PointLight } from './lights.js';
+export { AreaLight } from './area-light.js';
 // Rays through pixels.
 export { Ray } from './ray.js';
 export { Camera } from './camera.js';

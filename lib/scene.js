@@ -9,6 +9,7 @@ import { EPSILON } from './constants.js';
 import { Plane } from './shapes/plane.js';
 import { Box } from './shapes/box.js';
 import { PointLight, lightSource } from './lights.js';
+import { AreaLight } from './area-light.js';
 
 /** The options a scene takes. */
 const OPTIONS = ['background', 'ambient', 'shadows', 'bias', 'epsilon', 'maxDepth', 'specular'];
@@ -50,11 +51,13 @@ export class Scene {
   add(item) {
     if (item instanceof PointLight) {
       this.lights.push(lightSource(item));
+    } else if (item instanceof AreaLight) {
+      this.lights.push(...item.sources()); // one point light per sample of the disc
     } else if (item instanceof Sphere || item instanceof Plane || item instanceof Box) {
       this.objects.push(item);
       if (item.material.isEmissive) this.lights.push(lightSource(item));
     } else {
-      throw new TypeError(`scene.add takes a Sphere, Plane, Box or PointLight, got ${show(item)}`);
+      throw new TypeError(`scene.add takes a Sphere, Plane, Box, PointLight or AreaLight, got ${show(item)}`);
     }
     return this;
   }
