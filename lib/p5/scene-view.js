@@ -88,8 +88,8 @@ export class SceneView {
   #constructionSphere = null; #construction = []; #constructionLabels = [];
   /** @type {HTMLButtonElement|null} the Stop button (none without controls) */
   stopButton = null;
-  /** Shoot: its flight, whether it runs, the order to go back to; the row / column fan ('h' / 'v'). */
-  #flight = new Flight(); #shooting = false; #orderBeforeShoot = 'coarse'; #fan = null; #fanSegments = []; #labels = [];
+  /** Shoot: its flight, whether it runs, the order and slow speed to go back to; the row / column fan ('h' / 'v'). */
+  #flight = new Flight(); #shooting = false; #before = { order: 'coarse', slowRaysPerSecond: 0 }; #fan = null; #fanSegments = []; #labels = [];
 
   constructor(p, options = {}) {
     const { view, width = 480, height = 360, parent, label = 'The scene in 3D', planeDistance = 'auto', frustum = true, orbit = {}, controls = true, raysPerSecond = 4, construction = null } = checkOptions(options, OPTIONS, 'scene view');
@@ -202,7 +202,7 @@ export class SceneView {
   shoot(raysPerSecond = this.raysPerSecond) {
     this.raysPerSecond = checkSpeed(raysPerSecond);
     this.#flight = new Flight();
-    if (!this.#shooting) this.#orderBeforeShoot = this.#view.order;
+    if (!this.#shooting) this.#before = { order: this.#view.order, slowRaysPerSecond: this.#view.slowRaysPerSecond };
     this.#shooting = true;
     if (this.stopButton) this.stopButton.disabled = false;
     this.#view.slowRaysPerSecond = raysPerSecond;
@@ -213,10 +213,9 @@ export class SceneView {
   /** Stops a Shoot: no more rays fly, and the picture finishes at full speed in the order it had before. */
   stop() {
     if (!this.#shooting) return this;
-    this.#shooting = false;
+    this.#shootEnded();
     this.#flight.flying = [];
-    if (this.stopButton) this.stopButton.disabled = true;
-    this.#view.setOrder(this.#orderBeforeShoot === 'slow' ? 'coarse' : this.#orderBeforeShoot);
+    this.#view.setOrder(this.#before.order === 'slow' ? 'coarse' : this.#before.order);
     return this.redraw();
   }
 
@@ -338,10 +337,7 @@ export class SceneView {
       this.#texture?.stale();
       this.redraw();
     }
-    if (this.#shooting && (done || v.order !== 'slow')) {
-      this.#shooting = false;
-      if (this.stopButton) this.stopButton.disabled = true;
-    }
+    if (this.#shooting && (done || v.order !== 'slow')) this.#shootEnded();
     if (progress === this.#seen) return;
     // keep the trace's pace: while it runs, redraw only when enough time has passed since the last draw
     if (done || performance.now() - this.#lastDrawAt > this.#lastDrawMs * TRACE_SHARE + 250) {
@@ -349,6 +345,13 @@ export class SceneView {
       this.#texture?.stale();
       this.redraw();
     }
+  }
+
+  /** Shoot is over: its button goes, and the view's own slow motion keeps its speed. */
+  #shootEnded() {
+    this.#shooting = false;
+    if (this.stopButton) this.stopButton.disabled = true;
+    this.#view.slowRaysPerSecond = this.#before.slowRaysPerSecond;
   }
 
   /* ---------------- drawing ---------------- */
