@@ -7,6 +7,7 @@
  */
 import { clamp } from '../numbers.js';
 import { show, checkOptions } from '../check.js';
+import { screenRay, pickImagePlane } from '../rays3d.js';
 import { listenForOrbitKeys } from './scene-view-keys.js';
 
 /** Mouse travel (px) under which a press and release is a click, not a turn. */
@@ -37,6 +38,20 @@ export function zoomDistance(distance, factor, r) {
 /** The factor one wheel event (its deltaY) zooms by: down (positive) goes further. */
 export function wheelFactor(deltaY) {
   return Math.exp(deltaY * 0.0015);
+}
+
+/**
+ * The traced pixel `{ x, y, point, t }` under a point of the 3D canvas (lib/rays3d.js pickImagePlane), or null off the
+ * image plane: the ray from the orbit's eye through that point, met with the plane.
+ * @param {{ left: number, top: number, width: number, height: number }} box the canvas's box on screen
+ * @param {number} clientX @param {number} clientY the point, in client coordinates
+ * @param {{ eye: object, camera: object, planeDistance: number, width: number, height: number, fovy: number }} view
+ *   the orbit camera (lib/rays3d.js orbitCamera), the traced camera, the plane's distance, the canvas's size and field
+ */
+export function pixelUnder(box, clientX, clientY, { eye, camera, planeDistance, width, height, fovy }) {
+  const px = ((clientX - box.left) / box.width) * width, py = ((clientY - box.top) / box.height) * height;
+  const { origin, direction } = screenRay(eye, px, py, width, height, fovy);
+  return pickImagePlane(camera, planeDistance, origin, direction);
 }
 
 /** What the h and v keys show: 'row', 'column', or null for any other key (or with Ctrl, Alt or Meta). */

@@ -26,14 +26,14 @@ import { Sphere } from '../shapes/sphere.js';
 import { inspectPixel } from '../explain.js';
 import { Vec3 } from '../vec3.js';
 import { show, checkOptions } from '../check.js';
-import { pixelCenter, pickImagePlane, sceneBounds, orbitCamera, screenRay, projectToScreen } from '../rays3d.js';
+import { pixelCenter, sceneBounds, orbitCamera, projectToScreen } from '../rays3d.js';
 import { useStyle, resolveParent } from './dom.js';
 import { nearestAhead } from './scene-view-mesh.js';
 import { RAY_COLORS, StillGeometry, PlaneTexture, wireSphere, line3, drawSegment, drawImagePlane, drawFrustum } from './scene-view-draw.js';
 import { Flight, legSeconds, checkSpeed } from './scene-view-flight.js';
 import { pixelStory, shotStory, fanRays } from './scene-view-rays.js';
 import { constructionOf, placeLabels, drawLabels } from './scene-view-labels.js';
-import { listenForInput, checkOrbit, clampPitch, zoomDistance } from './scene-view-input.js';
+import { listenForInput, pixelUnder, checkOrbit, clampPitch, zoomDistance } from './scene-view-input.js';
 import { createControls, createFigure, dressCanvas, SPEEDS } from './scene-view-controls.js';
 
 export { RAY_COLORS };
@@ -441,10 +441,9 @@ export class SceneView {
 
   /** A click on the image plane selects the pixel under it. */
   #pick(clientX, clientY) {
-    const box = this.canvas.getBoundingClientRect();
-    const px = ((clientX - box.left) / box.width) * this.width, py = ((clientY - box.top) / box.height) * this.height;
-    const { origin, direction } = screenRay(this.#eye(), px, py, this.width, this.height, FOVY);
-    const hit = pickImagePlane(this.#view.camera, this.#planeDistance, origin, direction);
+    const hit = pixelUnder(this.canvas.getBoundingClientRect(), clientX, clientY, {
+      eye: this.#eye(), camera: this.#view.camera, planeDistance: this.#planeDistance, width: this.width, height: this.height, fovy: FOVY,
+    });
     if (hit) this.#view.select(hit.x, hit.y);
   }
 }

@@ -1,7 +1,10 @@
 // The 3D view by pointer (lib/p5/scene-view-input.js): the orbit's maths, and
 // what a press, a drag, a click, the wheel and h / v do to the view.
 import { describe, it, expect } from 'vitest';
-import { dragOrbit, isDrag, zoomDistance, wheelFactor, clampPitch, fanKey, checkOrbit, listenForInput, CLICK_SLOP } from '../../lib/p5/scene-view-input.js';
+import { Vec3 } from '../../lib/vec3.js';
+import { Camera } from '../../lib/camera.js';
+import { orbitCamera, pixelCenter, projectToScreen } from '../../lib/rays3d.js';
+import { dragOrbit, isDrag, zoomDistance, wheelFactor, clampPitch, fanKey, checkOrbit, listenForInput, pixelUnder, CLICK_SLOP } from '../../lib/p5/scene-view-input.js';
 
 describe('the orbit maths', () => {
   it('a drag turns 0.4° per px: to the right turns the view left, down looks from higher', () => {
@@ -50,6 +53,25 @@ describe('the orbit maths', () => {
     expect(() => checkOrbit({ distance: 0 })).toThrow(new RangeError('orbit.distance must be a distance greater than 0, got 0'));
     expect(() => checkOrbit({ pitch: NaN })).toThrow(/^orbit\.pitch must be a number of degrees/);
     expect(() => checkOrbit({ yew: 30 })).toThrow(/unknown orbit option "yew" \(did you mean "yaw"\?\)/);
+  });
+});
+
+describe('pixelUnder', () => {
+  const camera = new Camera({ width: 32, height: 24 }), W = 480, H = 360, FOVY = Math.PI / 3, D = 6;
+  const eye = orbitCamera({ target: new Vec3(0, 0, -8), yaw: -35, pitch: 20, distance: 14 });
+  const view = { eye, camera, planeDistance: D, width: W, height: H, fovy: FOVY };
+
+  it('finds the pixel whose centre is drawn at that point, on a canvas shown at any size and place', () => {
+    for (const [x, y] of [[3, 4], [20, 15], [31, 0], [0, 23]]) {
+      const at = projectToScreen(eye, pixelCenter(camera, x, y, D), W, H, FOVY);
+      expect(pixelUnder({ left: 0, top: 0, width: W, height: H }, at.x, at.y, view)).toMatchObject({ x, y });
+      // the same canvas shown at half size, 100 px down the page
+      expect(pixelUnder({ left: 10, top: 100, width: W / 2, height: H / 2 }, 10 + at.x / 2, 100 + at.y / 2, view)).toMatchObject({ x, y });
+    }
+  });
+
+  it('is null off the image plane', () => {
+    expect(pixelUnder({ left: 0, top: 0, width: W, height: H }, 2, 2, view)).toBeNull();
   });
 });
 
