@@ -47,7 +47,7 @@ import { createEvents } from './tracer-events.js';
  * @param {boolean} [options.grid=false] draw the pixel grid (on an overlay, never into the picture)
  * @param {string} [options.mode='shaded'] visual mode: 'shaded', 'discriminant', 'roots', 'h', 'v', 'normals', 'depth'
  * @param {'coarse'|'scanline'|'slow'} [options.order='coarse'] the render order: coarse blocks first, row by row, or row by row in slow motion
- * @param {'coarse'|'scanline'|'slow'} [options.renderMode] deprecated: the old name of `order`
+ * @param {'coarse'|'scanline'|'slow'} [options.renderMode] deprecated: the old name of `order` (it still works)
  * @param {number} [options.budgetMs=8] tracing time per animation frame
  * @param {'auto'|number|false} [options.workers='auto'] Web Workers for large shaded frames ('auto': one per core; false: none)
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where to put it (element, id or p5.Element); default the sketch's node
@@ -124,7 +124,10 @@ export class TracerView {
   get mode() { return this.#mode; }
   /** The render order: 'coarse' (blocks of 16, 8, … 1 px), 'scanline' (row by row) or 'slow' (row by row, a few rays at a time). */
   get order() { return this.#renderer.mode; }
-  /** @deprecated the old name of `order` */
+  /**
+   * Deprecated: the old name of `order` (it still works).
+   * @deprecated
+   */
   get renderMode() { return this.order; }
   /** The traced image's width and height in pixels. */
   get width() { return this.#renderer.width; }
@@ -173,7 +176,10 @@ export class TracerView {
   }
   /** Traces again in another render order: 'coarse', 'scanline' or 'slow'. */
   setOrder(order) { return this.#change({ mode: checkOrder(order) }); }
-  /** @deprecated the old name of `setOrder` */
+  /**
+   * Deprecated: the old name of `setOrder` (it still works).
+   * @deprecated
+   */
   setRenderMode(order) { return this.#change({ mode: checkOrder(order, 'renderMode') }); }
   /** Sets the on-screen scale: 'auto' or a number of screen pixels per traced pixel. */
   setScale(scale) {
