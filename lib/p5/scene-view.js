@@ -85,7 +85,8 @@ export class SceneView {
   #following = false; #seen = -1;
   #selected = null; #segments = [];
   #extra = []; #target; #still = new StillGeometry();
-  #constructionSphere = null; #construction = []; #constructionLabels = [];
+  /** The construction sphere, and the selected ray's route for it `{ rays, labels }` (scene-view-labels.js). */
+  #constructionSphere = null; #construction = { rays: [], labels: [] };
   /** @type {HTMLButtonElement|null} the Stop button (none without controls) */
   stopButton = null;
   /** Shoot: its flight, whether it runs, the order and slow speed to go back to; the row / column fan ('h' / 'v'). */
@@ -317,9 +318,7 @@ export class SceneView {
     const view = this.#view, r = this.#bounds.radius;
     this.#fanSegments = fanRays(view, this.#selected, this.#fan, r);
     const record = s ? inspectPixel(view.scene, view.camera, s.x, s.y) : null;
-    const construction = constructionOf(record, this.#constructionSphere);
-    this.#construction = construction.rays;
-    this.#constructionLabels = construction.labels;
+    this.#construction = constructionOf(record, this.#constructionSphere);
     this.#segments = record ? pixelStory(view.scene, record, r) : [];
     this.#texture?.stale();
     this.#redrawUnlessRestarting();
@@ -388,12 +387,12 @@ export class SceneView {
     for (const e of this.#extra) line3(g, e.from, e.to, e.color, e.weight ?? 1.5);
     for (const f of this.#fanSegments) line3(g, f.from, f.to, RAY_COLORS.primary, 1);
     if (this.#constructionSphere) wireSphere(g, this.#constructionSphere);
-    for (const c of this.#construction) line3(g, c.from, c.to, c.color, c.weight);
+    for (const c of this.#construction.rays) line3(g, c.from, c.to, c.color, c.weight);
     const flight = this.#flight.frame(performance.now(), legSeconds(this.raysPerSecond) * 1000);
     for (const s of flight.segments) drawSegment(g, s, r);
     this.#still.drawGlass(g);
     g.pop();
-    const labels = this.#constructionLabels.length ? [...this.#labels, ...this.#constructionLabels] : this.#labels;
+    const labels = this.#construction.labels.length ? [...this.#labels, ...this.#construction.labels] : this.#labels;
     drawLabels(this.labelLayer.getContext('2d'), placeLabels(labels, o, this.width, this.height, FOVY));
     if (flight.moving) this.redraw(); // the next frame of the flight
   }
