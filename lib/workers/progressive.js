@@ -152,6 +152,8 @@ export class WorkerProgressiveRenderer {
   set budgetMs(ms) { this.#inner.budgetMs = ms; }
   get slowRaysPerStep() { return this.#inner.slowRaysPerStep; }
   set slowRaysPerStep(n) { this.#inner.slowRaysPerStep = n; }
+  get slowRaysPerSecond() { return this.#inner.slowRaysPerSecond; }
+  set slowRaysPerSecond(n) { this.#inner.slowRaysPerSecond = n; }
 
   /* ---------------- the workers' side ---------------- */
 

@@ -110,6 +110,23 @@ describe('WorkerProgressiveRenderer', () => {
     expect(r.buffer).toEqual(render(scene, LARGE));
   });
 
+  it('slow motion by the clock: slowRaysPerSecond reaches the renderer doing the work (Shoot\'s speed)', () => {
+    let t = 0;
+    const r = new WorkerProgressiveRenderer({ scene: classScene(), camera: SMALL, mode: 'slow', workers: false, now: () => t });
+    expect(r.slowRaysPerSecond).toBe(0);
+    r.slowRaysPerSecond = 4; // one ray every 250 ms
+    expect(r.slowRaysPerSecond).toBe(4);
+    r.step();
+    expect(r.traced).toBe(1);
+    t += 100;
+    r.step();
+    expect(r.traced).toBe(1); // not yet owed: without the setter, one ray would go every step
+    t += 160;
+    r.step();
+    expect(r.traced).toBe(2);
+    expect(() => { r.slowRaysPerSecond = -1; }).toThrow(new RangeError('slowRaysPerSecond must not be negative, got -1'));
+  });
+
   it('checks its workers option, and passes the rest to ProgressiveRenderer', () => {
     expect(() => new WorkerProgressiveRenderer({ scene: classScene(), camera: SMALL, workers: 0 })).toThrow(/workers must be 'auto', false or a positive whole number, got 0/);
     expect(() => new WorkerProgressiveRenderer({ scene: classScene(), camera: SMALL, mode: 'fast' })).toThrow(/mode must be one of/);
