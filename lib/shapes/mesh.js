@@ -145,16 +145,17 @@ function checkData(data) {
   }
   const points = positions.map((p, i) => (isTriple(p) ? p : vec3List(p, `positions[${i}]`)));
   const checkedCells = cells.map((cell, i) => {
-    if (!(Array.isArray(cell) || ArrayBuffer.isView(cell)) || cell.length !== 3) {
+    const list = /** @type {ArrayLike<number>} */ (cell);
+    if (!(Array.isArray(cell) || ArrayBuffer.isView(cell)) || list.length !== 3) {
       throw new TypeError(`cells[${i}] must be a triple of vertex indices [i, j, k], got ${show(cell)}`);
     }
     for (let k = 0; k < 3; k++) {
-      const index = cell[k];
+      const index = list[k];
       if (!Number.isInteger(index) || index < 0 || index >= points.length) {
         throw new RangeError(`cells[${i}][${k}] must be a whole number from 0 to ${points.length - 1} (an index into positions), got ${show(index)}`);
       }
     }
-    return [cell[0], cell[1], cell[2]];
+    return [list[0], list[1], list[2]];
   });
   return { positions: points.map((p) => [p[0], p[1], p[2]]), cells: checkedCells };
 }
