@@ -140,3 +140,34 @@ describe('against a reference with no quadratic in it (seeded random rays)', () 
     expect(hitsSeen).toBeGreaterThan(1500);
   });
 });
+
+describe('open cones against the same reference', () => {
+  it('the side\'s hits are where the ray enters and leaves the solid below the apex (one half, convex), kept above the base', () => {
+    const random = seeded(33);
+    let hitsSeen = 0;
+    for (let s = 0; s < 30; s++) {
+      const center = [random() * 10 - 5, random() * 10 - 5, random() * 10 - 15];
+      const radius = 0.2 + random() * 3, height = 0.2 + random() * 6;
+      const funnel = new Cone(center, radius, height, { capped: false });
+      const base = center[1] - height / 2, apex = center[1] + height / 2, k = radius / height;
+      const g = (x, y, z) => Math.hypot(x - center[0], z - center[2]) - k * (apex - y);
+      for (let i = 0; i < 60; i++) {
+        const origin = center.map((c) => c + (random() - 0.5) * 4 * (radius + height));
+        const aim = center.map((c, j) => c + (random() - 0.5) * (j === 1 ? height : radius));
+        const ray = new Ray(origin, aim.map((a, j) => a - origin[j]));
+        const interval = convexInterval(g, ray, 1e6);
+        const y = (t) => ray.origin.y + ray.direction.y * t;
+        const side = interval ? [interval.tIn, interval.tOut].filter((t) => Math.abs(t) < 1e5 && t > EPSILON && y(t) > base) : [];
+        const expected = side.length ? side[0] : Infinity;
+        const t = funnel.hit(ray);
+        if (expected === Infinity) expect(t).toBe(Infinity);
+        else {
+          expect(Math.abs(t - expected)).toBeLessThanOrEqual(1e-9 * expected);
+          hitsSeen++;
+        }
+        expect(funnel.intersect(ray).t ?? Infinity).toBe(t);
+      }
+    }
+    expect(hitsSeen).toBeGreaterThan(500);
+  });
+});

@@ -184,3 +184,34 @@ describe('against a reference with no quadratic in it (seeded random rays)', () 
     expect(hitsSeen).toBeGreaterThan(1500);
   });
 });
+
+describe('open cylinders against the same reference', () => {
+  it('the side\'s hits are where the ray enters and leaves the infinite solid cylinder, kept when within the height', () => {
+    const random = seeded(31);
+    let hitsSeen = 0;
+    for (let s = 0; s < 30; s++) {
+      const center = [random() * 10 - 5, random() * 10 - 5, random() * 10 - 15];
+      const radius = 0.2 + random() * 3, height = 0.2 + random() * 6;
+      const pipe = new Cylinder(center, radius, height, { capped: false });
+      const bottom = center[1] - height / 2, top = center[1] + height / 2;
+      const g = (x, y, z) => Math.hypot(x - center[0], z - center[2]) - radius; // infinite along y: convex
+      for (let i = 0; i < 60; i++) {
+        const origin = center.map((c) => c + (random() - 0.5) * 4 * (radius + height));
+        const aim = center.map((c, k) => c + (random() - 0.5) * (k === 1 ? height : 2 * radius));
+        const ray = new Ray(origin, aim.map((a, k) => a - origin[k]));
+        const interval = convexInterval(g, ray, 1e6);
+        const y = (t) => ray.origin.y + ray.direction.y * t;
+        const side = interval ? [interval.tIn, interval.tOut].filter((t) => t > EPSILON && y(t) > bottom && y(t) < top) : [];
+        const expected = side.length ? side[0] : Infinity;
+        const t = pipe.hit(ray);
+        if (expected === Infinity) expect(t).toBe(Infinity);
+        else {
+          expect(Math.abs(t - expected)).toBeLessThanOrEqual(1e-9 * expected);
+          hitsSeen++;
+        }
+        expect(pipe.intersect(ray).t ?? Infinity).toBe(t);
+      }
+    }
+    expect(hitsSeen).toBeGreaterThan(500);
+  });
+});
