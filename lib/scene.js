@@ -4,10 +4,8 @@
  */
 import { toColor } from './color.js';
 import { numberInRange, bool, show, checkOptions } from './check.js';
-import { Sphere } from './shapes/sphere.js';
 import { EPSILON } from './constants.js';
-import { Plane } from './shapes/plane.js';
-import { Box } from './shapes/box.js';
+import { isShape, ballOf, kindOf } from './shapes/index.js';
 import { PointLight, lightSource } from './lights.js';
 
 /** The options a scene takes. */
@@ -46,15 +44,15 @@ export class Scene {
     this.lights = [];
   }
 
-  /** Adds a Sphere, Plane, Box or PointLight; returns the scene (chainable). */
+  /** Adds a shape (a Sphere, Plane, Box or any object with the shape protocol, lib/shapes/index.js) or a PointLight; returns the scene (chainable). */
   add(item) {
     if (item instanceof PointLight) {
       this.lights.push(lightSource(item));
-    } else if (item instanceof Sphere || item instanceof Plane || item instanceof Box) {
+    } else if (isShape(item)) {
       this.objects.push(item);
       if (item.material.isEmissive) this.lights.push(lightSource(item));
     } else {
-      throw new TypeError(`scene.add takes a Sphere, Plane, Box or PointLight, got ${show(item)}`);
+      throw new TypeError(`scene.add takes a shape (a Sphere, Plane, Box, … with hit, normalAt, intersect, bounds and a material) or a PointLight, got ${show(item)}`);
     }
     return this;
   }
@@ -66,9 +64,9 @@ export class Scene {
     return this;
   }
 
-  /** Every sphere, in order (the inspector tests each of them). */
+  /** Every sphere (every ball), in order: the inspector tests each of them by both routes. */
   get spheres() {
-    return this.objects.filter((o) => o instanceof Sphere);
+    return this.objects.filter((o) => ballOf(o) !== null);
   }
 }
 
@@ -85,15 +83,8 @@ export class Scene {
  */
 export function shapeName(object, objects) {
   if (object?.name) return object.name;
-  const kind = KINDS.find(([type]) => object instanceof type);
-  const same = kind ? objects.filter((o) => o instanceof kind[0]) : objects;
+  const word = kindOf(object);
+  const same = word === 'object' ? objects : objects.filter((o) => kindOf(o) === word);
   const number = same.indexOf(object) + 1;
-  const word = kind ? kind[1] : 'object';
   return number > 0 ? `${word} ${number}` : word;
 }
-
-/**
- * Each kind of shape and its word (by class, not by class name: a minified build renames classes).
- * @type {[Function, string][]}
- */
-const KINDS = [[Sphere, 'sphere'], [Plane, 'plane'], [Box, 'box']];
