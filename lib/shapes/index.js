@@ -21,6 +21,11 @@ import { show } from '../check.js';
 /** Every shape class, in the order the lesson meets them. A new shape is one more entry here. */
 const SHAPES = [Sphere, Plane, Box];
 
+/** Each listed class's own `hit` and `normalAt`, as listed (a sketch may replace them later). */
+const METHODS = new Map();
+const remember = (Shape) => METHODS.set(Shape, { hit: Shape.prototype.hit, normalAt: Shape.prototype.normalAt });
+SHAPES.forEach(remember);
+
 /** The methods every shape has (the protocol's core). */
 const CORE = ['hit', 'normalAt', 'intersect', 'bounds'];
 
@@ -37,6 +42,7 @@ export function registerShape(Shape) {
   if (taken === Shape) return Shape;
   if (taken) throw new TypeError(`the shape type ${show(Shape.type)} is taken`);
   SHAPES.push(Shape);
+  remember(Shape);
   return Shape;
 }
 
@@ -48,6 +54,15 @@ export function shapeClasses() {
 /** The shape class of a scene JSON `type` ('sphere'), or undefined. */
 export function shapeClass(type) {
   return SHAPES.find((Shape) => Shape.type === type);
+}
+
+/**
+ * The listed class that made `shape` itself (not a subclass) when the shape's
+ * `hit` and `normalAt` are still that class's, as listed; else undefined.
+ */
+export function plainClassOf(shape) {
+  const methods = METHODS.get(shape?.constructor);
+  return methods && shape.hit === methods.hit && shape.normalAt === methods.normalAt ? shape.constructor : undefined;
 }
 
 /** The listed class a shape is made by (a subclass's parent too), or undefined. */

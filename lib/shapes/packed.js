@@ -6,13 +6,16 @@
  *
  * A shape class that the kernel can run has a static `packed`:
  * `{ pack(shape, shapes, at), hit(shapes, at, ox, oy, oz, dx, dy, dz, tMin), normal(shapes, at, surface) }`:
- * `pack` writes at most SHAPE numbers from `shapes[at]`; `hit` is its `hit`
+ * `pack` writes at most KIND numbers from `shapes[at]`; `hit` is its `hit`
  * in numbers (the same t, bit for bit); `normal` reads the point at
  * `surface[P…]` and writes its `normalAt` into `surface[N…]`.
  */
 
-/** Numbers per shape in the kernel's `shapes` array. */
-export const SHAPE = 6;
+/** Numbers per shape in the kernel's `shapes` array: up to six of the shape's own, then its kind. */
+export const SHAPE = 7;
+
+/** Where among a shape's numbers its kind lies: the kernel's index of its class's `packed`. */
+export const KIND = 6;
 
 /** Where the hit point P and the unit normal N lie in the kernel's `surface` record. */
 export const P = 0, N = 3;
