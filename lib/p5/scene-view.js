@@ -18,9 +18,8 @@
  */
 import p5 from 'p5';
 import { clamp } from '../numbers.js';
-import { Sphere, intersectGeometric } from '../shapes/sphere.js';
-import { Plane } from '../shapes/plane.js';
-import { Box } from '../shapes/box.js';
+import { intersectGeometric } from '../shapes/sphere.js';
+import { ballOf } from '../shapes/index.js';
 import { inspectPixel } from '../explain.js';
 import { Vec3, sub, dot, normalize, cross } from '../vec3.js';
 import { show, checkOptions } from '../check.js';
@@ -93,7 +92,7 @@ export class SceneView {
 
   constructor(p, options = {}) {
     const { view, width = 480, height = 360, parent, label = 'The scene in 3D', planeDistance = 'auto', frustum = true, orbit = {}, controls = true, raysPerSecond = 4, construction = null } = checkOptions(options, OPTIONS, 'scene view');
-    if (construction !== null && !(construction instanceof Sphere)) throw new TypeError(`construction must be a Sphere of the scene, got ${show(construction)}`);
+    if (construction !== null && !(construction && ballOf(construction))) throw new TypeError(`construction must be a Sphere of the scene, got ${show(construction)}`);
     this.#constructionSphere = construction;
     if (!SPEEDS.includes(raysPerSecond)) throw new RangeError(`raysPerSecond must be one of ${SPEEDS.join(', ')}, got ${show(raysPerSecond)}`);
     this.raysPerSecond = raysPerSecond;
@@ -489,6 +488,17 @@ export class SceneView {
     return moving;
   }
 
+  /** The meshes a shape draws itself with (its drawIn3D): a ball (a huge one as a patch of ground), a ground patch, a box. */
+  #meshKit() {
+    return {
+      ball: (into, center, radius, rgb, lit) => (radius > HUGE_RADIUS
+        ? this.#groundPatch(into, center, sub(new Vec3(), this.#bounds.center, center), radius, rgb)
+        : sphereMesh(into, center, radius, rgb, lit)),
+      ground: (into, point, normal, radius, rgb) => this.#groundPatch(into, point, normal, radius, rgb),
+      box: boxMesh,
+    };
+  }
+
   /**
    * Everything that does not move (shapes, lights, the eye) as one p5.Geometry,
    * built when the scene changes: each vertex carries its colour with the light
@@ -510,14 +520,7 @@ export class SceneView {
       if (object === this.#constructionSphere) continue; // drawn as a wire ball: the construction is inside it
       const into = m.transparency > 0 && !m.isEmissive ? glass : mesh;
       into.alpha = into === glass ? glassAlpha(m.transparency) : 1;
-      if (object instanceof Sphere) {
-        if (object.radius > HUGE_RADIUS) this.#groundPatch(into, object.center, sub(new Vec3(), this.#bounds.center, object.center), object.radius, rgb);
-        else sphereMesh(into, object.center, object.radius, rgb, !m.isEmissive);
-      } else if (object instanceof Plane) {
-        this.#groundPatch(into, object.point, object.normal, 0, rgb);
-      } else if (object instanceof Box) {
-        boxMesh(into, object.min, object.max, rgb);
-      }
+      object.drawIn3D?.(this.#meshKit(), into, rgb); // the shape says which of the view's meshes it is
     }
     for (const light of scene.lights) if (!light.object) sphereMesh(mesh, light.position, r * 0.025, GLOW, false, 8, 12);
     sphereMesh(mesh, camera.position, r * 0.02, [0.11, 0.14, 0.2], true, 8, 12);
@@ -914,8 +917,9 @@ function dot3(g, at, color, r) {
 function nearestAhead(scene, camera) {
   let nearest = Infinity;
   for (const o of scene.objects) {
-    if (!(o instanceof Sphere) || o.radius > HUGE_RADIUS) continue;
-    const along = dot(sub(new Vec3(), o.center, camera.position), camera.forward) - o.radius;
+    const ball = ballOf(o);
+    if (!ball || ball.radius > HUGE_RADIUS) continue;
+    const along = dot(sub(new Vec3(), ball.center, camera.position), camera.forward) - ball.radius;
     if (along > 0) nearest = Math.min(nearest, along);
   }
   return Number.isFinite(nearest) ? nearest : 10;
