@@ -86,7 +86,10 @@ export class PackedScene {
      * test itself, which saves asking each shape its kind (about 6 %).
      */
     const kinds = new Set(objects.map((object) => object.constructor.packed));
-    this.hit = kinds.size === 1 ? [...kinds][0].hit : hitShape;
+    const [only] = kinds.size === 1 ? kinds : [null];
+    this.hit = only ? only.hit : hitShape;
+    /** The normal, `normal(shapes, at, surface)`: that kind's own too, for a scene of one kind. */
+    this.normal = only ? only.normal : normalShape;
   }
 
   /** For each light and shape, how far the shape's near side is from the light, less a margin (balls; −Infinity otherwise). */
@@ -182,7 +185,7 @@ function traceRay(k, depth, out, candidates, from, to) {
 
 /** surfaceAt: the unit normal at P, turned to face the ray, into `surface`. */
 function surfaceAt(k, object) {
-  normalAt(k, object);
+  k.normal(k.shapes, object * SHAPE, surface);
   const dx = surface[D], dy = surface[D + 1], dz = surface[D + 2];
   const inside = dx * surface[N] + dy * surface[N + 1] + dz * surface[N + 2] > 0;
   if (inside) { surface[N] = -surface[N]; surface[N + 1] = -surface[N + 1]; surface[N + 2] = -surface[N + 2]; } // shade the side the ray sees
@@ -297,8 +300,7 @@ function hitShape(s, at, ox, oy, oz, dx, dy, dz, tMin) {
   return KINDS[s[at + KIND]].hit(s, at, ox, oy, oz, dx, dy, dz, tMin);
 }
 
-/** The unit normal of shape `object` at P, facing out, into `surface`: its kind's `normalAt`, in numbers. */
-function normalAt(k, object) {
-  const at = object * SHAPE;
-  KINDS[k.shapes[at + KIND]].normal(k.shapes, at, surface);
+/** The unit normal at P of the shape at `shapes[at]`, facing out, into `surface`: its kind's `normalAt`, in numbers. */
+function normalShape(s, at, out) {
+  KINDS[s[at + KIND]].normal(s, at, out);
 }
