@@ -85,8 +85,8 @@ export class PackedScene {
      * every shape is of one kind (the lesson's scenes: spheres) that kind's
      * test itself, which saves asking each shape its kind (about 6 %).
      */
-    const kinds = new Set(objects.map((object) => object.constructor.packed));
-    const [only] = kinds.size === 1 ? kinds : [null];
+    const kinds = new Set(objects.map((object) => kindIndex(object.constructor)));
+    const only = kinds.size === 1 ? KINDS[[...kinds][0]] : null;
     this.hit = only ? only.hit : hitShape;
     /** The normal, `normal(shapes, at, surface)`: that kind's own too, for a scene of one kind. */
     this.normal = only ? only.normal : normalShape;
@@ -106,20 +106,22 @@ export class PackedScene {
 
   /** Shape i's numbers (its class packs them) and its material's into `shapes` and `materials`. */
   #packShape(object, i) {
-    const s = i * SHAPE, m = object.material, packed = object.constructor.packed;
-    packed.pack(object, this.shapes, s);
-    this.shapes[s + KIND] = kindIndex(packed);
+    const s = i * SHAPE, m = object.material, kind = kindIndex(object.constructor);
+    KINDS[kind].pack(object, this.shapes, s);
+    this.shapes[s + KIND] = kind;
     this.materials.set([...m.color, ...m.emission, m.reflection, m.transparency, m.ior, m.specular, m.shininess], i * MATERIAL);
   }
 }
 
-/** Every packed form the kernel has met, by kind: `shapes[at + KIND]` indexes this. */
+/** The packed form of every shape class the kernel has met, by kind: `shapes[at + KIND]` indexes this. */
 const KINDS = [];
+/** Each class's kind number. */
+const KIND_OF = new Map();
 
-/** The kind number of a class's packed form. */
-function kindIndex(packed) {
-  if (!KINDS.includes(packed)) KINDS.push(packed);
-  return KINDS.indexOf(packed);
+/** The kind number of a shape class (its packed form read once). */
+function kindIndex(Shape) {
+  if (!KIND_OF.has(Shape)) KIND_OF.set(Shape, KINDS.push(Shape.packed) - 1);
+  return KIND_OF.get(Shape);
 }
 
 /** True when trace.js would ask this shape exactly what the kernel computes: a listed class's own methods, with a packed form. */
