@@ -33,6 +33,10 @@ const CORE = ['hit', 'normalAt', 'intersect', 'bounds'];
  * Adds a shape class to the list (a sketch's or a test's own shape): it can
  * then be read from scene JSON by its `type`. Returns the class.
  * @param {Function} Shape a class with static `type`, `fields` and `build`
+ * @example
+ * class Dot extends Sphere { static get type() { return 'dot'; } static build(o, m) { return new Dot(o.center, o.radius, m); } }
+ * registerShape(Dot); // a shape of the sketch's own (docs/ARCHITECTURE.md, "A new shape")
+ * sceneFromJSON({ objects: [{ type: 'dot', center: [0, 0, -10], radius: 1 }] }).objects[0] instanceof Dot; // true
  */
 export function registerShape(Shape) {
   if (typeof Shape !== 'function' || typeof Shape.type !== 'string' || !Array.isArray(Shape.fields) || typeof Shape.build !== 'function') {
