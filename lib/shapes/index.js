@@ -18,7 +18,15 @@ import { Box } from './box.js';
 import { Material } from '../material.js';
 import { show } from '../check.js';
 
-/** Every shape class, in the order the lesson meets them. A new shape is one more entry here. */
+/**
+ * A shape class as the list knows it.
+ * @typedef {Function & { type: string, fields: string[], build: (fields: object, material?: Material) => object, packed?: object }} ShapeClass
+ */
+
+/**
+ * Every shape class, in the order the lesson meets them. A new shape is one more entry here.
+ * @type {ShapeClass[]}
+ */
 const SHAPES = [Sphere, Plane, Box];
 
 /** Each listed class's own `hit` and `normalAt`, as listed (a sketch may replace them later). */
@@ -32,7 +40,7 @@ const CORE = ['hit', 'normalAt', 'intersect', 'bounds'];
 /**
  * Adds a shape class to the list (a sketch's or a test's own shape): it can
  * then be read from scene JSON by its `type`. Returns the class.
- * @param {Function} Shape a class with static `type`, `fields` and `build`
+ * @param {any} Shape a class with static `type`, `fields` and `build`
  * @example
  * class Dot extends Sphere { static get type() { return 'dot'; } static build(o, m) { return new Dot(o.center, o.radius, m); } }
  * registerShape(Dot); // a shape of the sketch's own (docs/ARCHITECTURE.md, "A new shape")
