@@ -155,7 +155,7 @@ export function objectToJSON(item) {
   if (item instanceof PointLight) return { type: 'pointLight', name: item.name ?? '', position: vector(item.position), color: [...item.color], intensity: item.intensity };
   const json = typeof item?.toJSON === 'function' ? item.toJSON() : null;
   if (json && shapeClass(json.type)) return json;
-  throw new TypeError(`scene objects must be shapes with a toJSON of a listed type (spheres, planes, boxes, …) or point lights, got ${show(item)}`);
+  throw new TypeError(`scene objects must be spheres, planes, boxes or point lights (or other listed shapes, with a toJSON), got ${show(item)}`);
 }
 
 /* ---- from JSON ---- */
