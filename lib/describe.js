@@ -10,7 +10,7 @@
  * meets behind that is "behind" it.
  */
 import { colorName } from './color.js';
-import { ballOf, kindOf as shapeKind, shapeClasses } from './shapes/index.js';
+import { ballOf, middleOf, kindOf as shapeKind, shapeClasses } from './shapes/index.js';
 
 /** The coarse grid of rays, at most this many a side (fewer for a smaller picture). */
 const SAMPLE_COLUMNS = 24;
@@ -97,14 +97,15 @@ export function sampleScene(scene, camera) {
 }
 
 /**
- * 'floor', 'ceiling' or 'wall' for a plane, or a sphere so big the camera sees
+ * 'floor', 'ceiling' or 'wall' for an unbounded shape (a plane), or a ball so big the camera sees
  * it as one (the class scene's ground); null for an ordinary shape.
  */
 function surfaceKind(o, camera) {
   let normal, below;
-  if (o.normal && o.point) {
-    normal = o.normal;
-    below = camera.position.y > o.point.y;
+  if (typeof o.bounds === 'function' && o.bounds() === null) { // unbounded: a plane
+    const point = middleOf(o);
+    normal = o.normalAt(point);
+    below = camera.position.y > point.y;
   } else if (ballOf(o)?.radius >= 100) {
     const { center: c, radius } = ballOf(o), e = camera.position;
     const dx = e.x - c.x, dy = e.y - c.y, dz = e.z - c.z, d = Math.hypot(dx, dy, dz);
