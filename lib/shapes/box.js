@@ -5,6 +5,7 @@ import { toVec3, Vec3, set } from '../vec3.js';
 import { shapeOptions } from '../material.js';
 import { EPSILON } from '../constants.js';
 import { vector, materialToJSON } from './json.js';
+import { xyz, share, SURFACE } from './form.js';
 import { P, N, scratchNumbers } from './packed.js';
 
 const AXES = ['x', 'y', 'z'];
@@ -126,7 +127,12 @@ export class Box {
 
   /** Its packed form for render()'s kernel (lib/shapes/packed.js): min xyz, max xyz. */
   static get packed() { return PACKED; }
+
+  /** Its table in the scene form (lib/shapes/form.js). */
+  static get form() { return FORM; }
 }
+
+const FORM = Object.freeze({ title: 'Boxes', what: 'Box', columns: [...xyz('min', 'min'), ...xyz('max', 'max'), SURFACE, share('reflection')] });
 
 /** [tNear, tFar] of the packed box's slabs so far. */
 const slab = scratchNumbers(2);

@@ -20,7 +20,7 @@ import { show } from '../check.js';
 
 /**
  * A shape class as the list knows it.
- * @typedef {Function & { type: string, fields: string[], build: (fields: object, material?: Material) => object, packed?: object }} ShapeClass
+ * @typedef {Function & { type: string, fields: string[], build: (fields: object, material?: Material) => object, packed?: object, form?: { title: string, what: string, columns: object[] } }} ShapeClass
  */
 
 /**

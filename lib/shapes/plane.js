@@ -5,6 +5,7 @@ import { toVec3, toUnit, Vec3, copy } from '../vec3.js';
 import { shapeOptions } from '../material.js';
 import { EPSILON } from '../constants.js';
 import { vector, materialToJSON } from './json.js';
+import { xyz, share, SURFACE } from './form.js';
 import { N } from './packed.js';
 
 /** |n·d| below this: the ray runs along the plane and misses it. */
@@ -91,7 +92,12 @@ export class Plane {
 
   /** Its packed form for render()'s kernel (lib/shapes/packed.js): px py pz nx ny nz. */
   static get packed() { return PACKED; }
+
+  /** Its table in the scene form (lib/shapes/form.js). */
+  static get form() { return FORM; }
 }
+
+const FORM = Object.freeze({ title: 'Planes', what: 'Plane', columns: [...xyz('point', 'point'), ...xyz('normal', 'normal'), SURFACE, share('reflection')] });
 
 const PACKED = Object.freeze({
   pack(plane, shapes, at) {

@@ -7,6 +7,7 @@ import { finiteNumber } from '../check.js';
 import { shapeOptions } from '../material.js';
 import { EPSILON } from '../constants.js';
 import { vector, materialToJSON } from './json.js';
+import { xyz, share, SURFACE } from './form.js';
 import { P, N } from './packed.js';
 
 // Re-exported: EPSILON's public path (lib/index.js) has always been this module.
@@ -107,7 +108,17 @@ export class Sphere {
 
   /** Its packed form for render()'s kernel (lib/shapes/packed.js): cx cy cz radius. */
   static get packed() { return PACKED; }
+
+  /** Its table in the scene form (lib/shapes/form.js). */
+  static get form() { return FORM; }
 }
+
+const FORM = Object.freeze({
+  title: 'Spheres', what: 'Sphere',
+  columns: [...xyz('center', 'centre'), { path: ['radius'], label: 'radius', head: 'radius', kind: 'number', rule: { above: 0 } },
+    SURFACE, share('reflection'), share('transparency'),
+    { path: ['material', 'emission'], label: 'emission', head: 'emission', kind: 'color', grey: true }],
+});
 
 const PACKED = Object.freeze({
   pack(sphere, shapes, at) {

@@ -14,6 +14,8 @@ import { checkScene } from '../../lib/scene-check.js';
 import { registerShape } from '../../lib/shapes/index.js';
 import { N } from '../../lib/shapes/packed.js';
 import { materialToJSON, vector } from '../../lib/shapes/json.js';
+import { xyz } from '../../lib/shapes/form.js';
+import { formTypes, tableColumns, fieldText } from '../../lib/scene-fields.js';
 import { toVec3, Vec3, set } from '../../lib/vec3.js';
 import { finiteNumber } from '../../lib/check.js';
 import { shapeOptions } from '../../lib/material.js';
@@ -62,6 +64,9 @@ class Disc {
   static get fields() { return ['center', 'radius', 'material']; }
   static build(o, material) { return new Disc(o.center, o.radius, material); }
   static get packed() { return PACKED_DISC; }
+  static get form() {
+    return { title: 'Discs', what: 'Disc', columns: [...xyz('center', 'centre'), { path: ['radius'], label: 'radius', head: 'radius', kind: 'number', rule: { above: 0 } }] };
+  }
 }
 
 /** Its packed form (lib/shapes/packed.js): cx cy cz radius. */
@@ -140,6 +145,12 @@ describe('a shape written in a test, listed from the test', () => {
     expect(sceneToCode(scene)).toContain('new Disc([0, -1, -14], 3, { color: [0.9, 0.6, 0.2] })');
     scene.objects[0].radius = 0;
     expect(() => checkScene(scene)).toThrow('objects[0].radius must be greater than 0, got 0');
+  });
+
+  it('has a table of its own in the scene form, after the kit\'s', () => {
+    expect(formTypes()).toEqual(['sphere', 'pointLight', 'plane', 'box', 'disc', 'plainDisc']); // PlainDisc inherits Disc's form
+    const json = sceneToJSON(tableScene(Disc)).objects[0];
+    expect(tableColumns('disc').map((column) => fieldText(json, column))).toEqual(['0', '-1', '-14', '3']);
   });
 
   it('is culled by its bounds: a disc off to the right covers only part of the picture', () => {
