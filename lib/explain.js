@@ -7,7 +7,7 @@ import { intersectQuadratic, intersectGeometric } from './shapes/sphere.js';
 import { trace } from './trace.js';
 import { writePixel, checkSceneAndCamera } from './render.js';
 import { pixelCoordinate } from './check.js';
-import { shapeName } from './scene.js';
+import { shapeName, shapeNames } from './scene.js';
 import { sampleOffsets } from './camera.js';
 import { clamp } from './numbers.js';
 
@@ -34,16 +34,18 @@ export function inspectPixel(scene, camera, x, y) {
   pixelCoordinate(x, 'x', camera.width);
   pixelCoordinate(y, 'y', camera.height);
   const { ray, h, v } = camera.primaryRay(x, y);
+  const names = shapeNames(scene.objects), first = new Map();
+  scene.objects.forEach((object, index) => { if (!first.has(object)) first.set(object, index); });
   const tests = scene.spheres.map((sphere) => ({
     sphere,
-    index: scene.objects.indexOf(sphere),
-    name: shapeName(sphere, scene.objects),
+    index: first.get(sphere),
+    name: names[first.get(sphere)],
     quadratic: intersectQuadratic(ray, sphere),
     geometric: intersectGeometric(ray, sphere),
   }));
   const records = scene.objects.map((object, index) => {
     const record = typeof object.intersect === 'function' ? object.intersect(ray) : { t: null };
-    return { object, index, name: shapeName(object, scene.objects), record, rows: recordRows(object, record) };
+    return { object, index, name: names[index], record, rows: recordRows(object, record) };
   });
   const steps = {};
   const color = trace(scene, ray, [0, 0, 0], steps);

@@ -68,3 +68,13 @@ describe('registerShape', () => {
     expect(registerShape(Sphere)).toBe(Sphere);
   });
 });
+
+describe('shapeNames', () => {
+  it("is shapeName of each shape, a shape added twice and a sketch's own object too", async () => {
+    const { shapeName, shapeNames } = await import('../../lib/scene.js');
+    const a = new Sphere([0, 0, -5], 1), b = new Box([0, 0, 0], [1, 1, 1]), own = { hit: () => Infinity };
+    const objects = [a, new Plane(), a, b, new Sphere([0, 0, -9], 1, { name: 'moon' }), own, new Sphere([1, 0, -5], 1)];
+    expect(shapeNames(objects)).toEqual(objects.map((o) => shapeName(o, objects)));
+    expect(shapeNames(objects)).toEqual(['sphere 1', 'plane 1', 'sphere 1', 'box 1', 'moon', 'object 6', 'sphere 4']);
+  });
+});
