@@ -355,15 +355,19 @@ function wrapBeforeZ(span) {
  * box's slabs): one row per shape, its record's lines; hidden when there is none.
  */
 function shapesSection(r) {
-  const others = r.records.filter((entry) => !r.tests.some((test) => test.sphere === entry.object));
+  const spheres = new Set(r.tests.map((test) => test.sphere));
+  const others = r.records.filter((entry) => !spheres.has(entry.object));
   if (others.length === 0) return element('div', { hidden: '' });
-  const rows = others.map((entry) => {
+  // Many shapes: the ones the ray meets, nearest first (so the hit, if one of them), as many as the spheres' tables show.
+  const shown = others.length <= SPHERE_ROWS ? others : others.filter((entry) => entry.record.t !== null).sort((a, b) => a.record.t - b.record.t).slice(0, SPHERE_ROWS);
+  const rows = shown.map((entry) => {
     const at = { 'data-shape': String(entry.index) };
     const lines = entry.rows.map(([label, n], i) => element('span', { class: 'rt-record-line' }, i ? '; ' : '', `${label} = `,
       value('record', n, { ...at, 'data-label': label })));
     return element('tr', { class: entry.object === r.hit?.object ? 'rt-hit-row' : '' }, element('th', { scope: 'row' }, entry.name), element('td', {}, ...lines));
   });
-  return section('Other shapes: each one\'s own test', table(['shape', 'its record (t: the nearest hit past 0)'], rows, 'Other shapes'));
+  const note = shown.length < others.length && element('p', { class: 'rt-note' }, `Showing ${shown.length} of the ${others.length.toLocaleString('en')} other shapes: ones the ray meets.`);
+  return section('Other shapes: each one\'s own test', table(['shape', 'its record (t: the nearest hit past 0)'], rows, 'Other shapes'), ...[note].filter(Boolean));
 }
 
 /** Instead of a table with no rows: the scene has no sphere to test yet. */
