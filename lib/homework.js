@@ -15,7 +15,7 @@
  * `skipped` (and not passed) until that one passes.
  */
 import { Camera } from './camera.js';
-import { Sphere } from './shapes/sphere.js';
+import { ballOf } from './shapes/index.js';
 import { PointLight } from './lights.js';
 import { Ray } from './ray.js';
 import { nearestHit } from './trace.js';
@@ -249,10 +249,9 @@ function carBody(scene) {
   let min = Infinity, max = -Infinity;
   for (const o of scene.objects) {
     if (o.material.isEmissive) continue;
-    if (o instanceof Sphere && o.radius < HUGE) {
-      min = Math.min(min, o.center.x - o.radius); max = Math.max(max, o.center.x + o.radius);
-    } else if (o.min && o.max && o.max.x - o.min.x < HUGE) {
-      min = Math.min(min, o.min.x); max = Math.max(max, o.max.x);
+    const ball = ballOf(o), box = o.bounds();
+    if (box && (ball ? ball.radius < HUGE : box.max.x - box.min.x < HUGE)) {
+      min = Math.min(min, box.min.x); max = Math.max(max, box.max.x);
     }
   }
   return min <= max ? { min, max, middle: (min + max) / 2 } : null;
@@ -297,8 +296,8 @@ function whereIsIt(light, camera) {
  */
 export function findLights(scene) {
   return scene.objects
-    .filter((o) => o instanceof Sphere && o.material.isEmissive)
-    .map((sphere) => ({ sphere, center: sphere.center, radius: sphere.radius, color: lightColor(sphere.material.emission) }));
+    .filter((o) => ballOf(o) && o.material.isEmissive)
+    .map((sphere) => ({ sphere, center: ballOf(sphere).center, radius: ballOf(sphere).radius, color: lightColor(sphere.material.emission) }));
 }
 
 /**

@@ -9,9 +9,7 @@
  * A list is `{ positions, colors, alpha }`: x, −y, z per vertex (p5's WEBGL y
  * points down) and r, g, b, a in 0–1, three vertices a triangle.
  */
-import { Sphere } from '../shapes/sphere.js';
-import { Plane } from '../shapes/plane.js';
-import { Box } from '../shapes/box.js';
+import { ballOf } from '../shapes/index.js';
 import { Vec3, sub, dot, normalize, cross } from '../vec3.js';
 import { HUGE_RADIUS } from '../rays3d.js';
 
@@ -62,18 +60,22 @@ class MeshBuilder {
       if (object === constructionSphere) continue; // drawn as a wire ball: the construction is inside it
       const into = m.transparency > 0 && !m.isEmissive ? glass : mesh;
       into.alpha = into === glass ? glassAlpha(m.transparency) : 1;
-      if (object instanceof Sphere) {
-        if (object.radius > HUGE_RADIUS) this.#groundPatch(into, object.center, sub(new Vec3(), this.#bounds.center, object.center), object.radius, rgb);
-        else sphereMesh(into, object.center, object.radius, rgb, !m.isEmissive);
-      } else if (object instanceof Plane) {
-        this.#groundPatch(into, object.point, object.normal, 0, rgb);
-      } else if (object instanceof Box) {
-        boxMesh(into, object.min, object.max, rgb);
-      }
+      object.drawIn3D?.(this.#kit(), into, rgb); // the shape says which of the view's meshes it is
     }
     for (const light of scene.lights) if (!light.object) sphereMesh(mesh, light.position, r * 0.025, GLOW, false, 8, 12);
     sphereMesh(mesh, camera.position, r * 0.02, [0.11, 0.14, 0.2], true, 8, 12);
     return { mesh, glass };
+  }
+
+  /** The meshes a shape draws itself with (its drawIn3D): a ball (a huge one as a patch of ground), a ground patch, a box. */
+  #kit() {
+    return {
+      ball: (into, center, radius, rgb, lit) => (radius > HUGE_RADIUS
+        ? this.#groundPatch(into, center, sub(new Vec3(), this.#bounds.center, center), radius, rgb)
+        : sphereMesh(into, center, radius, rgb, lit)),
+      ground: (into, point, normal, radius, rgb) => this.#groundPatch(into, point, normal, radius, rgb),
+      box: boxMesh,
+    };
   }
 
   /** A huge sphere or a plane: a square patch of it under the scene, big enough to stand on. */
@@ -145,8 +147,9 @@ export function groundPatch(g, bounds, origin, towardScene, radius, rgb) {
 export function nearestAhead(scene, camera) {
   let nearest = Infinity;
   for (const o of scene.objects) {
-    if (!(o instanceof Sphere) || o.radius > HUGE_RADIUS) continue;
-    const along = dot(sub(new Vec3(), o.center, camera.position), camera.forward) - o.radius;
+    const ball = ballOf(o);
+    if (!ball || ball.radius > HUGE_RADIUS) continue;
+    const along = dot(sub(new Vec3(), ball.center, camera.position), camera.forward) - ball.radius;
     if (along > 0) nearest = Math.min(nearest, along);
   }
   return Number.isFinite(nearest) ? nearest : 10;

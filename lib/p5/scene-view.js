@@ -22,7 +22,7 @@
  * scene-view-keys.js (arrow keys, buttons), scene-view-controls.js (figure and bar).
  */
 import p5 from 'p5';
-import { Sphere } from '../shapes/sphere.js';
+import { ballOf } from '../shapes/index.js';
 import { inspectPixel } from '../explain.js';
 import { Vec3 } from '../vec3.js';
 import { show, checkOptions } from '../check.js';
@@ -94,7 +94,7 @@ export class SceneView {
 
   constructor(p, options = {}) {
     const { view, width = 480, height = 360, parent, label = 'The scene in 3D', planeDistance = 'auto', frustum = true, orbit = {}, controls = true, raysPerSecond = 4, construction = null } = checkOptions(options, OPTIONS, 'scene view');
-    if (construction !== null && !(construction instanceof Sphere)) throw new TypeError(`construction must be a Sphere of the scene, got ${show(construction)}`);
+    if (construction !== null && !(construction && ballOf(construction))) throw new TypeError(`construction must be a Sphere of the scene, got ${show(construction)}`);
     this.#constructionSphere = construction;
     if (!SPEEDS.includes(raysPerSecond)) throw new RangeError(`raysPerSecond must be one of ${SPEEDS.join(', ')}, got ${show(raysPerSecond)}`);
     this.raysPerSecond = raysPerSecond;
