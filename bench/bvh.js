@@ -13,7 +13,8 @@
  */
 import { performance } from 'node:perf_hooks';
 import { loadavg, availableParallelism } from 'node:os';
-import { pathToFileURL } from 'node:url';
+import { pathToFileURL, fileURLToPath } from 'node:url';
+import { execFileSync } from 'node:child_process';
 import bunny from 'bunny';
 import { Camera } from '../lib/camera.js';
 import { Ray } from '../lib/ray.js';
@@ -135,6 +136,8 @@ export function runBvhBench() {
   for (let i = 0; i < target.length; i += 4) if (target[i] !== 30) covered++;
   console.log(`  bunny, ${mesh.triangleCount} triangles, 320×240, primary rays + Lambert: ${median(times).toFixed(1)} ms/frame median` +
     ` (min ${Math.min(...times).toFixed(1)}, max ${Math.max(...times).toFixed(1)}; goal ≤ 250 ms), the bunny on ${covered} pixels`);
+  const bytes = [1, 2, 3, 4, 5].map(() => Number(execFileSync(process.execPath, [fileURLToPath(new URL('./bvh-allocation.js', import.meta.url))]).toString()));
+  console.log(`  heap bytes per ray, Mesh#hit on the bunny, 5 fresh processes: ${bytes.map((b) => b.toFixed(1)).join(', ')} (goal: 0; median ${median(bytes).toFixed(1)})`);
   console.log(`  load average ${startLoad.toFixed(1)} at the start, ${loadavg()[0].toFixed(1)} at the end`);
 }
 
