@@ -90,6 +90,7 @@ export class Inspector {
     }
     const r = this.record = inspectPixel(this.view.scene, this.view.camera, selected.x, selected.y);
     this.answer.textContent = answerLine(r);
+    this.answer.style.setProperty('--rt-answer-chars', String(this.answer.textContent.length)); // style.css fits the line to the panel
     this.#announcer.say(pixelAnnouncement(r));
     this.element.dataset.x = String(r.x);
     this.element.dataset.y = String(r.y);

@@ -143,9 +143,10 @@ export class SceneForm {
     more.addEventListener('click', () => showUpTo(body.children.length + FORM_ROWS));
     showUpTo(Math.max(FORM_ROWS, this.#shown.get(type) ?? 0));
     this.#tables.set(type, { rows, body, showUpTo });
+    // The table scrolls in its box on a narrow screen: focusable and named, so a keyboard scrolls it too.
     return element('section', { class: 'sf-section', 'data-table': type },
       element('h3', {}, title),
-      element('div', { class: 'sf-table-wrap' }, element('table', { class: 'sf-table' }, element('thead', {}, head), body)), note);
+      element('div', { class: 'sf-table-wrap', tabindex: '0', role: 'region', 'aria-label': `${title} table` }, element('table', { class: 'sf-table' }, element('thead', {}, head), body)), note);
   }
 
   /** What a row is called in messages: "Sphere 3 (pink)". */

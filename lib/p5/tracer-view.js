@@ -33,7 +33,7 @@ import { createLegendElement } from './diagrams/legend.js';
 import { drawOverlay } from './tracer-overlay.js';
 import { pixelAt, listenForPixels } from './tracer-input.js';
 import { pngDataURL, pngFilename, download, createSaveButton } from './tracer-export.js';
-import { checkScale, pictureScale, sizePicture } from './tracer-layout.js';
+import { checkScale, pictureScale, sizePicture, watchRoom } from './tracer-layout.js';
 import { createPictureWords } from './picture-words.js';
 import { createEvents } from './tracer-events.js';
 
@@ -87,7 +87,7 @@ export class TracerView {
   #renderer; #page; #imageData = null; #raf = 0; #destroyed = false;
   #scale; #grid; #mode; #selected = null; #events = createEvents(EVENTS);
   #shownCurrent = null; #progressText = ''; #shownProblem = null;
-  #ctx; #overlayCtx; #onResize; #words;
+  #ctx; #overlayCtx; #unwatchRoom; #words;
 
   /**
    * @param {import('p5').default} p
@@ -109,8 +109,7 @@ export class TracerView {
     this.#buildDom(resolveParent(parent, sketchNode(p)), label);
     listenForPixels(this.canvasElement, this); // press, drag, arrow keys: this.select(x, y)
     this.#page = registerView(this);
-    this.#onResize = () => this.#layout();
-    window.addEventListener('resize', this.#onResize);
+    this.#unwatchRoom = watchRoom(this.figure, () => this.#layout()); // the window, and the room the page's layout leaves
     this.#started();
   }
 
@@ -278,7 +277,7 @@ export class TracerView {
     cancelAnimationFrame(this.#raf);
     this.#renderer.terminate();
     this.#words.destroy();
-    window.removeEventListener('resize', this.#onResize);
+    this.#unwatchRoom();
     this.#page.unregister();
     this.figure.remove();
   }
