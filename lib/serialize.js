@@ -260,9 +260,15 @@ function sceneOptions(data) {
 function constructorCall(o) {
   const args = o.type === POINT_LIGHT.type
     ? [o.position, isWhite(o.color) && o.intensity === 1 ? undefined : o.color, o.intensity === 1 ? undefined : o.intensity]
-    : shapeClass(o.type).fields.map((field) => (field === 'material' ? materialArgument(o.material) : o[field]));
+    : shapeArguments(shapeClass(o.type), o);
   while (args.length && args.at(-1) === undefined) args.pop();
   return `new ${className(o.type)}(${args.map((a, i) => literal(a, o.type === POINT_LIGHT.type && i === 1)).join(', ')})`;
+}
+
+/** A shape's constructor arguments: its class's own `codeArguments`, else its fields in order. */
+function shapeArguments(Shape, o) {
+  if (typeof Shape.codeArguments === 'function') return Shape.codeArguments(o, materialArgument(o.material));
+  return Shape.fields.map((field) => (field === 'material' ? materialArgument(o.material) : o[field]));
 }
 
 /** A material as the code writes it: only what differs from the defaults, or nothing. */

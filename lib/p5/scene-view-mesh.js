@@ -75,6 +75,7 @@ class MeshBuilder {
         : sphereMesh(into, center, radius, rgb, lit)),
       ground: (into, point, normal, radius, rgb) => this.#groundPatch(into, point, normal, radius, rgb),
       box: boxMesh,
+      triangles: trianglesMesh,
     };
   }
 
@@ -123,6 +124,20 @@ export function boxMesh(g, min, max, rgb) {
   for (const [n, [a, b, c, d]] of faces) {
     const col = shade(rgb, n);
     for (const v of [a, b, c, a, c, d]) coloredVertex(g, v, col);
+  }
+}
+
+/** Triangles `[ax, ay, az, bx, …]` (lib/shapes/tessellate.js), each shaded by its own normal. */
+export function trianglesMesh(g, corners, rgb) {
+  const a = new Vec3(), b = new Vec3(), c = new Vec3(), e1 = new Vec3(), e2 = new Vec3(), n = new Vec3();
+  for (let i = 0; i + 8 < corners.length; i += 9) {
+    a.x = corners[i]; a.y = corners[i + 1]; a.z = corners[i + 2];
+    b.x = corners[i + 3]; b.y = corners[i + 4]; b.z = corners[i + 5];
+    c.x = corners[i + 6]; c.y = corners[i + 7]; c.z = corners[i + 8];
+    cross(n, sub(e1, b, a), sub(e2, c, a));
+    if (n.x === 0 && n.y === 0 && n.z === 0) continue;
+    const col = shade(rgb, normalize(n, n));
+    coloredVertex(g, a, col); coloredVertex(g, b, col); coloredVertex(g, c, col);
   }
 }
 

@@ -102,3 +102,17 @@ export function axialBounds(center, radius, height) {
     max: new Vec3(center.x + radius, center.y + height / 2, center.z + radius),
   };
 }
+
+/**
+ * A Cylinder's or Cone's options from scene JSON: its Material (or none) and
+ * `capped`, as the constructor takes them.
+ */
+export function withCapped(material, capped) {
+  if (capped === undefined) return material;
+  return material === undefined ? { capped } : { ...materialOptions(material), capped };
+}
+
+/** A Material's options, to build it again with more options beside them. */
+function materialOptions(m) {
+  return { color: m.color, emission: m.emission, reflection: m.reflection, transparency: m.transparency, ior: m.ior, specular: m.specular, shininess: m.shininess };
+}

@@ -9,6 +9,9 @@
 import { Vec3, set } from '../vec3.js';
 import { EPSILON } from '../constants.js';
 import { axialArguments, solveQuadratic, recordSide, capCrossing, withinSpan, orNull, axialBounds } from './axial.js';
+import { vector, materialToJSON } from './json.js';
+import { axialTriangles } from './tessellate.js';
+import { withCapped } from './axial.js';
 
 const _roots = new Float64Array(2);
 
@@ -85,6 +88,40 @@ export class Cone {
   bounds() {
     return axialBounds(this.center, this.radius, this.height);
   }
+  /** The record's lines for the inspector: the quadratic of the side, the caps' crossings, the nearest hit and the part it is on. */
+  recordRows(record) {
+    return [['A', record.A], ['B', record.B], ['C', record.C], ['B² − 4AC', record.discriminant], ['t0', record.t0], ['t1', record.t1],
+      ['base t', record.tBase],
+      [`t (${record.part ?? 'no hit'})`, record.t]];
+  }
+
+  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view-mesh.js). */
+  drawIn3D(kit, into, rgb) {
+    kit.triangles(into, axialTriangles(this.center, this.radius, 0, this.height, this.capped), rgb);
+  }
+
+  /** Its scene JSON (lib/serialize.js). */
+  toJSON() {
+    return { type: 'cone', name: this.name ?? '', center: vector(this.center), radius: this.radius, height: this.height, capped: this.capped, material: materialToJSON(this.material) };
+  }
+
+  /** Its type in scene JSON. */
+  static get type() { return 'cone'; }
+
+  /** Its JSON fields. */
+  static get fields() { return ['center', 'radius', 'height', 'capped', 'material']; }
+
+  /** A cone from its fields (checked by the constructor). */
+  static build(o, material) {
+    return new Cone(o.center, o.radius, o.height, withCapped(material, o.capped));
+  }
+
+  /** Its constructor's arguments in scene code: `capped` goes with the material's options, and only when false. */
+  static codeArguments(o, material) {
+    const options = o.capped === false ? { ...material, capped: false } : material;
+    return [o.center, o.radius, o.height, options];
+  }
+
 }
 
 /**

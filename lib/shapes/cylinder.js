@@ -7,6 +7,9 @@
 import { Vec3, set } from '../vec3.js';
 import { EPSILON } from '../constants.js';
 import { axialArguments, solveQuadratic, recordSide, capCrossing, withinSpan, orNull, axialBounds } from './axial.js';
+import { vector, materialToJSON } from './json.js';
+import { axialTriangles } from './tessellate.js';
+import { withCapped } from './axial.js';
 
 const _roots = new Float64Array(2);
 
@@ -80,6 +83,40 @@ export class Cylinder {
   bounds() {
     return axialBounds(this.center, this.radius, this.height);
   }
+  /** The record's lines for the inspector: the quadratic of the side, the caps' crossings, the nearest hit and the part it is on. */
+  recordRows(record) {
+    return [['A', record.A], ['B', record.B], ['C', record.C], ['B² − 4AC', record.discriminant], ['t0', record.t0], ['t1', record.t1],
+      ['top cap t', record.tTop], ['bottom cap t', record.tBottom],
+      [`t (${record.part ?? 'no hit'})`, record.t]];
+  }
+
+  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view-mesh.js). */
+  drawIn3D(kit, into, rgb) {
+    kit.triangles(into, axialTriangles(this.center, this.radius, this.radius, this.height, this.capped), rgb);
+  }
+
+  /** Its scene JSON (lib/serialize.js). */
+  toJSON() {
+    return { type: 'cylinder', name: this.name ?? '', center: vector(this.center), radius: this.radius, height: this.height, capped: this.capped, material: materialToJSON(this.material) };
+  }
+
+  /** Its type in scene JSON. */
+  static get type() { return 'cylinder'; }
+
+  /** Its JSON fields. */
+  static get fields() { return ['center', 'radius', 'height', 'capped', 'material']; }
+
+  /** A cylinder from its fields (checked by the constructor). */
+  static build(o, material) {
+    return new Cylinder(o.center, o.radius, o.height, withCapped(material, o.capped));
+  }
+
+  /** Its constructor's arguments in scene code: `capped` goes with the material's options, and only when false. */
+  static codeArguments(o, material) {
+    const options = o.capped === false ? { ...material, capped: false } : material;
+    return [o.center, o.radius, o.height, options];
+  }
+
 }
 
 /**

@@ -15,6 +15,10 @@
 import { Sphere } from './sphere.js';
 import { Plane } from './plane.js';
 import { Box } from './box.js';
+import { Cylinder } from './cylinder.js';
+import { Cone } from './cone.js';
+import { Triangle } from './triangle.js';
+import { Mesh } from './mesh.js';
 import { Material } from '../material.js';
 import { show } from '../check.js';
 
@@ -27,7 +31,7 @@ import { show } from '../check.js';
  * Every shape class, in the order the lesson meets them. A new shape is one more entry here.
  * @type {ShapeClass[]}
  */
-const SHAPES = [Sphere, Plane, Box];
+const SHAPES = [Sphere, Plane, Box, Cylinder, Cone, Triangle, Mesh];
 
 /** Each listed class's own `hit` and `normalAt`, as listed (a sketch may replace them later). */
 const METHODS = new Map();
@@ -109,4 +113,4 @@ export function middleOf(shape) {
   return b ? { x: (b.min.x + b.max.x) / 2, y: (b.min.y + b.max.y) / 2, z: (b.min.z + b.max.z) / 2 } : { x: 0, y: 0, z: 0 };
 }
 
-export { Sphere, Plane, Box };
+export { Sphere, Plane, Box, Cylinder, Cone, Triangle, Mesh };

@@ -11,6 +11,8 @@ import { EPSILON } from '../constants.js';
 import { BVH } from '../bvh.js';
 import { intersectTriangle, FLAT } from './triangle.js';
 import { parseOBJ } from './obj.js';
+import { materialToJSON } from './json.js';
+import { meshTriangles } from './tessellate.js';
 
 export class Mesh {
   /**
@@ -18,8 +20,7 @@ export class Mesh {
    *   and the triangles, each 3 indices into positions, counterclockwise seen from the front
    * @param {import('../material.js').Material|object} [options] a Material or its options, which may also give the shape a `name`
    * @example
-   * import bunny from 'bunny'; // { positions, cells }
-   * const mesh = new Mesh(bunny, { color: [0.9, 0.8, 0.7] });
+   * // the Stanford bunny (npm package bunny): new Mesh(bunny, { color: [0.9, 0.8, 0.7] }), bunny being { positions, cells }
    * const tetra = new Mesh({ positions: [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], cells: [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]] });
    */
   constructor(data, options) {
@@ -131,6 +132,37 @@ export class Mesh {
     }
     return { min, max };
   }
+  /** The record's lines for the inspector: the BVH's work beside a loop over every triangle, and t. */
+  recordRows(record) {
+    return [['box tests', record.boxTests], ['triangle tests', record.triangleTests], ['a loop would test', this.triangleCount], ['t', record.t]];
+  }
+
+  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view-mesh.js). */
+  drawIn3D(kit, into, rgb) {
+    kit.triangles(into, meshTriangles(this.vertices, this.indices), rgb);
+  }
+
+  /** Its scene JSON (lib/serialize.js): its positions and cells. */
+  toJSON() {
+    return { type: 'mesh', name: this.name ?? '', positions: this.positions.map((p) => [...p]), cells: this.cells.map((c) => [...c]), material: materialToJSON(this.material) };
+  }
+
+  /** Its type in scene JSON. */
+  static get type() { return 'mesh'; }
+
+  /** Its JSON fields. */
+  static get fields() { return ['positions', 'cells', 'material']; }
+
+  /** A mesh from its fields (checked by the constructor). */
+  static build(o, material) {
+    return new Mesh({ positions: o.positions, cells: o.cells }, material);
+  }
+
+  /** Its constructor's arguments in scene code: the data, then the material. */
+  static codeArguments(o, material) {
+    return [{ positions: o.positions, cells: o.cells }, material];
+  }
+
 }
 
 /** `data`'s positions and cells, checked and copied as plain lists; an error names the field. */

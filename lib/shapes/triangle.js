@@ -10,6 +10,7 @@
 import { toVec3, Vec3, sub, cross, dot, length, normalize } from '../vec3.js';
 import { shapeOptions } from '../material.js';
 import { EPSILON } from '../constants.js';
+import { vector, materialToJSON } from './json.js';
 
 /**
  * A determinant this small, relative to |e1|·|e2|·|Rd| (its size when the
@@ -71,6 +72,33 @@ export class Triangle {
       max: new Vec3(Math.max(a.x, b.x, c.x), Math.max(a.y, b.y, c.y), Math.max(a.z, b.z, c.z)),
     };
   }
+  /** The record's lines for the inspector: Möller–Trumbore's determinant, u, v and t. */
+  recordRows(record) {
+    return [['det', record.determinant], ['u', record.u], ['v', record.v], ['t', record.t]];
+  }
+
+  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view-mesh.js). */
+  drawIn3D(kit, into, rgb) {
+    const { a, b, c } = this;
+    kit.triangles(into, [a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z], rgb);
+  }
+
+  /** Its scene JSON (lib/serialize.js). */
+  toJSON() {
+    return { type: 'triangle', name: this.name ?? '', a: vector(this.a), b: vector(this.b), c: vector(this.c), material: materialToJSON(this.material) };
+  }
+
+  /** Its type in scene JSON. */
+  static get type() { return 'triangle'; }
+
+  /** Its JSON fields, in the order the constructor takes them. */
+  static get fields() { return ['a', 'b', 'c', 'material']; }
+
+  /** A triangle from its fields (checked by the constructor). */
+  static build(o, material) {
+    return new Triangle(o.a, o.b, o.c, material);
+  }
+
 }
 
 /** A RangeError when a, b, c have (next to) no area; `where` says which triangle ("cells[3] " or ""). */

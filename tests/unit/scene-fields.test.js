@@ -9,7 +9,7 @@ describe('the columns of each kind of object', () => {
     expect(tableColumns('sphere').map((c) => c.label)).toEqual(
       ['centre x', 'centre y', 'centre z', 'radius', 'colour', 'reflection', 'transparency', 'emission']);
     expect(tableColumns('pointLight').map((c) => c.label)).toEqual(['position x', 'position y', 'position z', 'colour', 'intensity']);
-    expect(() => tableColumns('cone')).toThrow(/type must be one of/);
+    expect(() => tableColumns('teapot')).toThrow(/type must be one of/);
   });
 
   it('point at fields that exist in the JSON of each type', () => {
