@@ -15,6 +15,8 @@
 import { Sphere, sphereHit } from './shapes/sphere.js';
 import { Plane, planeHit } from './shapes/plane.js';
 import { Box } from './shapes/box.js';
+import { Vec3, reflectXYZ } from './vec3.js';
+import { lambert, specular, lightShare, refract, fresnel as fresnelShare, mix } from './optics.js';
 
 const SPHERE = 0, PLANE = 1, BOX = 2;
 
@@ -223,21 +225,13 @@ function mirrorAndGlass(k, object, depth, out) {
   const m = object * MATERIAL, reflection = k.materials[m + REFLECTION], transparency = k.materials[m + TRANSPARENCY], ior = k.materials[m + IOR];
   const cosi = -(dx * Nx + dy * Ny + dz * Nz);
   const eta = surface[INSIDE] === 1 ? ior : 1 / ior;
-  let refracts = false, Tx = 0, Ty = 0, Tz = 0;
-  if (transparency > 0) { // refractDirection: Snell's law, none on total internal reflection
-    const kk = 1 - eta * eta * (1 - cosi * cosi);
-    if (!(kk < 0)) { // (as refractDirection: a NaN is not total internal reflection)
-      const s = eta * cosi - Math.sqrt(kk);
-      Tx = eta * dx + s * Nx; Ty = eta * dy + s * Ny; Tz = eta * dz + s * Nz;
-      refracts = true;
-    }
-  }
-  const fresnel = transparency > 0 ? (refracts ? schlick(cosi, ior) : 1) : 0;
+  const refracts = transparency > 0 && refract(bent, dx, dy, dz, Nx, Ny, Nz, cosi, eta); // Snell
+  const fresnel = fresnelShare(transparency, refracts, cosi, ior), Tx = bent.x, Ty = bent.y, Tz = bent.z;
 
   const next = (depth + 1) * 6, bias = k.bias, mirrored = next, through = next + 3;
-  const twice = 2 * (dx * Nx + dy * Ny + dz * Nz); // reflect: d − 2(d·n)n
+  reflectXYZ(bounce, dx, dy, dz, Nx, Ny, Nz);
   rays[next] = Px + Nx * bias; rays[next + 1] = Py + Ny * bias; rays[next + 2] = Pz + Nz * bias;
-  rays[next + 3] = dx - twice * Nx; rays[next + 4] = dy - twice * Ny; rays[next + 5] = dz - twice * Nz;
+  rays[next + 3] = bounce.x; rays[next + 4] = bounce.y; rays[next + 5] = bounce.z;
   traceRay(k, depth + 1, mirrored, k.all, 0, k.count);
   if (refracts) {
     rays[next] = Px + Nx * -bias; rays[next + 1] = Py + Ny * -bias; rays[next + 2] = Pz + Nz * -bias; // start just inside
@@ -247,18 +241,12 @@ function mirrorAndGlass(k, object, depth, out) {
     colors[through] = 0; colors[through + 1] = 0; colors[through + 2] = 0;
   }
   for (let c = 0; c < 3; c++) {
-    const color = k.materials[m + c];
-    const opaque = (1 - reflection) * colors[out + c] + reflection * color * colors[mirrored + c];
-    colors[out + c] = (1 - transparency) * opaque + transparency * (fresnel * colors[mirrored + c] + (1 - fresnel) * color * colors[through + c]);
+    colors[out + c] = mix(colors[out + c], colors[mirrored + c], colors[through + c], k.materials[m + c], reflection, transparency, fresnel);
   }
 }
 
-/** Schlick's approximation, as trace.js computes it. */
-function schlick(cosi, ior) {
-  const r0 = ((1 - ior) / (1 + ior)) ** 2;
-  const k = 1 - cosi, k2 = k * k;
-  return r0 + (1 - r0) * k2 * k2 * k;
-}
+/** The mirror ray's and the glass ray's directions, as optics.js writes them (read at once: the next bounce reuses them). */
+const bounce = new Vec3(), bent = new Vec3();
 
 /**
  * lightPoint: emission + ambient + each light the point can see, into
@@ -277,18 +265,20 @@ function lightPoint(k, object, out) {
     const x = lights[l] - Px, y = lights[l + 1] - Py, z = lights[l + 2] - Pz;
     const distance = Math.sqrt(x * x + y * y + z * z), inverse = 1 / distance;
     const Lx = x * inverse, Ly = y * inverse, Lz = z * inverse;
-    const cos = Nx * Lx + Ny * Ly + Nz * Lz; // Lambert
+    const cos = lambert(Nx, Ny, Nz, Lx, Ly, Lz);
     if (cos <= 0) continue;
     const transmission = k.shadows
       ? shadowRay(k, Px + Nx * bias, Py + Ny * bias, Pz + Nz * bias, Lx, Ly, Lz, distance - bias, l / LIGHT)
       : 1;
     if (transmission === 0) continue;
     const diffuse = cos * transmission;
-    const highlight = k.specular ? specular(mat[m + SPECULAR], mat[m + SHININESS], Lx, Ly, Lz) * transmission : 0;
+    const highlight = k.specular
+      ? specular(mat[m + SPECULAR], mat[m + SHININESS], cos, Lx, Ly, Lz, Nx, Ny, Nz, surface[D], surface[D + 1], surface[D + 2]) * transmission
+      : 0;
     const glow = l + EMISSION; // the light's colour
-    cr += lights[glow] * (red * diffuse + highlight);
-    cg += lights[glow + 1] * (green * diffuse + highlight);
-    cb += lights[glow + 2] * (blue * diffuse + highlight);
+    cr += lightShare(lights[glow], red, diffuse, highlight);
+    cg += lightShare(lights[glow + 1], green, diffuse, highlight);
+    cb += lightShare(lights[glow + 2], blue, diffuse, highlight);
   }
   colors[out] = cr; colors[out + 1] = cg; colors[out + 2] = cb;
 }
@@ -304,15 +294,6 @@ function shadowRay(k, ox, oy, oz, dx, dy, dz, reach, light) {
     if (transmission === 0) return 0;
   }
   return transmission;
-}
-
-/** Phong: specular·(R·V)^shininess, R the light (toward Lx, Ly, Lz) mirrored about the normal. */
-function specular(strength, shininess, Lx, Ly, Lz) {
-  if (!(strength > 0)) return 0;
-  const Nx = surface[N], Ny = surface[N + 1], Nz = surface[N + 2];
-  const twice = 2 * (Lx * Nx + Ly * Ny + Lz * Nz);
-  const rv = (Lx - twice * Nx) * surface[D] + (Ly - twice * Ny) * surface[D + 1] + (Lz - twice * Nz) * surface[D + 2];
-  return rv > 0 ? strength * Math.pow(rv, shininess) : 0;
 }
 
 /** Shape `i`'s smallest t > tMin along the ray, or Infinity: its class's `hit`, in numbers. */

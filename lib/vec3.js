@@ -4,15 +4,7 @@
  */
 import { finiteNumber, show } from './check.js';
 
-/**
- * A vector's fields. A class, not a `{ x, y, z }` literal, on purpose: V8
- * gives every literal with the same keys one shared hidden class, so a single
- * literal anywhere on the page holding a non-number in x, y or z (importing
- * p5 2.3 is enough) turns those fields into "any value", and then every
- * coordinate written allocates a boxed number: rendering on the page's main
- * thread ran 2.5–4× slower than in a worker. A class's instances share their
- * hidden class with no one else's objects.
- */
+/** A vector's fields: a class, not a `{ x, y, z }` literal, on purpose (docs/performance.md, "Vectors are a class"). */
 export class Vec3 {
   constructor(x = 0, y = 0, z = 0) {
     this.x = x; this.y = y; this.z = z;
@@ -95,8 +87,13 @@ export function normalize(out, a) {
 
 /** out = d − 2(d·n)n: the mirror direction of d about the unit normal n. */
 export function reflect(out, d, n) {
-  const k = 2 * dot(d, n);
-  out.x = d.x - k * n.x; out.y = d.y - k * n.y; out.z = d.z - k * n.z;
+  return reflectXYZ(out, d.x, d.y, d.z, n.x, n.y, n.z);
+}
+
+/** reflect() in numbers: d = (dx, dy, dz), n = (nx, ny, nz); lib/kernel.js and lib/optics.js call it. */
+export function reflectXYZ(out, dx, dy, dz, nx, ny, nz) {
+  const k = 2 * (dx * nx + dy * ny + dz * nz);
+  out.x = dx - k * nx; out.y = dy - k * ny; out.z = dz - k * nz;
   return out;
 }
 
