@@ -1,13 +1,13 @@
 /**
  * render()'s fast path: the story of trace.js — nearest hit, light the point,
- * mirror and glass — step for step and in the same floating-point order, but
+ * mirror and glass — step for step, by the same formulas (lib/optics.js), but
  * with the scene packed into typed arrays and each ray's numbers in local
  * variables, so no step reads through a chain of objects.
  *
  * Same bytes as trace.js, proven by tests/unit/same-bytes.test.js over random
  * scenes (spheres, planes, boxes, lights, mirrors, glass). trace.js stays the
- * lesson's readable version and the one the inspector runs; a change to the
- * lighting goes into both. Full shading of the class scene is 1.17–1.2× faster
+ * lesson's readable version and the one the inspector runs; a formula changed
+ * in lib/optics.js changes both. Full shading of the class scene is 1.17–1.2× faster
  * this way (docs/performance.md). A shape with a `hit` or `normalAt` of its
  * own (a subclass, or a method replaced), or a shape added twice, is not
  * packed: `packScene` says no and render() uses trace.js.
@@ -29,13 +29,7 @@ const EMISSION = 3, REFLECTION = 6, TRANSPARENCY = 7, IOR = 8, SPECULAR = 9, SHI
 const LIGHT = 7;
 const LIGHT_SHAPE = 6;
 
-/**
- * Every number the kernel writes per pixel lives in one buffer of its own,
- * `GUARD` empty bytes from either end. Workers are threads of one process,
- * and in Chromium two workers' small buffers could lie side by side on one
- * cache line: each write by one then stalled the other (false sharing), and
- * two workers ran at half speed (docs/performance.md).
- */
+/** Every number the kernel writes per pixel lives in one buffer of its own, `GUARD` empty bytes from either end (false sharing: docs/performance.md, "Notes on V8"). */
 const GUARD = 256; // more than a cache line and the neighbour the CPU fetches with it
 const scratch = new ArrayBuffer(4096);
 let scratchUsed = GUARD;
@@ -164,9 +158,7 @@ export function packScene(scene) {
  * The colour of the primary ray from `origin` along `direction` (Vec3s),
  * tested first against the shapes `candidates[from … to)` (indices, in scene
  * order): trace(scene, ray, color, undefined, 0, those shapes) in numbers.
- * The direction comes as its Vec3, not as three numbers: V8 boxes each double
- * passed to a call it did not inline (one per number per pixel), and whether it
- * inlines this one depends on how the code was bundled (docs/performance.md).
+ * The direction comes as its Vec3, not as three numbers (docs/performance.md, "Notes on V8").
  * @returns {Float64Array} [r, g, b] in its first three entries (reused: read it before the next call)
  */
 export function tracePrimary(k, origin, direction, candidates, from, to) {
@@ -179,8 +171,8 @@ export function tracePrimary(k, origin, direction, candidates, from, to) {
 /**
  * The hit being shaded, as trace.js's frame holds it: the point P, the unit
  * normal N facing the ray, the ray's direction, and 1 when it meets the
- * surface from inside. Numbers pass between the steps here, not as arguments:
- * a double handed to a function the engine did not inline is boxed, per call.
+ * surface from inside. Numbers pass between the steps here, not as arguments
+ * (docs/performance.md, "Notes on V8").
  */
 const surface = scratchNumbers(10);
 const P = 0, N = 3, D = 6, INSIDE = 9;

@@ -6,8 +6,8 @@
  * two cannot tell the story apart.
  *
  * Each takes numbers and returns a number, or writes a direction into a
- * caller's `out` (a Vec3): nothing allocates, and small enough that V8
- * inlines them, so no number is boxed on the way (docs/performance.md).
+ * caller's `out` (a Vec3): nothing allocates, and each is small enough that
+ * V8 inlines it, so no number is boxed on the way (docs/performance.md, "Notes on V8").
  */
 
 /** Lambert: how squarely light from the unit direction L falls on the unit normal N, cos θ = N·L (≤ 0: from behind). */

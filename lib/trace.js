@@ -61,9 +61,8 @@ export function nearestHit(objects, ray, hit, tMin = EPSILON) {
 
 /**
  * The hit point P = Ro + Rd·t and its unit normal, turned to face the ray;
- * `frame.inside` when the ray meets the surface from inside. (Numbers stay
- * in the frame rather than passing between functions: a bare number handed
- * to a function the engine did not inline costs an allocation, once per pixel.)
+ * `frame.inside` when the ray meets the surface from inside. (Numbers stay in
+ * the frame rather than passing between steps: docs/performance.md, "Notes on V8".)
  */
 function surfaceAt(frame) {
   const o = frame.ray.origin, d = frame.ray.direction, t = frame.hit.t, P = frame.point, N = frame.normal;
