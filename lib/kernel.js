@@ -15,7 +15,7 @@
 import { Sphere, sphereHit } from './shapes/sphere.js';
 import { Plane, planeHit } from './shapes/plane.js';
 import { Box } from './shapes/box.js';
-import { Vec3, reflectXYZ } from './vec3.js';
+import { reflectInto } from './vec3.js';
 import { lambert, specular, lightShare, refract, fresnel as fresnelShare, mix } from './optics.js';
 
 const SPHERE = 0, PLANE = 1, BOX = 2;
@@ -217,28 +217,22 @@ function mirrorAndGlass(k, object, depth, out) {
   const m = object * MATERIAL, reflection = k.materials[m + REFLECTION], transparency = k.materials[m + TRANSPARENCY], ior = k.materials[m + IOR];
   const cosi = -(dx * Nx + dy * Ny + dz * Nz);
   const eta = surface[INSIDE] === 1 ? ior : 1 / ior;
-  const refracts = transparency > 0 && refract(bent, dx, dy, dz, Nx, Ny, Nz, cosi, eta); // Snell
-  const fresnel = fresnelShare(transparency, refracts, cosi, ior), Tx = bent.x, Ty = bent.y, Tz = bent.z;
-
   const next = (depth + 1) * 6, bias = k.bias, mirrored = next, through = next + 3;
-  reflectXYZ(bounce, dx, dy, dz, Nx, Ny, Nz);
-  rays[next] = Px + Nx * bias; rays[next + 1] = Py + Ny * bias; rays[next + 2] = Pz + Nz * bias;
-  rays[next + 3] = bounce.x; rays[next + 4] = bounce.y; rays[next + 5] = bounce.z;
-  traceRay(k, depth + 1, mirrored, k.all, 0, k.count);
-  if (refracts) {
+  const refracts = transparency > 0 && refract(rays, next + 3, dx, dy, dz, Nx, Ny, Nz, cosi, eta); // the glass ray's direction
+  const fresnel = fresnelShare(transparency, refracts, cosi, ior);
+  if (refracts) { // traced first, where refract wrote it (the two rays' colours do not depend on their order)
     rays[next] = Px + Nx * -bias; rays[next + 1] = Py + Ny * -bias; rays[next + 2] = Pz + Nz * -bias; // start just inside
-    rays[next + 3] = Tx; rays[next + 4] = Ty; rays[next + 5] = Tz;
     traceRay(k, depth + 1, through, k.all, 0, k.count);
   } else {
     colors[through] = 0; colors[through + 1] = 0; colors[through + 2] = 0;
   }
+  rays[next] = Px + Nx * bias; rays[next + 1] = Py + Ny * bias; rays[next + 2] = Pz + Nz * bias;
+  reflectInto(rays, next + 3, dx, dy, dz, Nx, Ny, Nz); // the mirror ray's direction
+  traceRay(k, depth + 1, mirrored, k.all, 0, k.count);
   for (let c = 0; c < 3; c++) {
     colors[out + c] = mix(colors[out + c], colors[mirrored + c], colors[through + c], k.materials[m + c], reflection, transparency, fresnel);
   }
 }
-
-/** The mirror ray's and the glass ray's directions, as optics.js writes them (read at once: the next bounce reuses them). */
-const bounce = new Vec3(), bent = new Vec3();
 
 /**
  * lightPoint: emission + ambient + each light the point can see, into

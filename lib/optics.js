@@ -6,8 +6,9 @@
  * two cannot tell the story apart.
  *
  * Each takes numbers and returns a number, or writes a direction into a
- * caller's `out` (a Vec3): nothing allocates, and each is small enough that
- * V8 inlines it, so no number is boxed on the way (docs/performance.md, "Notes on V8").
+ * caller's Float64Array (as vec3.js's reflectInto does for the mirror ray):
+ * nothing allocates, and each is small enough that V8 inlines it, so no
+ * number is boxed on the way (docs/performance.md, "Notes on V8").
  */
 
 /** Lambert: how squarely light from the unit direction L falls on the unit normal N, cos θ = N·L (≤ 0: from behind). */
@@ -39,15 +40,17 @@ export function lightShare(light, surface, diffuse, highlight) {
 }
 
 /**
- * Snell's law: the refracted unit direction of D (unit) through the unit
- * normal N facing it, into `out`; cosi = −D·N, eta the ratio of the indices
- * (outside over inside). False on total internal reflection (a NaN is not).
+ * Snell's law: the refracted unit direction T = eta·D + s·N of the unit
+ * direction D through the unit normal N that faces it, into `out[at …]` (a
+ * Float64Array: the kernel's ray, or trace.js's frame); cosi = −D·N, eta the
+ * ratio of the indices (the side it comes from over the side it enters).
+ * False on total internal reflection, where nothing goes through (a NaN is not).
  */
-export function refract(out, Dx, Dy, Dz, Nx, Ny, Nz, cosi, eta) {
+export function refract(out, at, Dx, Dy, Dz, Nx, Ny, Nz, cosi, eta) {
   const k = 1 - eta * eta * (1 - cosi * cosi);
   if (k < 0) return false;
   const s = eta * cosi - Math.sqrt(k);
-  out.x = eta * Dx + s * Nx; out.y = eta * Dy + s * Ny; out.z = eta * Dz + s * Nz;
+  out[at] = eta * Dx + s * Nx; out[at + 1] = eta * Dy + s * Ny; out[at + 2] = eta * Dz + s * Nz;
   return true;
 }
 

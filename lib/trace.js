@@ -12,7 +12,7 @@
  * glass mix) live in lib/optics.js, which render()'s fast path, lib/kernel.js,
  * calls too (tests/unit/same-bytes.test.js proves the two give the same bytes).
  */
-import { Vec3, dot, copy, scaleAndAdd, reflect } from './vec3.js';
+import { Vec3, dot, copy, set, scaleAndAdd, reflect } from './vec3.js';
 import { lambert, specular as phong, lightShare, refract, fresnel as fresnelShare, mix } from './optics.js';
 import { Ray } from './ray.js';
 import { EPSILON, DEG_PER_RAD } from './constants.js';
@@ -145,7 +145,7 @@ function mirrorAndGlass(frame, color, record) {
   const { reflection, transparency, ior, color: surface } = frame.hit.object.material;
   const d = ray.direction, n = frame.normal, cosi = -dot(d, n);
   const eta = frame.inside ? ior : 1 / ior;
-  const refracts = transparency > 0 && refract(refracted.direction, d.x, d.y, d.z, n.x, n.y, n.z, cosi, eta); // Snell
+  const refracts = transparency > 0 && refract(frame.bent, 0, d.x, d.y, d.z, n.x, n.y, n.z, cosi, eta); // Snell
   const fresnel = fresnelShare(transparency, refracts, cosi, ior);
 
   const mirrored = frame.reflectedColor, through = frame.refractedColor, depth = frame.depth + 1;
@@ -153,6 +153,7 @@ function mirrorAndGlass(frame, color, record) {
   scaleAndAdd(reflected.origin, frame.point, frame.normal, scene.bias);
   trace(scene, reflected, mirrored, record && (record.reflection = {}), depth);
   if (refracts) {
+    set(refracted.direction, frame.bent[0], frame.bent[1], frame.bent[2]);
     scaleAndAdd(refracted.origin, frame.point, frame.normal, -scene.bias); // start just inside
     trace(scene, refracted, through, record && (record.refraction = {}), depth);
   } else setColor(through, 0, 0, 0);
@@ -182,7 +183,7 @@ function newFrame(depth) {
     frames.push({
       depth: frames.length, scene: null, ray: null,
       hit: { object: null, t: Infinity }, point: new Vec3(), normal: new Vec3(), inside: false,
-      toLight: new Vec3(), shadowRay: new Ray(), reflected: new Ray(), refracted: new Ray(),
+      toLight: new Vec3(), shadowRay: new Ray(), reflected: new Ray(), refracted: new Ray(), bent: new Float64Array(3),
       reflectedColor: [0.5, 0.5, 0.5], refractedColor: [0.5, 0.5, 0.5],
     });
   }
