@@ -286,7 +286,8 @@ function paramsTable(item, known) {
   const rows = params.map((p) => `<tr><td><code>${esc(shown(p.name))}</code>${p.optional ? '' : ' <span class="required">required</span>'}</td>` +
     `<td><code>${typeHTML(p.type || 'any', known)}</code></td><td>${p.defaultValue === null ? '' : `<code>${esc(p.defaultValue)}</code>`}</td>` +
     `<td>${inlineCode(esc(p.text))}</td></tr>`).join('\n');
-  return `<table class="params"><thead><tr><th>${item.kind === 'p5 method' ? 'option' : 'parameter'}</th><th>type</th><th>default</th><th></th></tr></thead>\n<tbody>${rows}</tbody></table>`;
+  // In its own scroll box (focusable, named) on a narrow screen: the page itself never scrolls sideways.
+  return `<div class="params-wrap" tabindex="0" role="region" aria-label="${esc(`${item.name}: ${item.kind === 'p5 method' ? 'options' : 'parameters'}`)}"><table class="params"><thead><tr><th>${item.kind === 'p5 method' ? 'option' : 'parameter'}</th><th>type</th><th>default</th><th></th></tr></thead>\n<tbody>${rows}</tbody></table></div>`;
 }
 
 function itemHTML(item, known, where) {
@@ -344,6 +345,9 @@ export function apiReferenceHTML(root = process.cwd()) {
   pre:focus-visible { outline: 3px solid #1f5fbf; outline-offset: 2px; }
   .example { border-left: 4px solid #d6336c; }
   table.params { border-collapse: collapse; width: 100%; font-size: 0.93rem; }
+  .params-wrap { overflow-x: auto; }
+  .params-wrap:focus-visible { outline: 3px solid #1f5fbf; outline-offset: 2px; }
+  p code, .params code, .members code { overflow-wrap: anywhere; } /* long names, types and calls wrap on a phone */
   .params th, .params td { text-align: left; vertical-align: top; padding: 0.25rem 0.5rem; border-bottom: 1px solid #e3e7ec; }
   .required { font-size: 0.78rem; color: #b01f55; } /* 6.4:1 on the page's background (#d6336c was 4.45:1) */
   .members dt { margin-top: 0.3rem; }

@@ -18,6 +18,7 @@ import { registerView } from './page-state.js';
 import { useStyle, element, resolveParent, sketchNode } from './dom.js';
 import { RAY_COLORS } from './scene-view.js';
 import { arrowMove } from './tracer-input.js';
+import { cappedScale, roomFor, watchRoom } from './tracer-layout.js';
 import { describeScene } from '../describe.js';
 
 const OPTIONS = ['scene', 'camera', 'seed', 'eyeRadius', 'photons', 'samplePaths', 'scale', 'parent', 'label', 'budgetMs', 'link', 'sceneView'];
@@ -31,7 +32,7 @@ const OPTIONS = ['scene', 'camera', 'seed', 'eyeRadius', 'photons', 'samplePaths
  * @param {number} [options.eyeRadius=2] the pupil's radius in scene units
  * @param {number} [options.photons=1000000] photons per run (the "more" button sends as many again)
  * @param {number} [options.samplePaths=12] photon paths handed to the 3D view
- * @param {number} [options.scale=10] on-screen pixels per traced pixel
+ * @param {number} [options.scale=10] on-screen pixels per traced pixel with 16 px text (grown on a big screen, shrunk to a narrow one, as a tracer view's)
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where to put it; default the sketch's node
  * @param {string} [options.label] a caption above the picture
  * @param {number} [options.budgetMs=12] photon time per animation frame
@@ -46,7 +47,7 @@ export function createPhotonView(p, options) {
 let ids = 0;
 
 export class PhotonView {
-  #tracer; #target; #ctx; #image; #page; #raf = 0; #destroyed = false;
+  #tracer; #target; #ctx; #image; #page; #raf = 0; #destroyed = false; #unwatchRoom;
 
   constructor(p, options = {}) {
     const { scene, camera, seed = 1, eyeRadius = 2, photons = 1_000_000, samplePaths = 12, scale = 10, parent, label = 'From the light: photons', budgetMs = 12, link = null, sceneView = null } = checkOptions(options, OPTIONS, 'photon view');
@@ -84,6 +85,7 @@ export class PhotonView {
     if (this.#destroyed) return;
     this.#destroyed = true;
     cancelAnimationFrame(this.#raf);
+    this.#unwatchRoom();
     this.#page.unregister();
     this.figure.remove();
   }
@@ -120,7 +122,7 @@ export class PhotonView {
       role: 'img', tabindex: '0', 'aria-describedby': described.id,
       'aria-label': 'The picture made by the photons that reached the eye: click a pixel, or use the arrow keys, to select it in the other picture',
     });
-    Object.assign(c.style, { width: `${W * scale}px`, height: `${H * scale}px`, imageRendering: 'pixelated', display: 'block', background: '#000', cursor: 'crosshair' });
+    Object.assign(c.style, { imageRendering: 'pixelated', display: 'block', background: '#000', cursor: 'crosshair' });
     this.#ctx = c.getContext('2d');
     this.#image = this.#ctx.createImageData(W, H);
     this.countText = element('p', { class: 'rt-photon-count', 'data-photon-count': '' });
@@ -128,6 +130,12 @@ export class PhotonView {
     more.addEventListener('click', () => this.more());
     this.figure = element('figure', { class: 'rt-view rt-photon-view' }, label ? element('figcaption', { class: 'rt-label' }, label) : null, c, this.countText, more, described);
     resolveParent(parent, sketchNode(p)).append(this.figure);
+    const size = () => { // the room it has, as a tracer view's picture (tracer-layout.js)
+      const s = cappedScale(scale, W, H, roomFor(this.figure));
+      Object.assign(c.style, { width: `${W * s}px`, height: `${H * s}px` });
+    };
+    size();
+    this.#unwatchRoom = watchRoom(this.figure, size);
     c.addEventListener('pointerdown', (e) => {
       if (!this.link) return;
       const box = c.getBoundingClientRect();

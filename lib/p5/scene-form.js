@@ -13,19 +13,20 @@
  */
 import { colorToHex } from '../color.js';
 import { readColor, colorText } from '../values.js';
-import { tableColumns, fieldText } from '../scene-fields.js';
+import { tableColumns, fieldText, formTypes } from '../scene-fields.js';
+import { shapeClass } from '../shapes/index.js';
 import { SceneEdits } from '../scene-edits.js';
 import { show, checkOptions } from '../check.js';
 import { useStyle, element } from './dom.js';
 import { valueBox } from './value-box.js';
 
-/** What each table is called, and what a new row holds. */
-const TABLES = [
-  { type: 'sphere', title: 'Spheres', add: 'Add sphere', what: 'Sphere' },
-  { type: 'pointLight', title: 'Point lights', add: 'Add point light', what: 'Point light' },
-  { type: 'plane', title: 'Planes', what: 'Plane' },
-  { type: 'box', title: 'Boxes', what: 'Box' },
-];
+/** The point light's table (each shape's is its class's `form`). */
+const POINT_LIGHTS = { title: 'Point lights', what: 'Point light' };
+
+/** Each table, in order: its type, what it is called and what a row is called. */
+function tables() {
+  return formTypes().map((type) => ({ type, ...(type === 'pointLight' ? POINT_LIGHTS : shapeClass(type).form) }));
+}
 
 /* ---------------- the scene form ---------------- */
 
@@ -88,8 +89,7 @@ export class SceneForm {
     background.element.querySelector('.sf-label').classList.remove('sf-hidden-label'); // no column head above this one
     const top = element('div', { class: 'sf-top' }, background.element, ...this.#addButtons());
     this.#tables.clear();
-    const tables = TABLES.map((t) => this.#table(t)).filter(Boolean);
-    this.element.replaceChildren(top, ...tables);
+    this.element.replaceChildren(top, ...tables().map((t) => this.#table(t)).filter(Boolean));
   }
 
   /** Adds an object's JSON at the end: one new row (or one more in "not shown"); the other rows stay. */
@@ -143,9 +143,10 @@ export class SceneForm {
     more.addEventListener('click', () => showUpTo(body.children.length + FORM_ROWS));
     showUpTo(Math.max(FORM_ROWS, this.#shown.get(type) ?? 0));
     this.#tables.set(type, { rows, body, showUpTo });
+    // The table scrolls in its box on a narrow screen: focusable and named, so a keyboard scrolls it too.
     return element('section', { class: 'sf-section', 'data-table': type },
       element('h3', {}, title),
-      element('div', { class: 'sf-table-wrap' }, element('table', { class: 'sf-table' }, element('thead', {}, head), body)), note);
+      element('div', { class: 'sf-table-wrap', tabindex: '0', role: 'region', 'aria-label': `${title} table` }, element('table', { class: 'sf-table' }, element('thead', {}, head), body)), note);
   }
 
   /** What a row is called in messages: "Sphere 3 (pink)". */

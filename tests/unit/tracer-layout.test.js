@@ -1,7 +1,7 @@
 // The tracer view's size on screen: screen pixels per traced pixel for a
 // numeric scale and for 'auto', from the page's measures.
 import { describe, it, expect } from 'vitest';
-import { checkScale, fixedScale, fitScale } from '../../lib/p5/tracer-layout.js';
+import { cappedScale, checkScale, fixedScale, fitScale } from '../../lib/p5/tracer-layout.js';
 
 /** The test pages' room: a 1280 × 900 window, 16 px text, a wide parent. */
 const ROOM = { rem: 16, parentWidth: 1200, windowWidth: 1280, windowHeight: 900 };
@@ -70,5 +70,36 @@ describe('checkScale', () => {
       expect(() => checkScale(bad)).toThrow(RangeError);
       expect(() => checkScale(bad)).toThrow(/scale must be 'auto' or a number greater than 0/);
     }
+  });
+});
+
+describe('cappedScale', () => {
+  const usual = { rem: 16, width: 1200, windowWidth: 1280, windowHeight: 900 };
+  it('keeps a numeric scale as given with 16 px text and room for it', () => {
+    expect(cappedScale(10, 32, 24, usual)).toBe(10);
+    expect(cappedScale(3, 160, 120, usual)).toBe(3);
+  });
+
+  it('grows on a big screen until the picture takes 35% of the width or half the height', () => {
+    const big = { rem: 21.12, width: 1200, windowWidth: 1920, windowHeight: 1080 };
+    expect(cappedScale(10, 32, 24, big)).toBe(21);  // 672 px: 35% of 1920
+    expect(cappedScale(3, 160, 120, big)).toBe(5);  // 800 × 600
+    expect(cappedScale(6, 64, 48, big)).toBe(11);   // 704 px
+    expect(cappedScale(2, 32, 24, big)).toBe(21);   // a small scale grows as much
+    expect(cappedScale(30, 32, 24, big)).toBe(37);  // already bigger (40 with this text): within the room, 1200 / 32
+  });
+
+  it('grows no further than its room and 70% of the window height', () => {
+    const big = { rem: 21.12, width: 500, windowWidth: 1920, windowHeight: 1080 };
+    expect(cappedScale(10, 32, 24, big)).toBe(15);  // 480 px of 500
+    expect(cappedScale(1, 32, 240, { ...big, width: 1200 })).toBe(3); // 720 px tall of 756
+  });
+
+  it('shrinks to the room on a phone: whole numbers from 2 up, else the picture fills the room', () => {
+    const phone = { rem: 16, width: 288, windowWidth: 320, windowHeight: 640 };
+    expect(cappedScale(16, 32, 24, phone)).toBe(9);
+    expect(cappedScale(6, 64, 48, phone)).toBe(4);
+    expect(cappedScale(3, 160, 120, phone)).toBeCloseTo(1.8);
+    expect(cappedScale(1, 640, 480, phone)).toBeCloseTo(0.45);
   });
 });
