@@ -1,13 +1,13 @@
 /**
  * render()'s fast path: the story of trace.js — nearest hit, light the point,
- * mirror and glass — step for step and in the same floating-point order, but
+ * mirror and glass — step for step, by the same formulas (lib/optics.js), but
  * with the scene packed into typed arrays and each ray's numbers in local
  * variables, so no step reads through a chain of objects.
  *
  * Same bytes as trace.js, proven by tests/unit/same-bytes.test.js over random
  * scenes (spheres, planes, boxes, lights, mirrors, glass). trace.js stays the
- * lesson's readable version and the one the inspector runs; a change to the
- * lighting goes into both. Full shading of the class scene is 1.17–1.2× faster
+ * lesson's readable version and the one the inspector runs; a formula changed
+ * in lib/optics.js changes both. Full shading of the class scene is 1.17–1.2× faster
  * this way (docs/performance.md). A shape with a `hit` or `normalAt` of its
  * own (a subclass, or a method replaced), a shape whose class has no packed
  * form, or a shape added twice, is not packed: `packScene` says no and
@@ -16,6 +16,8 @@
  */
 import { plainClassOf, ballOf } from './shapes/index.js';
 import { SHAPE, KIND, P, N, scratchNumbers } from './shapes/packed.js';
+import { reflectInto } from './vec3.js';
+import { lambert, specular, lightShare, refract, fresnel as fresnelShare, mix } from './optics.js';
 
 /** Numbers per material, and where each lies among them: r g b, emission r g b, reflection, transparency, ior, specular, shininess. */
 const MATERIAL = 11;
@@ -144,9 +146,7 @@ export function packScene(scene) {
  * The colour of the primary ray from `origin` along `direction` (Vec3s),
  * tested first against the shapes `candidates[from … to)` (indices, in scene
  * order): trace(scene, ray, color, undefined, 0, those shapes) in numbers.
- * The direction comes as its Vec3, not as three numbers: V8 boxes each double
- * passed to a call it did not inline (one per number per pixel), and whether it
- * inlines this one depends on how the code was bundled (docs/performance.md).
+ * The direction comes as its Vec3, not as three numbers (docs/performance.md, "Notes on V8").
  * @returns {Float64Array} [r, g, b] in its first three entries (reused: read it before the next call)
  */
 export function tracePrimary(k, origin, direction, candidates, from, to) {
@@ -159,8 +159,8 @@ export function tracePrimary(k, origin, direction, candidates, from, to) {
 /**
  * The hit being shaded, as trace.js's frame holds it: the point P, the unit
  * normal N facing the ray, the ray's direction, and 1 when it meets the
- * surface from inside. Numbers pass between the steps here, not as arguments:
- * a double handed to a function the engine did not inline is boxed, per call.
+ * surface from inside. Numbers pass between the steps here, not as arguments
+ * (docs/performance.md, "Notes on V8").
  */
 const surface = scratchNumbers(10);
 const D = 6, INSIDE = 9; // P and N: lib/shapes/packed.js
@@ -205,41 +205,21 @@ function mirrorAndGlass(k, object, depth, out) {
   const m = object * MATERIAL, reflection = k.materials[m + REFLECTION], transparency = k.materials[m + TRANSPARENCY], ior = k.materials[m + IOR];
   const cosi = -(dx * Nx + dy * Ny + dz * Nz);
   const eta = surface[INSIDE] === 1 ? ior : 1 / ior;
-  let refracts = false, Tx = 0, Ty = 0, Tz = 0;
-  if (transparency > 0) { // refractDirection: Snell's law, none on total internal reflection
-    const kk = 1 - eta * eta * (1 - cosi * cosi);
-    if (!(kk < 0)) { // (as refractDirection: a NaN is not total internal reflection)
-      const s = eta * cosi - Math.sqrt(kk);
-      Tx = eta * dx + s * Nx; Ty = eta * dy + s * Ny; Tz = eta * dz + s * Nz;
-      refracts = true;
-    }
-  }
-  const fresnel = transparency > 0 ? (refracts ? schlick(cosi, ior) : 1) : 0;
-
   const next = (depth + 1) * 6, bias = k.bias, mirrored = next, through = next + 3;
-  const twice = 2 * (dx * Nx + dy * Ny + dz * Nz); // reflect: d − 2(d·n)n
-  rays[next] = Px + Nx * bias; rays[next + 1] = Py + Ny * bias; rays[next + 2] = Pz + Nz * bias;
-  rays[next + 3] = dx - twice * Nx; rays[next + 4] = dy - twice * Ny; rays[next + 5] = dz - twice * Nz;
-  traceRay(k, depth + 1, mirrored, k.all, 0, k.count);
-  if (refracts) {
+  const refracts = transparency > 0 && refract(rays, next + 3, dx, dy, dz, Nx, Ny, Nz, cosi, eta); // the glass ray's direction
+  const fresnel = fresnelShare(transparency, refracts, cosi, ior);
+  if (refracts) { // traced first, where refract wrote it (the two rays' colours do not depend on their order)
     rays[next] = Px + Nx * -bias; rays[next + 1] = Py + Ny * -bias; rays[next + 2] = Pz + Nz * -bias; // start just inside
-    rays[next + 3] = Tx; rays[next + 4] = Ty; rays[next + 5] = Tz;
     traceRay(k, depth + 1, through, k.all, 0, k.count);
   } else {
     colors[through] = 0; colors[through + 1] = 0; colors[through + 2] = 0;
   }
+  rays[next] = Px + Nx * bias; rays[next + 1] = Py + Ny * bias; rays[next + 2] = Pz + Nz * bias;
+  reflectInto(rays, next + 3, dx, dy, dz, Nx, Ny, Nz); // the mirror ray's direction
+  traceRay(k, depth + 1, mirrored, k.all, 0, k.count);
   for (let c = 0; c < 3; c++) {
-    const color = k.materials[m + c];
-    const opaque = (1 - reflection) * colors[out + c] + reflection * color * colors[mirrored + c];
-    colors[out + c] = (1 - transparency) * opaque + transparency * (fresnel * colors[mirrored + c] + (1 - fresnel) * color * colors[through + c]);
+    colors[out + c] = mix(colors[out + c], colors[mirrored + c], colors[through + c], k.materials[m + c], reflection, transparency, fresnel);
   }
-}
-
-/** Schlick's approximation, as trace.js computes it. */
-function schlick(cosi, ior) {
-  const r0 = ((1 - ior) / (1 + ior)) ** 2;
-  const k = 1 - cosi, k2 = k * k;
-  return r0 + (1 - r0) * k2 * k2 * k;
 }
 
 /**
@@ -259,18 +239,20 @@ function lightPoint(k, object, out) {
     const x = lights[l] - Px, y = lights[l + 1] - Py, z = lights[l + 2] - Pz;
     const distance = Math.sqrt(x * x + y * y + z * z), inverse = 1 / distance;
     const Lx = x * inverse, Ly = y * inverse, Lz = z * inverse;
-    const cos = Nx * Lx + Ny * Ly + Nz * Lz; // Lambert
+    const cos = lambert(Nx, Ny, Nz, Lx, Ly, Lz);
     if (cos <= 0) continue;
     const transmission = k.shadows
       ? shadowRay(k, Px + Nx * bias, Py + Ny * bias, Pz + Nz * bias, Lx, Ly, Lz, distance - bias, l / LIGHT)
       : 1;
     if (transmission === 0) continue;
     const diffuse = cos * transmission;
-    const highlight = k.specular ? specular(mat[m + SPECULAR], mat[m + SHININESS], Lx, Ly, Lz) * transmission : 0;
+    const highlight = k.specular
+      ? specular(mat[m + SPECULAR], mat[m + SHININESS], cos, Lx, Ly, Lz, Nx, Ny, Nz, surface[D], surface[D + 1], surface[D + 2]) * transmission
+      : 0;
     const glow = l + EMISSION; // the light's colour
-    cr += lights[glow] * (red * diffuse + highlight);
-    cg += lights[glow + 1] * (green * diffuse + highlight);
-    cb += lights[glow + 2] * (blue * diffuse + highlight);
+    cr += lightShare(lights[glow], red, diffuse, highlight);
+    cg += lightShare(lights[glow + 1], green, diffuse, highlight);
+    cb += lightShare(lights[glow + 2], blue, diffuse, highlight);
   }
   colors[out] = cr; colors[out + 1] = cg; colors[out + 2] = cb;
 }
@@ -286,15 +268,6 @@ function shadowRay(k, ox, oy, oz, dx, dy, dz, reach, light) {
     if (transmission === 0) return 0;
   }
   return transmission;
-}
-
-/** Phong: specular·(R·V)^shininess, R the light (toward Lx, Ly, Lz) mirrored about the normal. */
-function specular(strength, shininess, Lx, Ly, Lz) {
-  if (!(strength > 0)) return 0;
-  const Nx = surface[N], Ny = surface[N + 1], Nz = surface[N + 2];
-  const twice = 2 * (Lx * Nx + Ly * Ny + Lz * Nz);
-  const rv = (Lx - twice * Nx) * surface[D] + (Ly - twice * Ny) * surface[D + 1] + (Lz - twice * Nz) * surface[D + 2];
-  return rv > 0 ? strength * Math.pow(rv, shininess) : 0;
 }
 
 /** The smallest t > tMin along the ray of the shape at `shapes[at]`, or Infinity: its kind's `hit`, in numbers. */

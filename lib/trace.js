@@ -8,10 +8,12 @@
  * `trace` fills `color` ([r, g, b], 0–1 and above) and allocates nothing;
  * given a `steps` object it also records every intermediate value for the
  * inspector, computed apart from the colour by the same functions.
- * render() tells the same story faster through lib/kernel.js: a change to
- * it here goes there too (tests/unit/same-bytes.test.js says if they part).
+ * The formulas at its leaves (Lambert, Phong, Snell, Schlick, the mirror and
+ * glass mix) live in lib/optics.js, which render()'s fast path, lib/kernel.js,
+ * calls too (tests/unit/same-bytes.test.js proves the two give the same bytes).
  */
-import { Vec3, dot, copy, scaleAndAdd, reflect } from './vec3.js';
+import { Vec3, dot, copy, set, scaleAndAdd, reflect } from './vec3.js';
+import { lambert, specular as phong, lightShare, refract, fresnel as fresnelShare, mix } from './optics.js';
 import { Ray } from './ray.js';
 import { EPSILON, DEG_PER_RAD } from './constants.js';
 
@@ -59,9 +61,8 @@ export function nearestHit(objects, ray, hit, tMin = EPSILON) {
 
 /**
  * The hit point P = Ro + Rd·t and its unit normal, turned to face the ray;
- * `frame.inside` when the ray meets the surface from inside. (Numbers stay
- * in the frame rather than passing between functions: a bare number handed
- * to a function the engine did not inline costs an allocation, once per pixel.)
+ * `frame.inside` when the ray meets the surface from inside. (Numbers stay in
+ * the frame rather than passing between steps: docs/performance.md, "Notes on V8".)
  */
 function surfaceAt(frame) {
   const o = frame.ray.origin, d = frame.ray.direction, t = frame.hit.t, P = frame.point, N = frame.normal;
@@ -80,16 +81,16 @@ function lightPoint(frame, color) {
     const light = lights[i];
     if (light.object === object) continue; // a light does not light itself
     const distance = directionTo(frame.toLight, frame.point, light.position);
-    const cos = dot(frame.normal, frame.toLight); // Lambert: light falls at an angle
+    const cos = cosToLight(frame); // Lambert: light falls at an angle
     if (cos <= 0) continue; // the light is behind the surface
     const transmission = scene.shadows ? shadowRay(frame, distance, light.object) : 1;
     if (transmission === 0) continue; // in shadow
     const diffuse = cos * transmission;
-    const highlight = scene.specular ? specular(frame) * transmission : 0;
+    const highlight = scene.specular ? specular(frame, cos) * transmission : 0;
     const lightColor = light.emission;
-    color[0] += lightColor[0] * (surface[0] * diffuse + highlight);
-    color[1] += lightColor[1] * (surface[1] * diffuse + highlight);
-    color[2] += lightColor[2] * (surface[2] * diffuse + highlight);
+    color[0] += lightShare(lightColor[0], surface[0], diffuse, highlight);
+    color[1] += lightShare(lightColor[1], surface[1], diffuse, highlight);
+    color[2] += lightShare(lightColor[2], surface[2], diffuse, highlight);
   }
 }
 
@@ -122,62 +123,43 @@ function shadowRay(frame, distance, lightObject) {
   return transmission;
 }
 
-/** Phong highlight toward `frame.toLight`: specular·(R·V)^shininess, R the light mirrored about the normal. */
-function specular(frame) {
-  const material = frame.hit.object.material;
-  if (!(material.specular > 0)) return 0;
-  reflect(frame.mirror, frame.toLight, frame.normal);
-  const rv = dot(frame.mirror, frame.ray.direction); // mirror = −R, ray = −V: R·V
-  return rv > 0 ? material.specular * Math.pow(rv, material.shininess) : 0;
+/** Lambert's cos θ between the normal and `frame.toLight`. */
+function cosToLight(frame) {
+  const N = frame.normal, L = frame.toLight;
+  return lambert(N.x, N.y, N.z, L.x, L.y, L.z);
+}
+
+/** Phong highlight toward `frame.toLight` (`cos` the normal's cos to it): specular·(R·V)^shininess, R the light mirrored about the normal. */
+function specular(frame, cos) {
+  const { specular: strength, shininess } = frame.hit.object.material;
+  const L = frame.toLight, N = frame.normal, D = frame.ray.direction;
+  return phong(strength, shininess, cos, L.x, L.y, L.z, N.x, N.y, N.z, D.x, D.y, D.z);
 }
 
 /**
- * Mirror and glass: opaque = (1 − reflection)·local + reflection·colour·mirrored,
- * result = (1 − transparency)·opaque + transparency·(F·mirrored + (1 − F)·colour·refracted),
- * F the Fresnel share of light reflected (Schlick's approximation).
+ * Mirror and glass: what the mirror ray and the glass ray bring back, mixed
+ * into the local colour (`mix`), F the Fresnel share of light reflected.
  */
 function mirrorAndGlass(frame, color, record) {
   const { scene, ray, reflected, refracted } = frame;
   const { reflection, transparency, ior, color: surface } = frame.hit.object.material;
-  const cosi = -dot(ray.direction, frame.normal);
+  const d = ray.direction, n = frame.normal, cosi = -dot(d, n);
   const eta = frame.inside ? ior : 1 / ior;
-  const refracts = transparency > 0 && refractDirection(refracted.direction, ray.direction, frame.normal, cosi, eta);
-  const fresnel = transparency > 0 ? (refracts ? schlick(cosi, ior) : 1) : 0;
+  const refracts = transparency > 0 && refract(frame.bent, 0, d.x, d.y, d.z, n.x, n.y, n.z, cosi, eta); // Snell
+  const fresnel = fresnelShare(transparency, refracts, cosi, ior);
 
   const mirrored = frame.reflectedColor, through = frame.refractedColor, depth = frame.depth + 1;
-  reflect(reflected.direction, ray.direction, frame.normal);
+  reflect(reflected.direction, d, n);
   scaleAndAdd(reflected.origin, frame.point, frame.normal, scene.bias);
   trace(scene, reflected, mirrored, record && (record.reflection = {}), depth);
   if (refracts) {
+    set(refracted.direction, frame.bent[0], frame.bent[1], frame.bent[2]);
     scaleAndAdd(refracted.origin, frame.point, frame.normal, -scene.bias); // start just inside
     trace(scene, refracted, through, record && (record.refraction = {}), depth);
   } else setColor(through, 0, 0, 0);
 
-  for (let i = 0; i < 3; i++) {
-    const opaque = (1 - reflection) * color[i] + reflection * surface[i] * mirrored[i];
-    color[i] = (1 - transparency) * opaque + transparency * (fresnel * mirrored[i] + (1 - fresnel) * surface[i] * through[i]);
-  }
+  for (let i = 0; i < 3; i++) color[i] = mix(color[i], mirrored[i], through[i], surface[i], reflection, transparency, fresnel);
   if (record) record.fresnel = fresnel;
-}
-
-/** Snell's law: refracted unit direction into `out`; false on total internal reflection. */
-function refractDirection(out, d, n, cosi, eta) {
-  const k = 1 - eta * eta * (1 - cosi * cosi);
-  if (k < 0) return false;
-  const s = eta * cosi - Math.sqrt(k);
-  out.x = eta * d.x + s * n.x; out.y = eta * d.y + s * n.y; out.z = eta * d.z + s * n.z;
-  return true;
-}
-
-/**
- * Schlick's approximation of the Fresnel reflectance at cos θ for index `ior`:
- * r0 + (1 − r0)(1 − cos θ)⁵. The fifth power by multiplying: Math.pow took a
- * fifth of a full-shading frame (it differs in F's last bit, never in a byte seen).
- */
-function schlick(cosi, ior) {
-  const r0 = ((1 - ior) / (1 + ior)) ** 2;
-  const k = 1 - cosi, k2 = k * k;
-  return r0 + (1 - r0) * k2 * k2 * k;
 }
 
 function setColor(out, r, g, b) {
@@ -201,7 +183,7 @@ function newFrame(depth) {
     frames.push({
       depth: frames.length, scene: null, ray: null,
       hit: { object: null, t: Infinity }, point: new Vec3(), normal: new Vec3(), inside: false,
-      toLight: new Vec3(), mirror: new Vec3(), shadowRay: new Ray(), reflected: new Ray(), refracted: new Ray(),
+      toLight: new Vec3(), shadowRay: new Ray(), reflected: new Ray(), refracted: new Ray(), bent: new Float64Array(3),
       reflectedColor: [0.5, 0.5, 0.5], refractedColor: [0.5, 0.5, 0.5],
     });
   }
@@ -230,14 +212,14 @@ function recordHit(steps, frame) {
 function recordLight(frame, light) {
   const { scene } = frame, surface = frame.hit.object.material.color, lightColor = light.emission;
   const distance = directionTo(frame.toLight, frame.point, light.position);
-  const cos = dot(frame.normal, frame.toLight);
+  const cos = cosToLight(frame);
   const transmission = cos <= 0 ? 0 : scene.shadows ? shadowRay(frame, distance, light.object) : 1;
   const diffuse = transmission > 0 ? cos * transmission : 0;
-  const highlight = transmission > 0 && scene.specular ? specular(frame) * transmission : 0;
+  const highlight = transmission > 0 && scene.specular ? specular(frame, cos) * transmission : 0;
   return {
     light: light.source, position: copy(new Vec3(), light.position), distance,
     cos, facing: cos > 0, inShadow: cos > 0 && transmission < 1, transmission,
-    contribution: [0, 1, 2].map((i) => lightColor[i] * (surface[i] * diffuse + highlight)),
+    contribution: [0, 1, 2].map((i) => lightShare(lightColor[i], surface[i], diffuse, highlight)),
     specular: highlight,
   };
 }

@@ -4,15 +4,7 @@
  */
 import { finiteNumber, show } from './check.js';
 
-/**
- * A vector's fields. A class, not a `{ x, y, z }` literal, on purpose: V8
- * gives every literal with the same keys one shared hidden class, so a single
- * literal anywhere on the page holding a non-number in x, y or z (importing
- * p5 2.3 is enough) turns those fields into "any value", and then every
- * coordinate written allocates a boxed number: rendering on the page's main
- * thread ran 2.5–4× slower than in a worker. A class's instances share their
- * hidden class with no one else's objects.
- */
+/** A vector's fields: a class, not a `{ x, y, z }` literal, on purpose (docs/performance.md, "Vectors are a class"). */
 export class Vec3 {
   constructor(x = 0, y = 0, z = 0) {
     this.x = x; this.y = y; this.z = z;
@@ -93,11 +85,24 @@ export function normalize(out, a) {
   return out;
 }
 
+/** reflect()'s numbers on their way into a Vec3. */
+const mirror = new Float64Array(3);
+
 /** out = d − 2(d·n)n: the mirror direction of d about the unit normal n. */
 export function reflect(out, d, n) {
-  const k = 2 * dot(d, n);
-  out.x = d.x - k * n.x; out.y = d.y - k * n.y; out.z = d.z - k * n.z;
+  reflectInto(mirror, 0, d.x, d.y, d.z, n.x, n.y, n.z);
+  out.x = mirror[0]; out.y = mirror[1]; out.z = mirror[2];
   return out;
+}
+
+/**
+ * reflect() in numbers, into `out[at …]` (a Float64Array): d = (dx, dy, dz),
+ * n = (nx, ny, nz). lib/kernel.js writes its mirror ray's direction so, where
+ * the ray is traced from (a Vec3 written and read back cost about 1 %).
+ */
+export function reflectInto(out, at, dx, dy, dz, nx, ny, nz) {
+  const k = 2 * (dx * nx + dy * ny + dz * nz);
+  out[at] = dx - k * nx; out[at + 1] = dy - k * ny; out[at + 2] = dz - k * nz;
 }
 
 /**

@@ -17,11 +17,20 @@ import { Vec3 } from '../../lib/vec3.js';
 import { MODES, modeShader } from '../../lib/modes.js';
 import { ProgressiveRenderer, ORDERS } from '../../lib/progressive.js';
 
-const coord = (size) => fc.double({ min: -size, max: size, noNaN: true });
+/**
+ * A number in [min, max]: half the time fast-check's own double, drawn to the
+ * ends and to tiny values (0, 1, 5e-324), half the time spread evenly, so that
+ * colours and places in between, where a last bit shows in a byte, come up too.
+ */
+const between = (min, max) => fc.oneof(
+  fc.double({ min, max, noNaN: true }),
+  fc.noBias(fc.integer({ min: 0, max: 2 ** 53 - 1 })).map((n) => Math.min(max, min + (max - min) * (n / 2 ** 53))),
+);
+const coord = (size) => between(-size, size);
 const point = (size) => fc.tuple(coord(size), coord(size), coord(size));
 /** Anywhere near the eye, or ahead of it (down −z, where a camera that looks ahead sees it small). */
-const place = fc.oneof(point(15), fc.tuple(coord(10), coord(8), fc.double({ min: -40, max: -3, noNaN: true })));
-const unit = fc.double({ min: 0, max: 1, noNaN: true });
+const place = fc.oneof(point(15), fc.tuple(coord(10), coord(8), between(-40, -3)));
+const unit = between(0, 1);
 /** Zero half the time: most surfaces are plain, some mirror, some glass, some shine. */
 const sometimes = (value) => fc.oneof(fc.constant(0), value);
 const color = fc.tuple(unit, unit, unit);
@@ -31,25 +40,25 @@ const material = fc.record({
   emission: fc.oneof({ weight: 3, arbitrary: fc.constant(0) }, { weight: 1, arbitrary: fc.tuple(unit, unit, unit).map((c) => c.map((v) => 2 * v)) }),
   reflection: sometimes(unit),
   transparency: sometimes(unit),
-  ior: fc.double({ min: 1, max: 2.5, noNaN: true }),
+  ior: between(1, 2.5),
   specular: sometimes(unit),
-  shininess: fc.double({ min: 1, max: 200, noNaN: true }),
+  shininess: between(1, 200),
 });
 
 const sphere = fc.tuple(place, fc.oneof(
-  { weight: 4, arbitrary: fc.double({ min: 0.05, max: 1.5, noNaN: true }) }, // small: many tiles leave it out
-  { weight: 2, arbitrary: fc.double({ min: 0.05, max: 8, noNaN: true }) },
-  { weight: 1, arbitrary: fc.double({ min: 100, max: 10000, noNaN: true }) }, // a ground or a wall
+  { weight: 4, arbitrary: between(0.05, 1.5) }, // small: many tiles leave it out
+  { weight: 2, arbitrary: between(0.05, 8) },
+  { weight: 1, arbitrary: between(100, 10000) }, // a ground or a wall
 ), material).map(([center, radius, m]) => new Sphere(center, radius, m));
 
 const direction = point(1).filter(([x, y, z]) => x * x + y * y + z * z > 0.01);
 const plane = fc.tuple(point(10), direction, material).map(([p, normal, m]) => new Plane(p, normal, m));
 
-const size = fc.double({ min: 0.1, max: 4, noNaN: true });
+const size = between(0.1, 4);
 const box = fc.tuple(place, size, size, size, material)
   .map(([[x, y, z], dx, dy, dz, m]) => new Box([x, y, z], [x + dx, y + dy, z + dz], m));
 
-const light = fc.tuple(point(20), color, fc.double({ min: 0, max: 2, noNaN: true }))
+const light = fc.tuple(point(20), color, between(0, 2))
   .map(([position, c, intensity]) => new PointLight(position, c, intensity));
 
 /** A scene's switches, and its items drawn from `item`. */
@@ -74,9 +83,9 @@ const sphereScene = sceneOf(fc.oneof({ weight: 3, arbitrary: sphere }, { weight:
 const camera = fc.record({
   width: fc.integer({ min: 1, max: 48 }),
   height: fc.integer({ min: 1, max: 36 }),
-  fov: fc.oneof(fc.double({ min: 10, max: 60, noNaN: true }), fc.double({ min: 10, max: 150, noNaN: true })),
-  yaw: fc.oneof(fc.double({ min: -30, max: 30, noNaN: true }), fc.double({ min: -180, max: 180, noNaN: true })),
-  pitch: fc.oneof(fc.double({ min: -20, max: 20, noNaN: true }), fc.double({ min: -89, max: 89, noNaN: true })),
+  fov: fc.oneof(between(10, 60), between(10, 150)),
+  yaw: fc.oneof(between(-30, 30), between(-180, 180)),
+  pitch: fc.oneof(between(-20, 20), between(-89, 89)),
   position: fc.oneof(point(2), point(6)),
 }).map((options) => new Camera(options));
 
@@ -103,9 +112,44 @@ function firstDifference(a, b) {
 
 const RUNS = { seed: 12, numRuns: 300 };
 
+/**
+ * This run's own seed: new cases every run, beside the fixed seeds' (the same
+ * cases every run). A failure names it; `SEED=… vitest run` replays it.
+ */
+const FRESH_SEED = freshSeed(process.env.SEED);
+
+function freshSeed(text) {
+  if (text === undefined) return Math.floor(Math.random() * 2 ** 31);
+  const seed = Number(text);
+  if (!Number.isSafeInteger(seed)) throw new TypeError(`SEED must be a whole number (a failure prints one), got ${JSON.stringify(text)}`);
+  return seed;
+}
+
+const TEST_FILE = 'tests/unit/same-bytes.test.js';
+
+/**
+ * fc.assert from the fixed seed in `params`, then from this run's fresh seed.
+ * A failure is reported as found, not shrunk (shrinking a scene of shapes can
+ * take minutes), unless SEED is given: a replay shrinks it to a small case.
+ */
+function assertBoth(property, params) {
+  fc.assert(property, { endOnFailure: process.env.SEED === undefined, ...params });
+  assertFresh(property, params);
+}
+
+/** fc.assert from this run's fresh seed; a failure says how to replay it. */
+function assertFresh(property, params) {
+  try {
+    fc.assert(property, { endOnFailure: process.env.SEED === undefined, ...params, seed: FRESH_SEED });
+  } catch (error) {
+    error.message = `with this run's fresh seed ${FRESH_SEED} (replay: SEED=${FRESH_SEED} node_modules/.bin/vitest run ${TEST_FILE})\n${error.message}`;
+    throw error;
+  }
+}
+
 describe('the same bytes as the plain reference, for random scenes and cameras (property)', () => {
   it('render(), and render() of a band of rows', () => {
-    fc.assert(fc.property(scene, camera, fc.nat(), fc.nat(), (s, cam, a, b) => {
+    assertBoth(fc.property(scene, camera, fc.nat(), fc.nat(), (s, cam, a, b) => {
       const reference = pixelByPixel(s, cam);
       expect(firstDifference(render(s, cam), reference)).toBe(-1);
       const y0 = a % (cam.height + 1), y1 = y0 + (b % (cam.height - y0 + 1));
@@ -116,7 +160,7 @@ describe('the same bytes as the plain reference, for random scenes and cameras (
   });
 
   it('every visual mode, whole or traced progressively in every order', () => {
-    fc.assert(fc.property(scene, camera, (s, cam) => {
+    assertBoth(fc.property(scene, camera, (s, cam) => {
       for (const { name } of MODES) {
         const shader = modeShader(name);
         const reference = pixelByPixel(s, cam, shader);
@@ -128,7 +172,7 @@ describe('the same bytes as the plain reference, for random scenes and cameras (
   });
 
   it("inspectPixel's colour, which records every step on the way, is render()'s pixel", () => {
-    fc.assert(fc.property(scene, camera, fc.nat(), fc.nat(), (s, cam, a, b) => {
+    assertBoth(fc.property(scene, camera, fc.nat(), fc.nat(), (s, cam, a, b) => {
       const pixels = render(s, cam);
       for (let k = 0; k < 8; k++) { // a few pixels, anywhere in the frame
         const x = (a + 7 * k) % cam.width, y = (b + 5 * k) % cam.height, i = (y * cam.width + x) * 4;
@@ -138,17 +182,17 @@ describe('the same bytes as the plain reference, for random scenes and cameras (
   });
 
   it('render() takes the fast path (lib/kernel.js) for scenes of plain shapes, and for spheres only gives the same bytes', () => {
-    fc.assert(fc.property(scene, camera, (s, cam) => {
+    assertBoth(fc.property(scene, camera, (s, cam) => {
       const twice = new Set(s.objects).size !== s.objects.length; // left to trace.js (see below)
       expect(prepareFrame(s, cam).packed === null).toBe(twice); // so the tests above compare lib/kernel.js with trace.js
     }), { ...RUNS, numRuns: 50 });
-    fc.assert(fc.property(sphereScene, camera, (s, cam) => {
+    assertBoth(fc.property(sphereScene, camera, (s, cam) => {
       expect(firstDifference(render(s, cam), pixelByPixel(s, cam))).toBe(-1);
     }), RUNS);
   });
 
   it("a ProgressiveRenderer's finished buffer is render()'s, in every order", () => {
-    fc.assert(fc.property(scene, camera, (s, cam) => {
+    assertBoth(fc.property(scene, camera, (s, cam) => {
       const expected = render(s, cam);
       for (const order of ORDERS) expect(firstDifference(progressively(s, cam, order), expected), order).toBe(-1);
     }), { ...RUNS, numRuns: 150 });
@@ -218,8 +262,8 @@ describe("the fast path's shadow-ray shortcut", () => {
   it('skips a sphere only when its test says "not in the way": near the limit, for random lights, points and biases (property)', () => {
     let skipped = 0, nearLimit = 0;
     const unitVector = direction.map(([x, y, z]) => { const n = Math.hypot(x, y, z); return [x / n, y / n, z / n]; });
-    fc.assert(fc.property(
-      point(20), fc.double({ min: 0.01, max: 20, noNaN: true }), point(30), unitVector, unitVector,
+    assertBoth(fc.property(
+      point(20), between(0.01, 20), point(30), unitVector, unitVector,
       fc.integer({ min: -1000, max: 1000 }).map((n) => n / 20000), fc.constantFrom(0, 1e-4, 0.01, 0.5),
       (center, radius, light, w, normal, jitter, bias) => {
         // The shaded point P lies about as far from the light as the sphere's near side: the limit of the shortcut.
@@ -267,5 +311,18 @@ describe('a scene with the same shape added twice (a slip in a sketch)', () => {
       .add(new PointLight([5, 8, 0]));
     const cam = new Camera({ width: 32, height: 24 });
     expect(firstDifference(render(scene, cam), pixelByPixel(scene, cam))).toBe(-1);
+  });
+});
+
+describe("each run's fresh seed", () => {
+  it('is named by a failure, with the command that replays it', () => {
+    const neverLarge = fc.property(fc.nat(), (n) => n < 10);
+    expect(() => assertFresh(neverLarge, { numRuns: 100 })).toThrow(`SEED=${FRESH_SEED} node_modules/.bin/vitest run ${TEST_FILE}`);
+  });
+
+  it('comes from SEED when given, a whole number', () => {
+    expect(freshSeed('-1234567')).toBe(-1234567);
+    expect(() => freshSeed('12abc')).toThrow('SEED must be a whole number');
+    expect(Number.isSafeInteger(freshSeed(undefined))).toBe(true);
   });
 });
