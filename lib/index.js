@@ -16,6 +16,7 @@ export { registerShape } from './shapes/index.js';
 export { Material } from './material.js';
 export { PointLight } from './lights.js';
 export { AreaLight } from './area-light.js';
+export { SpotLight } from './spot-light.js';
 // Rays through pixels.
 export { Ray } from './ray.js';
 export { Camera } from './camera.js';

@@ -139,7 +139,8 @@ function plain(shape) {
  */
 export function packScene(scene) {
   const { objects } = scene;
-  return objects.every(plain) && new Set(objects).size === objects.length ? new PackedScene(scene) : null;
+  const packs = objects.every(plain) && new Set(objects).size === objects.length && scene.lights.every((light) => !light.spot);
+  return packs ? new PackedScene(scene) : null; // (a spot light's cone is traced by trace.js alone, for now)
 }
 
 /**

@@ -8,6 +8,7 @@ import { EPSILON } from './constants.js';
 import { isShape, ballOf, kindOf } from './shapes/index.js';
 import { PointLight, lightSource } from './lights.js';
 import { AreaLight } from './area-light.js';
+import { SpotLight } from './spot-light.js';
 
 /** The options a scene takes. */
 const OPTIONS = ['background', 'ambient', 'shadows', 'bias', 'epsilon', 'maxDepth', 'specular'];
@@ -49,13 +50,15 @@ export class Scene {
   add(item) {
     if (item instanceof PointLight) {
       this.lights.push(lightSource(item));
+    } else if (item instanceof SpotLight) {
+      this.lights.push(item.source()); // a point light with a cone
     } else if (item instanceof AreaLight) {
       this.lights.push(...item.sources()); // one point light per sample of the disc
     } else if (isShape(item)) {
       this.objects.push(item);
       if (item.material.isEmissive) this.lights.push(lightSource(item));
     } else {
-      throw new TypeError(`scene.add takes a shape (a Sphere, Plane, Box, … with hit, normalAt, intersect, bounds and a material), a PointLight or an AreaLight, got ${show(item)}`);
+      throw new TypeError(`scene.add takes a shape (a Sphere, Plane, Box, … with hit, normalAt, intersect, bounds and a material), a PointLight, SpotLight or AreaLight, got ${show(item)}`);
     }
     return this;
   }

@@ -16,6 +16,8 @@ import { Scene } from './scene.js';
 import { Camera } from './camera.js';
 import { Material } from './material.js';
 import { PointLight } from './lights.js';
+import { AreaLight } from './area-light.js';
+import { SpotLight } from './spot-light.js';
 import { shapeClass, shapeClasses, className } from './shapes/index.js';
 import { vector } from './shapes/json.js';
 import { checkOptions, show, withPath as named } from './check.js';
@@ -27,9 +29,30 @@ const CAMERA_FIELDS = ['width', 'height', 'fov', 'position', 'yaw', 'pitch', 'sa
 /** The point light's JSON fields, and how to build it from them (each shape class says its own). */
 const POINT_LIGHT = { type: 'pointLight', fields: ['position', 'color', 'intensity'], build: (o) => new PointLight(o.position, o.color, o.intensity) };
 
-/** The kind of object a JSON `type` names: a listed shape class or the point light; undefined for none. */
+/** The other lights, as JSON: their fields (options among them), how to build them and their JSON. */
+const LIGHTS = [
+  {
+    type: 'areaLight', Light: AreaLight, fields: ['center', 'radius', 'color', 'intensity', 'samples', 'normal'],
+    build: (o) => new AreaLight(o.center, o.radius, definedOnly({ color: o.color, intensity: o.intensity, samples: o.samples, normal: o.normal })),
+    toJSON: (l) => ({ type: 'areaLight', name: l.name, center: vector(l.center), radius: l.radius, color: [...l.color], intensity: l.intensity, samples: l.samples, normal: vector(l.normal) }),
+    codeArguments: (o) => [o.center, o.radius, { color: o.color, intensity: o.intensity, samples: o.samples, normal: o.normal }],
+  },
+  {
+    type: 'spotLight', Light: SpotLight, fields: ['position', 'target', 'angle', 'color', 'intensity'],
+    build: (o) => new SpotLight(o.position, o.target, definedOnly({ angle: o.angle, color: o.color, intensity: o.intensity })),
+    toJSON: (l) => ({ type: 'spotLight', name: l.name, position: vector(l.position), target: vector(l.target), angle: l.angle, color: [...l.color], intensity: l.intensity }),
+    codeArguments: (o) => [o.position, o.target, { angle: o.angle, color: o.color, intensity: o.intensity }],
+  },
+];
+
+/** `options` without its undefined entries (the constructors' defaults then apply). */
+function definedOnly(options) {
+  return Object.fromEntries(Object.entries(options).filter(([, v]) => v !== undefined));
+}
+
+/** The kind of object a JSON `type` names: a listed shape class or a light; undefined for none. */
 function kindOfType(type) {
-  return type === POINT_LIGHT.type ? POINT_LIGHT : shapeClass(type);
+  return type === POINT_LIGHT.type ? POINT_LIGHT : LIGHTS.find((l) => l.type === type) ?? shapeClass(type);
 }
 
 /**
@@ -115,7 +138,7 @@ export function sceneToCode(scene, { importFrom = '../lib/index.js' } = {}) {
     const id = identifier(o.name, names);
     body.push(`const ${id} = ${call};`, `${id}.name = ${quote(o.name)};`, `scene.add(${id});`);
   }
-  const order = ['Scene', ...shapeClasses().map((Shape) => className(Shape.type)), 'PointLight'].filter((n) => used.has(n));
+  const order = ['Scene', ...shapeClasses().map((Shape) => className(Shape.type)), 'PointLight', 'AreaLight', 'SpotLight'].filter((n) => used.has(n));
   return [
     `import { ${order.join(', ')} } from ${quote(importFrom)};`,
     '',
@@ -137,7 +160,10 @@ function addOrder(scene) {
   const items = [];
   let next = 0; // the next of scene.lights not yet placed
   const placePointLights = () => {
-    while (next < scene.lights.length && scene.lights[next].object === null) items.push(scene.lights[next++].source);
+    while (next < scene.lights.length && scene.lights[next].object === null) {
+      const { source } = scene.lights[next++];
+      if (items.at(-1) !== source) items.push(source); // an area light is several entries, one object
+    }
   };
   for (const shape of scene.objects) {
     if (shape.material.isEmissive) {
@@ -153,6 +179,8 @@ function addOrder(scene) {
 /** One shape's or point light's JSON, as sceneToJSON writes it. */
 export function objectToJSON(item) {
   if (item instanceof PointLight) return { type: 'pointLight', name: item.name ?? '', position: vector(item.position), color: [...item.color], intensity: item.intensity };
+  const light = LIGHTS.find((l) => item instanceof l.Light);
+  if (light) return light.toJSON(item);
   const json = typeof item?.toJSON === 'function' ? item.toJSON() : null;
   if (json && shapeClass(json.type)) return json;
   throw new TypeError(`scene objects must be spheres, planes, boxes or point lights (or other listed shapes, with a toJSON), got ${show(item)}`);
@@ -230,7 +258,7 @@ export function objectFromJSON(given, path) {
   const type = Object.hasOwn(given, 'type') ? given.type : undefined;
   const kind = typeof type === 'string' ? kindOfType(type) : undefined; // ["sphere"] is not "sphere"
   if (!kind) {
-    const types = [...shapeClasses().map((Shape) => Shape.type), POINT_LIGHT.type];
+    const types = [...shapeClasses().map((Shape) => Shape.type), POINT_LIGHT.type, ...LIGHTS.map((l) => l.type)];
     throw new TypeError(`${path}.type must be one of ${types.map((t) => `"${t}"`).join(', ')}, got ${show(type)}`);
   }
   const o = onlyFields(given, ['type', 'name', ...kind.fields], path);
@@ -260,7 +288,7 @@ function sceneOptions(data) {
 function constructorCall(o) {
   const args = o.type === POINT_LIGHT.type
     ? [o.position, isWhite(o.color) && o.intensity === 1 ? undefined : o.color, o.intensity === 1 ? undefined : o.intensity]
-    : shapeArguments(shapeClass(o.type), o);
+    : shapeArguments(kindOfType(o.type), o);
   while (args.length && args.at(-1) === undefined) args.pop();
   return `new ${className(o.type)}(${args.map((a, i) => literal(a, o.type === POINT_LIGHT.type && i === 1)).join(', ')})`;
 }
@@ -268,6 +296,7 @@ function constructorCall(o) {
 /** A shape's constructor arguments: its class's own `codeArguments`, else its fields in order. */
 function shapeArguments(Shape, o) {
   if (typeof Shape.codeArguments === 'function') return Shape.codeArguments(o, materialArgument(o.material));
+  if (!Shape.fields.includes('material')) return Shape.fields.map((field) => o[field]);
   return Shape.fields.map((field) => (field === 'material' ? materialArgument(o.material) : o[field]));
 }
 
@@ -335,4 +364,4 @@ const RESERVED = new Set(['implements', 'interface', 'package', 'private', 'prot
   'break', 'case', 'catch', 'class', 'const', 'continue', 'debugger', 'default', 'delete', 'do',
   'else', 'export', 'extends', 'false', 'finally', 'for', 'function', 'if', 'import', 'in', 'instanceof', 'let', 'new',
   'null', 'return', 'static', 'super', 'switch', 'this', 'throw', 'true', 'try', 'typeof', 'var', 'void', 'while',
-  'with', 'yield', 'await', 'enum', 'Scene', 'Sphere', 'Plane', 'Box', 'PointLight', 'undefined', 'NaN', 'Infinity']);
+  'with', 'yield', 'await', 'enum', 'Scene', 'Sphere', 'Plane', 'Box', 'PointLight', 'AreaLight', 'SpotLight', 'undefined', 'NaN', 'Infinity']);

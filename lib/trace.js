@@ -16,6 +16,7 @@ import { Vec3, dot, copy, set, scaleAndAdd, reflect } from './vec3.js';
 import { lambert, specular as phong, lightShare, refract, fresnel as fresnelShare, mix } from './optics.js';
 import { Ray } from './ray.js';
 import { EPSILON, DEG_PER_RAD } from './constants.js';
+import { spotShare } from './spot-light.js';
 
 /**
  * Traces `ray` through `scene`; writes its colour into `color` and returns it.
@@ -83,7 +84,9 @@ function lightPoint(frame, color) {
     const distance = directionTo(frame.toLight, frame.point, light.position);
     const cos = cosToLight(frame); // Lambert: light falls at an angle
     if (cos <= 0) continue; // the light is behind the surface
-    const transmission = scene.shadows ? shadowRay(frame, distance, light.object) : 1;
+    const beam = light.spot ? beamShare(light.spot, frame.toLight) : 1; // a spot light's cone
+    if (beam === 0) continue; // outside it
+    const transmission = (scene.shadows ? shadowRay(frame, distance, light.object) : 1) * beam;
     if (transmission === 0) continue; // in shadow
     const diffuse = cos * transmission;
     const highlight = scene.specular ? specular(frame, cos) * transmission : 0;
@@ -92,6 +95,11 @@ function lightPoint(frame, color) {
     color[1] += lightShare(lightColor[1], surface[1], diffuse, highlight);
     color[2] += lightShare(lightColor[2], surface[2], diffuse, highlight);
   }
+}
+
+/** How much of a spot light's cone reaches along the unit direction `toLight` (spot-light.js). */
+function beamShare(spot, toLight) {
+  return spotShare(spot.axis.x, spot.axis.y, spot.axis.z, spot.cosOuter, spot.cosInner, toLight.x, toLight.y, toLight.z);
 }
 
 /** Unit vector from `from` toward `to` into `out`; returns the distance. */
@@ -213,12 +221,13 @@ function recordLight(frame, light) {
   const { scene } = frame, surface = frame.hit.object.material.color, lightColor = light.emission;
   const distance = directionTo(frame.toLight, frame.point, light.position);
   const cos = cosToLight(frame);
-  const transmission = cos <= 0 ? 0 : scene.shadows ? shadowRay(frame, distance, light.object) : 1;
+  const beam = light.spot ? beamShare(light.spot, frame.toLight) : 1;
+  const transmission = cos <= 0 || beam === 0 ? 0 : (scene.shadows ? shadowRay(frame, distance, light.object) : 1) * beam;
   const diffuse = transmission > 0 ? cos * transmission : 0;
   const highlight = transmission > 0 && scene.specular ? specular(frame, cos) * transmission : 0;
   return {
     light: light.source, position: copy(new Vec3(), light.position), distance,
-    cos, facing: cos > 0, inShadow: cos > 0 && transmission < 1, transmission,
+    cos, facing: cos > 0, inShadow: cos > 0 && beam > 0 && transmission < beam, transmission, beam,
     contribution: [0, 1, 2].map((i) => lightShare(lightColor[i], surface[i], diffuse, highlight)),
     specular: highlight,
   };

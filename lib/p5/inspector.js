@@ -270,7 +270,7 @@ function lightsSection(r) {
   if (!hit || hit.lights.length === 0) return element('div', { hidden: '' });
   const rows = hit.lights.map((l, i) => {
     const at = { 'data-light': String(i) };
-    const status = !l.facing ? 'faces away' : l.inShadow ? (l.transmission > 0 ? 'partly shadowed' : 'in shadow') : 'lit';
+    const status = !l.facing ? 'faces away' : l.beam === 0 ? 'outside its cone' : l.inShadow ? (l.transmission > 0 ? 'partly shadowed' : 'in shadow') : 'lit';
     const added = l.contribution;
     return element('tr', { class: `rt-light-${status.replace(' ', '-')}` },
       element('td', {}, textValue('light', nameOf(l.light, `light ${i + 1}`), at)),

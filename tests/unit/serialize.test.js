@@ -89,7 +89,7 @@ describe('bad scene JSON names the field', () => {
     [{ objects: [sphere({ material: 'red' })] }, TypeError, 'objects[0].material must be an object, got "red"'],
     [{ objects: [sphere({ radious: 2 })] }, TypeError, 'objects[0] has no field "radious"'],
     [{ objects: [sphere({ name: 7 })] }, TypeError, 'objects[0].name must be a string, got 7'],
-    [{ objects: [sphere(), { type: 'cube' }] }, TypeError, 'objects[1].type must be one of "sphere", "plane", "box", "cylinder", "cone", "triangle", "mesh", "pointLight", got "cube"'],
+    [{ objects: [sphere(), { type: 'cube' }] }, TypeError, 'objects[1].type must be one of "sphere", "plane", "box", "cylinder", "cone", "triangle", "mesh", "pointLight", "areaLight", "spotLight", got "cube"'],
     [{ objects: [{ type: 'constructor' }] }, TypeError, 'objects[0].type must be one of'],
     [{ objects: [sphere(), null] }, TypeError, 'objects[1] must be an object, got null'],
     [{ objects: [{ type: 'plane', normal: [0, 0, 0] }] }, RangeError, 'objects[0].normal must not be zero-length'],

@@ -10,7 +10,7 @@ import { checkOptions, OPTION_KEY_MAX } from '../../lib/check.js';
 describe('scene JSON', () => {
   it('refuses an array for a type ("sphere" in a list is not "sphere")', () => {
     const o = { type: ['sphere'], center: [0, 0, -5], radius: 1 };
-    expect(() => sceneFromJSON({ objects: [o] })).toThrow(new TypeError('objects[0].type must be one of "sphere", "plane", "box", "cylinder", "cone", "triangle", "mesh", "pointLight", got ["sphere"]'));
+    expect(() => sceneFromJSON({ objects: [o] })).toThrow(new TypeError('objects[0].type must be one of "sphere", "plane", "box", "cylinder", "cone", "triangle", "mesh", "pointLight", "areaLight", "spotLight", got ["sphere"]'));
     expect(sceneFromJSON({ objects: [{ ...o, type: 'sphere' }] }).objects).toHaveLength(1);
   });
 });
