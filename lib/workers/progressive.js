@@ -147,6 +147,9 @@ export class WorkerProgressiveRenderer {
   set budgetMs(ms) { this.#inner.budgetMs = ms; }
   get slowRaysPerStep() { return this.#inner.slowRaysPerStep; }
   set slowRaysPerStep(n) { this.#inner.slowRaysPerStep = n; }
+  /** Checked by the inner renderer: without it, Infinity was a plain property here and Shoot's rate was never used. */
+  get slowRaysPerSecond() { return this.#inner.slowRaysPerSecond; }
+  set slowRaysPerSecond(n) { this.#inner.slowRaysPerSecond = n; }
 
   /* ---------------- the workers' side ---------------- */
 
