@@ -39,16 +39,7 @@ const TYPES = {
  */
 export function sceneToJSON(scene) {
   if (!(scene instanceof Scene)) throw new TypeError(`scene must be a Scene, got ${show(scene)}`);
-  return {
-    background: [...scene.background],
-    ambient: scene.ambient,
-    shadows: scene.shadows,
-    bias: scene.bias,
-    epsilon: scene.epsilon,
-    maxDepth: scene.maxDepth,
-    specular: scene.specular,
-    objects: addOrder(scene).map(objectToJSON),
-  };
+  return { ...sceneFieldsOf(scene), objects: addOrder(scene).map(objectToJSON) };
 }
 
 /**
@@ -98,29 +89,52 @@ export function cameraFromJSON(json) {
  * @example
  * const code = sceneToCode(classScene()); // "import { Scene, Sphere } from '../lib/index.js'; const scene = new Scene(…"
  */
-export function sceneToCode(scene, { importFrom = '../lib/index.js' } = {}) {
-  const data = sceneToJSON(scene);
-  const used = new Set(['Scene']);
+export function sceneToCode(scene, options) {
+  return [...sceneCodeLines(scene, options)].join('');
+}
+
+/**
+ * sceneToCode's text, a line (with its line break) at a time, each object's
+ * line made when it is read: big scenes' code is built in slices
+ * (joinInSlices, lib/slices.js) with no long task.
+ * @param {Scene} scene
+ * @param {{ importFrom?: string }} [options]
+ * @returns {Generator<string>}
+ * @example
+ * const lines = [...sceneCodeLines(classScene())]; // sceneToCode's lines; joinInSlices(sceneCodeLines(scene)) builds its text with no long task
+ */
+export function* sceneCodeLines(scene, { importFrom = '../lib/index.js' } = {}) {
+  if (!(scene instanceof Scene)) throw new TypeError(`scene must be a Scene, got ${show(scene)}`);
+  const items = addOrder(scene);
+  const used = new Set(['Scene', ...items.map(className)]);
+  const order = ['Scene', 'Sphere', 'Plane', 'Box', 'PointLight'].filter((n) => used.has(n));
+  const fields = sceneFieldsOf(scene);
+  yield `import { ${order.join(', ')} } from ${quote(importFrom)};\n`;
+  yield '\n';
+  yield `const scene = new Scene(${literal(sceneOptions(fields))});\n`;
   const names = new Set(['scene']);
-  const body = [];
-  for (const o of data.objects) {
+  for (const item of items) {
+    const o = objectToJSON(item);
     const call = constructorCall(o);
-    used.add(call.slice(4, call.indexOf('(')));
     if (!o.name) {
-      body.push(`scene.add(${call});`);
+      yield `scene.add(${call});\n`;
       continue;
     }
     const id = identifier(o.name, names);
-    body.push(`const ${id} = ${call};`, `${id}.name = ${quote(o.name)};`, `scene.add(${id});`);
+    yield `const ${id} = ${call};\n${id}.name = ${quote(o.name)};\nscene.add(${id});\n`;
   }
-  const order = ['Scene', 'Sphere', 'Plane', 'Box', 'PointLight'].filter((n) => used.has(n));
-  return [
-    `import { ${order.join(', ')} } from ${quote(importFrom)};`,
-    '',
-    `const scene = new Scene(${literal(sceneOptions(data))});`,
-    ...body,
-    '',
-  ].join('\n');
+}
+
+/** The class a scene item is built with, in the code. */
+function className(item) {
+  for (const [name, cls] of [['Sphere', Sphere], ['Plane', Plane], ['Box', Box], ['PointLight', PointLight]]) if (item instanceof cls) return name;
+  throw new TypeError(`scene objects must be spheres, planes, boxes or point lights, got ${show(item)}`);
+}
+
+/** A scene's own fields as JSON (all but its objects). */
+function sceneFieldsOf(scene) {
+  const { background, ambient, shadows, bias, epsilon, maxDepth, specular } = scene;
+  return { background: [...background], ambient, shadows, bias, epsilon, maxDepth, specular };
 }
 
 /* ---- to JSON ---- */
