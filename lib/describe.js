@@ -21,9 +21,10 @@ const HIDDEN_SHARE = 0.25;
 /**
  * Hit tests (rays × shapes) a description may cost: a ray toward each of
  * 10,000 spheres' centres made 10⁸ of them, 1.6 s at every change. Past it,
- * the centre rays go to a spread of the spheres in view; the others are counted.
+ * the centre rays go to a spread of the spheres in view (the others are
+ * counted), and past that the grid of rays has fewer rays.
  */
-const MAX_HIT_TESTS = 2_000_000;
+const MAX_HIT_TESTS = 500_000;
 const NUMBER_WORDS = ['no', 'one', 'two', 'three', 'four', 'five', 'six', 'seven', 'eight', 'nine', 'ten'];
 
 /**
@@ -85,7 +86,10 @@ function sample(scene, camera) {
       if (i === nearest) { s.first++; s.fx += u; s.fy += v; } else s.covers.set(nearest, (s.covers.get(nearest) ?? 0) + 1);
     }
   };
-  const columns = Math.min(SAMPLE_COLUMNS, camera.width), rows = Math.min(SAMPLE_ROWS, camera.height);
+  const affordable = Math.floor(MAX_HIT_TESTS / Math.max(1, objects.length));
+  const shrink = Math.min(1, Math.sqrt(affordable / (SAMPLE_COLUMNS * SAMPLE_ROWS)));
+  const columns = Math.max(1, Math.min(Math.floor(SAMPLE_COLUMNS * shrink), camera.width));
+  const rows = Math.max(1, Math.min(Math.floor(SAMPLE_ROWS * shrink), camera.height));
   for (let j = 0; j < rows; j++) {
     for (let i = 0; i < columns; i++) cast(((i + 0.5) * camera.width) / columns - 0.5, ((j + 0.5) * camera.height) / rows - 0.5);
   }
@@ -97,7 +101,7 @@ function sample(scene, camera) {
     if (p.depth > 0 && p.x >= -0.5 && p.x <= camera.width - 0.5 && p.y >= -0.5 && p.y <= camera.height - 0.5) inView.push([i, p]);
   }
   // One ray toward each sphere's centre, or toward an even spread of them when that would cost too many hit tests.
-  const rays = Math.min(inView.length, Math.max(0, Math.floor(MAX_HIT_TESTS / objects.length) - columns * rows));
+  const rays = Math.min(inView.length, Math.max(0, affordable - columns * rows));
   const skipped = new Set(inView.map(([i]) => i));
   for (let j = 0; j < rays; j++) {
     const [i, p] = inView[Math.floor((j * inView.length) / rays)];
