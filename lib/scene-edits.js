@@ -20,7 +20,8 @@
  *   view.setScene(edits.scene);
  */
 import { Scene } from './scene.js';
-import { sceneToJSON, sceneFromJSON, objectToJSON, objectFromJSON } from './serialize.js';
+import { sceneToJSON, sceneFromJSON, objectToJSON, objectFromJSON, addOrder } from './serialize.js';
+import { Plane } from './shapes/plane.js';
 import { withValue } from './scene-fields.js';
 import { show } from './check.js';
 
@@ -31,8 +32,10 @@ export class SceneEdits {
   /** @param {object|string} json scene JSON, checked by sceneFromJSON */
   constructor(json) {
     /** The scene's JSON, every field present (as sceneToJSON writes it). */
-    this.json = sceneToJSON(sceneFromJSON(json));
-    this.#items = this.json.objects.map((o, i) => objectFromJSON(o, `objects[${i}]`));
+    const first = sceneFromJSON(json);
+    this.json = sceneToJSON(first);
+    // Built from this.json they would be the same to the bit, but a plane (its normal is normalised again): checked once, not twice.
+    this.#items = addOrder(first).map((item, i) => (item instanceof Plane ? objectFromJSON(this.json.objects[i], `objects[${i}]`) : item));
     /** The scene: what sceneFromJSON(this.json) builds. */
     this.scene = sceneOf(this.json, this.#items);
   }

@@ -145,7 +145,7 @@ function sceneFieldsOf(scene) {
  * bit can depend on. A point light goes just before the first emissive shape
  * that comes after it among the scene's lights.
  */
-function addOrder(scene) {
+export function addOrder(scene) {
   const items = [];
   let next = 0; // the next of scene.lights not yet placed
   const placePointLights = () => {
