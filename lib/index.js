@@ -23,7 +23,7 @@ export { toColor, toHex, colorName } from './color.js';
 // The class's example scene; scenes as JSON and as code.
 export { classScene, classSceneAt } from './scenes.js';
 export { sceneToJSON, sceneFromJSON, sceneToCode, sceneCodeLines } from './serialize.js';
-export { joinInSlices } from './slices.js';
+export { joinInSlices, nextTask } from './slices.js';
 // The class activity and the homework self-checks.
 export { pinkPixelVerdict, answerText, readAnswerLine } from './activity.js';
 export { checkTrafficSignal, checkRearLights, solutionParameter } from './homework.js';

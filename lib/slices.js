@@ -10,7 +10,11 @@
 /** Milliseconds of work between two waits. */
 export const SLICE_MS = 10;
 
-/** Resolves in a task of its own (after the browser has had its turn: input, painting). */
+/**
+ * Resolves in a task of its own (after the browser has had its turn: input, painting).
+ * @example
+ * nextTask().then(() => 'the page has answered in between');
+ */
 export function nextTask() {
   return new Promise((resolve) => setTimeout(resolve, 0));
 }

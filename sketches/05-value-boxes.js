@@ -9,7 +9,7 @@
  * The scene travels in the page's link (#scene=…, compressed) and as code.
  */
 import p5 from 'p5';
-import { Camera, classScene, sceneToJSON, sceneCodeLines, joinInSlices } from '../lib/index.js';
+import { Camera, classScene, sceneToJSON, sceneCodeLines, joinInSlices, nextTask } from '../lib/index.js';
 import { readSceneLink, sceneLinkURL, linkNotice, element, copyText, showInBox } from '../lib/p5/index.js'; // and the p5 addon: p.createTracerView, …
 
 // The picture: its size in pixels and how wide the eye sees.
@@ -23,6 +23,8 @@ new p5((p) => {
   p.setup = async () => {
     p.noCanvas();
     const { scene, problem } = await sceneFromLink();
+    // The picture, then the boxes, each in a task of its own: at 10,000 spheres each part is checked and built in about 50 ms.
+    await nextTask();
     view = p.createTracerView({ scene, camera: new Camera({ width: WIDTH, height: HEIGHT, fov: FOV }), scale: 3, label: `${WIDTH} × ${HEIGHT} pixels` });
     p.createInspector({ view }); // beside the picture
 
@@ -31,6 +33,7 @@ new p5((p) => {
     values.parentElement.before(element('p', { class: 'notice', 'data-link-problem': '', role: 'alert' }, problem));
     const panel = element('section', { class: 'card' }, element('h2', {}, 'The values'));
     values.append(panel, shareTools());
+    await nextTask();
     p.createSceneForm({ json: sceneToJSON(scene), parent: panel, onChange: (changed, json) => {
       view.setScene(changed);
       shareInLink(json); // the link now shares this scene
