@@ -22,6 +22,7 @@ import { showInBox, downloadText } from './text-box.js';
 import { joinInSlices } from '../slices.js';
 import { pixelCSV, pixelCSVLines, rootsMeaning, routesAgree } from './pixel-csv.js';
 import { createAnnouncer } from './announce.js';
+import { virtualRows, VIRTUAL_FROM } from './virtual-rows.js';
 
 export { pixelCSV, pixelCSVLines, csvCell, rootsMeaning, routesAgree, AGREE_TOLERANCE } from './pixel-csv.js';
 
@@ -324,7 +325,7 @@ function rowClass(r, test) {
 
 function quadraticSection(r, tests = r.tests, more = null) {
   const head = ['sphere', 'A', 'B', 'C', 'B² − 4AC', 'meaning', 't0', 't1'];
-  const rows = tests.map((test, k) => {
+  const row = (k, test = tests[k]) => { // made when shown: a table of 10,000 rows keeps those in view only
     const i = tests === r.tests ? k : r.tests.indexOf(test);
     const q = test.quadratic, at = { 'data-sphere': String(i), 'data-route': 'quadratic' };
     return element('tr', { class: rowClass(r, test) }, sphereCell(test),
@@ -335,14 +336,14 @@ function quadraticSection(r, tests = r.tests, more = null) {
         q.roots > 0 && q.t === null ? element('span', { class: 'rt-behind', 'data-field': 'behind', ...at }, 'behind the eye') : null),
       element('td', {}, value('t0', q.t0, at)),
       element('td', {}, value('t1', q.t1, at)));
-  });
-  return section('Quadratic route: At² + Bt + C = 0', rows.length ? table(head, rows, 'Quadratic route') : noSpheres(), more,
+  };
+  return section('Quadratic route: At² + Bt + C = 0', tests.length ? table(head, tests.length, row, 'Quadratic route') : noSpheres(), more,
     element('p', { class: 'rt-note' }, 'Discriminant < 0: no hit; = 0: tangent; > 0: two hits, t = (−B ± √(B² − 4AC)) / 2A. The nearest hit is the smallest positive t (highlighted row).'));
 }
 
 function geometricSection(r, tests = r.tests, more = null) {
   const head = ['sphere', 'L = C − Ro', 'tca', 'd²', 'thc', 't0', 't1', 'agree'];
-  const rows = tests.map((test, k) => {
+  const row = (k, test = tests[k]) => { // made when shown: a table of 10,000 rows keeps those in view only
     const i = tests === r.tests ? k : r.tests.indexOf(test);
     const g = test.geometric, at = { 'data-sphere': String(i), 'data-route': 'geometric' };
     const agree = routesAgree(test.quadratic, g);
@@ -353,8 +354,8 @@ function geometricSection(r, tests = r.tests, more = null) {
         class: `rt-value ${agree ? 'rt-agree' : 'rt-disagree'}`, 'data-field': 'agree', 'data-value': String(agree), ...at,
         title: agree ? 'Both routes find the same roots' : 'The two routes disagree',
       }, agree ? '✓' : '✗')));
-  });
-  return section('Geometric route: tca = L·Rd, d² = L·L − tca², thc = √(r² − d²)', rows.length ? table(head, rows, 'Geometric route') : noSpheres(), more,
+  };
+  return section('Geometric route: tca = L·Rd, d² = L·L − tca², thc = √(r² − d²)', tests.length ? table(head, tests.length, row, 'Geometric route') : noSpheres(), more,
     element('p', { class: 'rt-note' }, 'd > r: the ray passes the sphere by. Otherwise t = tca ∓ thc — the same roots as the quadratic.'));
 }
 
@@ -371,9 +372,16 @@ function noSpheres() {
   return element('p', { class: 'rt-muted rt-empty', 'data-field': 'no-spheres' }, 'No spheres in the scene yet: nothing to test this ray against.');
 }
 
-/** A table in a box that scrolls sideways when narrow: the box takes focus (the arrow keys scroll it) and is named. */
-function table(head, rows, name) {
-  return element('div', { class: 'rt-table-wrap', tabindex: '0', role: 'region', 'aria-label': `${name} table` }, element('table', { class: 'rt-table' },
+/**
+ * A table in a box that scrolls sideways when narrow: the box takes focus (the arrow keys scroll it) and is named.
+ * Its `count` rows are made by `rowAt(k)`; past VIRTUAL_FROM only those in view (lib/p5/virtual-rows.js).
+ */
+function table(head, count, rowAt, name) {
+  const body = element('tbody', {});
+  const box = element('div', { class: 'rt-table-wrap', tabindex: '0', role: 'region', 'aria-label': `${name} table` }, element('table', { class: 'rt-table' },
     element('thead', {}, element('tr', {}, ...head.map((h) => element('th', { scope: 'col' }, h)))),
-    element('tbody', {}, ...rows)));
+    body));
+  if (count > VIRTUAL_FROM) virtualRows(box, body, count, rowAt, head.length);
+  else for (let k = 0; k < count; k++) body.append(rowAt(k));
+  return box;
 }
