@@ -70,3 +70,10 @@ test('a shared scene whose names are HTML shows them as text', async ({ page }) 
   expect(await page.locator('[onerror], [onload]').count()).toBe(0);
   await expect(page.locator('#values')).toContainText('<img src=x');
 });
+
+test('a link too long for the dev server says so on the page (not Node\'s bare 431)', async ({ page }) => {
+  const answer = await page.goto(`/sketches/05-value-boxes.html?scene=${'A'.repeat(20_000)}`);
+  expect(answer.status()).toBe(431);
+  await expect(page.locator('h1')).toHaveText('This link is too long');
+  await expect(page.locator('[data-link-too-long]')).toContainText('#scene=');
+});
