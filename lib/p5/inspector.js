@@ -17,7 +17,7 @@ import { inspectPixel } from '../explain.js';
 import { toHex, colorName } from '../color.js';
 import { formatNumber, formatVector, formatAngle } from '../format.js';
 import { show, checkOptions } from '../check.js';
-import { useStyle, element, resolveParent, copyText } from './dom.js';
+import { useStyle, element, resolveParent, copyText, shownName, nameTitle } from './dom.js';
 import { showInBox, downloadText } from './text-box.js';
 import { joinInSlices } from '../slices.js';
 import { pixelCSV, pixelCSVLines, rootsMeaning, routesAgree } from './pixel-csv.js';
@@ -212,7 +212,7 @@ export function pixelAnnouncement(r) {
 /** "pink sphere" for a sphere named pink; "ground" for one named ground; "sphere 2" for one with no name. */
 function hitName(hit) {
   const kind = hit.object?.radius ? 'sphere' : hit.object?.normal ? 'plane' : hit.object?.min ? 'box' : 'object';
-  const name = hit.object?.name?.trim();
+  const name = shownName(hit.object?.name?.trim() ?? '');
   if (!name) return `${kind} ${hit.index}`;
   return /^(pink|red|orange|yellow|green|cyan|blue|purple|white|gray|grey|black|brown)$/i.test(name) ? `${name} ${kind}` : name;
 }
@@ -235,6 +235,11 @@ function vectorValue(field, v, attributes = {}, text = formatVector(v)) {
 
 function textValue(field, text, attributes = {}) {
   return element('span', { class: 'rt-value', 'data-field': field, 'data-value': text, ...attributes }, text);
+}
+
+/** A name's value cell: cut on the page (shownName), whole in its title and data-value. */
+function nameValue(field, name, attributes = {}) {
+  return element('span', { class: 'rt-value', 'data-field': field, 'data-value': name, ...nameTitle(name), ...attributes }, shownName(name));
 }
 
 function section(title, ...children) {
@@ -273,7 +278,7 @@ function hitSection(r) {
   }
   const name = hit.name;
   return section('Hit', facts([
-    ['object', textValue('hit-object', name), hit.inside ? ' (from inside)' : ''],
+    ['object', nameValue('hit-object', name), hit.inside ? ' (from inside)' : ''],
     ['t', value('hit-t', hit.t)],
     ['point', vectorValue('hit-point', hit.point)],
     ['normal N', vectorValue('hit-normal', hit.normal)],
@@ -289,7 +294,7 @@ function lightsSection(r) {
     const status = !l.facing ? 'faces away' : l.inShadow ? (l.transmission > 0 ? 'partly shadowed' : 'in shadow') : 'lit';
     const added = l.contribution;
     return element('tr', { class: `rt-light-${status.replace(' ', '-')}` },
-      element('td', {}, textValue('light', nameOf(l.light, `light ${i + 1}`), at)),
+      element('td', {}, nameValue('light', nameOf(l.light, `light ${i + 1}`), at)),
       element('td', {}, value('cos', l.cos, at)),
       element('td', {}, element('span', { class: 'rt-value', 'data-field': 'in-shadow', 'data-value': String(l.inShadow), ...at }, status)),
       element('td', {},
@@ -300,7 +305,7 @@ function lightsSection(r) {
 }
 
 function sphereCell(test) {
-  return element('th', { scope: 'row' }, test.name);
+  return element('th', { scope: 'row', ...nameTitle(test.name) }, shownName(test.name));
 }
 
 /**
