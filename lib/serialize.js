@@ -127,7 +127,10 @@ export function* sceneCodeLines(scene, { importFrom = '../lib/index.js' } = {}) 
 
 /** The class a scene item is built with, in the code. */
 function className(item) {
-  for (const [name, cls] of [['Sphere', Sphere], ['Plane', Plane], ['Box', Box], ['PointLight', PointLight]]) if (item instanceof cls) return name;
+  if (item instanceof Sphere) return 'Sphere';
+  if (item instanceof Plane) return 'Plane';
+  if (item instanceof Box) return 'Box';
+  if (item instanceof PointLight) return 'PointLight';
   throw new TypeError(`scene objects must be spheres, planes, boxes or point lights, got ${show(item)}`);
 }
 
