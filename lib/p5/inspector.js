@@ -301,7 +301,7 @@ function lightsSection(r) {
         element('span', { class: 'rt-swatch rt-swatch-small', style: `background: ${toHex(added.map((c) => Math.min(1, c) * 255))}` }),
         element('span', { class: 'rt-value rt-wrap', 'data-field': 'contribution', 'data-value': added.join(','), ...at }, `(${added.map(formatNumber).join(', ')})`)));
   });
-  return section('Lights (one shadow ray each)', table(['light', 'cos θ', 'shadow ray', 'adds (r, g, b)'], rows, 'Lights'));
+  return section('Lights (one shadow ray each)', table(['light', 'cos θ', 'shadow ray', 'adds (r, g, b)'], rows.length, (k) => rows[k], 'Lights'));
 }
 
 function sphereCell(test) {
