@@ -12,7 +12,8 @@
  * nothing); and bench/reference.c, the work of (a) in C, compiled with
  * `cc -O3 -march=native` when a compiler is present (else it says skipped),
  * timed alternately with render() and compared byte for byte: it prints both
- * and the ratio (today's figures: docs/performance.md).
+ * and the ratio (today's figures: docs/performance.md). Last, bench/bvh.js:
+ * the mesh BVH's per-ray cost at 1k and 100k triangles, and a frame of the bunny.
  *
  * Today's figures, the conditions they were taken in (load average), and
  * what was tried and measured on the way (tiles, culling shadow rays, Math.pow)
@@ -236,3 +237,7 @@ try {
 }
 // The machine's neighbours come and go: the load at both ends says how quiet the run was.
 console.log(`\nload average ${startLoad.toFixed(1)} at the start, ${loadavg()[0].toFixed(1)} at the end (1 minute, ${availableParallelism()} cores)`);
+
+// Meshes: the BVH's scaling (1k vs 100k triangles) and a frame of the bunny (bench/bvh.js).
+const { runBvhBench } = await import('./bvh.js');
+runBvhBench();

@@ -363,7 +363,7 @@ function reportProgressive({ result, trace, changes }, where) {
     dist('frame to frame', intervals),
   ], [30, 8, 8, 8, 8]);
   const longest = frames.reduce((a, f) => (f.draw > a.draw ? f : a), frames[0]);
-  console.log(`   longest draw(): frame ${frames.indexOf(longest) + 1}, ${ms(longest.draw)} ms (step ${ms(longest.step)} ms, pass ${longest.pass} px)`);
+  console.log(`   longest draw(): frame ${frames.indexOf(longest) + 1}, ${ms(longest.draw)} ms (step ${ms(longest.step)} ms, block size ${longest.blockSize} px)`);
 
   const split = (tasks, first) => {
     const load = tasks.filter((t) => t.start + t.duration <= first), rendering = tasks.filter((t) => t.start + t.duration > first);

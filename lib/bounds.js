@@ -5,8 +5,7 @@
  * keeps the picture identical: a shape left out of a pixel's list is one its
  * ray cannot hit.
  */
-import { Sphere } from './shapes/sphere.js';
-import { Box } from './shapes/box.js';
+import { ballOf } from './shapes/index.js';
 import { clamp } from './numbers.js';
 
 /** Pixels of margin around every rectangle (rounding, the tangent band). */
@@ -49,18 +48,18 @@ function slopeRange(c, cz, r) {
   return { lo: (c * cz - root) / a, hi: (c * cz + root) / a };
 }
 
-/** A sphere around the shape, or null when it has none (a plane). */
+/** A sphere around the shape: a ball itself, else the sphere around its bounds(); null when unbounded (a plane). */
 function boundingSphere(object) {
-  if (object instanceof Sphere) return object;
-  if (object instanceof Box) {
-    const { min, max } = object;
-    const dx = max.x - min.x, dy = max.y - min.y, dz = max.z - min.z;
-    return {
-      center: { x: (min.x + max.x) / 2, y: (min.y + max.y) / 2, z: (min.z + max.z) / 2 },
-      radius: Math.sqrt(dx * dx + dy * dy + dz * dz) / 2,
-    };
-  }
-  return null;
+  const ball = ballOf(object);
+  if (ball) return ball;
+  const box = typeof object.bounds === 'function' ? object.bounds() : null; // a shape without bounds may be anywhere
+  if (!box) return null;
+  const { min, max } = box;
+  const dx = max.x - min.x, dy = max.y - min.y, dz = max.z - min.z;
+  return {
+    center: { x: (min.x + max.x) / 2, y: (min.y + max.y) / 2, z: (min.z + max.z) / 2 },
+    radius: Math.sqrt(dx * dx + dy * dy + dz * dz) / 2,
+  };
 }
 
 /** A point in the camera's frame: sideways (right), up, and forward. */

@@ -10,6 +10,7 @@
  * meets behind that is "behind" it.
  */
 import { colorName } from './color.js';
+import { ballOf, middleOf, kindOf as shapeKind, shapeClasses } from './shapes/index.js';
 
 /** The coarse grid of rays, at most this many a side (fewer for a smaller picture). */
 const SAMPLE_COLUMNS = 24;
@@ -95,9 +96,9 @@ function sample(scene, camera) {
   }
   const inView = [];
   for (let i = 0; i < objects.length; i++) {
-    const o = objects[i];
-    if (!o.center || !o.radius) continue;
-    const p = camera.project(o.center);
+    const ball = ballOf(objects[i]); // a ray at each ball's centre too: a small one falls between the samples
+    if (!ball) continue;
+    const p = camera.project(ball.center);
     if (p.depth > 0 && p.x >= -0.5 && p.x <= camera.width - 0.5 && p.y >= -0.5 && p.y <= camera.height - 0.5) inView.push([i, p]);
   }
   // One ray toward each sphere's centre, or toward an even spread of them when that would cost too many hit tests.
@@ -125,18 +126,19 @@ function summary(seen) {
 }
 
 /**
- * 'floor', 'ceiling' or 'wall' for a plane, or a sphere so big the camera sees
+ * 'floor', 'ceiling' or 'wall' for an unbounded shape (a plane), or a ball so big the camera sees
  * it as one (the class scene's ground); null for an ordinary shape.
  */
 function surfaceKind(o, camera) {
   let normal, below;
-  if (o.normal && o.point) {
-    normal = o.normal;
-    below = camera.position.y > o.point.y;
-  } else if (o.center && o.radius >= 100) {
-    const e = camera.position, c = o.center;
+  if (typeof o.bounds === 'function' && o.bounds() === null) { // unbounded: a plane
+    const point = middleOf(o);
+    normal = o.normalAt(point);
+    below = camera.position.y > point.y;
+  } else if (ballOf(o)?.radius >= 100) {
+    const { center: c, radius } = ballOf(o), e = camera.position;
     const dx = e.x - c.x, dy = e.y - c.y, dz = e.z - c.z, d = Math.hypot(dx, dy, dz);
-    if (d - o.radius > o.radius / 10 || d < o.radius) return null; // far off, or the camera is inside it
+    if (d - radius > radius / 10 || d < radius) return null; // far off, or the camera is inside it
     normal = { y: dy / d };
     below = dy > 0;
   } else {
@@ -165,15 +167,20 @@ function nounPhrase(o) {
   if (m.isEmissive) return `glowing ${color} ${kind} (a light)`;
   const words = [color, m.reflection >= 0.5 && 'mirror', m.transparency >= 0.5 && 'glass', kind].filter(Boolean).join(' ');
   const name = typeof o.name === 'string' ? o.name.trim() : '';
-  const said = name && (words.split(' ').includes(name.toLowerCase()) || /^(sphere|box|plane)\s*\d*$/i.test(name));
+  const said = name && (words.split(' ').includes(name.toLowerCase()) || isKindName(name));
   return name && !said ? `${words} called ${name.slice(0, 40)}` : words;
 }
 
+/** "sphere", "Box 2": a name that only says the kind, as shapeName makes them. */
+function isKindName(name) {
+  const kinds = shapeClasses().map((Shape) => Shape.type.replace(/[^A-Za-z]/g, '')).join('|');
+  return new RegExp(`^(${kinds})\\s*\\d*$`, 'i').test(name);
+}
+
+/** The word for a shape's kind: 'sphere', 'box', …; 'shape' for one of a sketch's own. */
 function kindOf(o) {
-  if (o.radius) return 'sphere';
-  if (o.min && o.max) return 'box';
-  if (o.normal) return 'plane';
-  return 'shape';
+  const kind = shapeKind(o);
+  return kind === 'object' ? 'shape' : kind;
 }
 
 /** A shape's colour name: its glow for a light, else its surface colour. */

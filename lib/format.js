@@ -1,6 +1,6 @@
 /**
  * Numbers as the kit prints them, one home for each way: the diagrams'
- * labels (`fmt`), the inspector's values (`formatNumber`, `formatVector`,
+ * labels (`formatLabel`), the inspector's values (`formatNumber`, `formatVector`,
  * `formatAngle`), the legends' round numbers (`formatRounded`,
  * `formatPowerOfTen`) and the progress line's rate (`formatRate`). Each prints what a test or a
  * screenshot already expects: change one only on purpose.
@@ -14,9 +14,9 @@ const superscript = (e) => [...String(e)].map((d) => SUPERSCRIPT[d]).join('');
 /**
  * A number for a label: one decimal (or `digits`), '−' for minus, big ones as a×10ⁿ.
  * @example
- * fmt(-3.25);   // '−3.3' (rounded, with a real minus sign)
+ * formatLabel(-3.25);   // '−3.3' (rounded, with a real minus sign)
  */
-export function fmt(n, digits = 1) {
+export function formatLabel(n, digits = 1) {
   if (n === null || n === undefined || !Number.isFinite(n)) return '—';
   const minus = n < 0 ? '−' : '';
   const a = Math.abs(n);
@@ -27,6 +27,9 @@ export function fmt(n, digits = 1) {
   const text = a.toFixed(a >= 1000 ? 0 : digits);
   return Number(text) === 0 ? text : minus + text;
 }
+
+/** @deprecated the old name of formatLabel. */
+export const fmt = formatLabel;
 
 /** The sign between a formula's terms: '+' or '−'. */
 export function sign(n) {

@@ -15,7 +15,7 @@
  * `skipped` (and not passed) until that one passes.
  */
 import { Camera } from './camera.js';
-import { Sphere } from './shapes/sphere.js';
+import { ballOf } from './shapes/index.js';
 import { PointLight } from './lights.js';
 import { Ray } from './ray.js';
 import { nearestHit } from './trace.js';
@@ -98,21 +98,21 @@ function sameColumn(stack) {
   for (const light of stack.slice(1)) {
     const dx = light.center.x - top.center.x, dz = light.center.z - top.center.z;
     if (Math.abs(dx) > tolerance) {
-      return fail(label, `The ${light.color} light is ${fmt(Math.abs(dx))} to the ${dx > 0 ? 'right' : 'left'} of the red one ` +
-        `(x = ${fmt(light.center.x)}, red x = ${fmt(top.center.x)}): give all three the same x.`);
+      return fail(label, `The ${light.color} light is ${formatLabel(Math.abs(dx))} to the ${dx > 0 ? 'right' : 'left'} of the red one ` +
+        `(x = ${formatLabel(light.center.x)}, red x = ${formatLabel(top.center.x)}): give all three the same x.`);
     }
     if (Math.abs(dz) > tolerance) {
-      return fail(label, `The ${light.color} light is ${fmt(Math.abs(dz))} ${dz > 0 ? 'in front of' : 'behind'} the red one ` +
-        `(z = ${fmt(light.center.z)}, red z = ${fmt(top.center.z)}): give all three the same z.`);
+      return fail(label, `The ${light.color} light is ${formatLabel(Math.abs(dz))} ${dz > 0 ? 'in front of' : 'behind'} the red one ` +
+        `(z = ${formatLabel(light.center.z)}, red z = ${formatLabel(top.center.z)}): give all three the same z.`);
     }
   }
-  return pass(label, `All three at x ≈ ${fmt(top.center.x)}, z ≈ ${fmt(top.center.z)}.`);
+  return pass(label, `All three at x ≈ ${formatLabel(top.center.x)}, z ≈ ${formatLabel(top.center.z)}.`);
 }
 
 /** Red highest, then yellow, then green; no two overlapping. */
 function topToBottom(stack) {
   const label = SIGNAL_CHECKS.order;
-  const heights = stack.map((l) => `${l.color} y = ${fmt(l.center.y)}`).join(', ');
+  const heights = stack.map((l) => `${l.color} y = ${formatLabel(l.center.y)}`).join(', ');
   const order = [...stack].sort((a, b) => b.center.y - a.center.y).map((l) => l.color);
   if (order.join() !== SIGNAL.join()) {
     return fail(label, `From top to bottom your lights are ${order.join(', ')} (${heights}). Red goes on top, green at the bottom: a larger y is higher.`);
@@ -121,7 +121,7 @@ function topToBottom(stack) {
     const upper = stack[i], lower = stack[i + 1];
     if (upper.center.y - lower.center.y < upper.radius + lower.radius - 1e-9) {
       return fail(label, `The ${upper.color} and ${lower.color} lights overlap (${heights}): move them further apart, ` +
-        `at least ${fmt(upper.radius + lower.radius)} (the two radii added).`);
+        `at least ${formatLabel(upper.radius + lower.radius)} (the two radii added).`);
     }
   }
   return pass(label, `Top to bottom: ${heights}.`);
@@ -201,10 +201,10 @@ function sameHeight([left, right]) {
   const tolerance = Math.min(left.radius, right.radius) / 4;
   if (Math.abs(dy) > tolerance) {
     const [higher, lower] = dy > 0 ? ['right', 'left'] : ['left', 'right'];
-    return fail(label, `The ${higher} light is ${fmt(Math.abs(dy))} higher than the ${lower} one ` +
-      `(y = ${fmt(left.center.y)} and ${fmt(right.center.y)}): give both the same y.`);
+    return fail(label, `The ${higher} light is ${formatLabel(Math.abs(dy))} higher than the ${lower} one ` +
+      `(y = ${formatLabel(left.center.y)} and ${formatLabel(right.center.y)}): give both the same y.`);
   }
-  return pass(label, `Both at y ≈ ${fmt(left.center.y)}.`);
+  return pass(label, `Both at y ≈ ${formatLabel(left.center.y)}.`);
 }
 
 /** Apart in x (not overlapping) and at about the same z. @param {PlacedLight[]} pair left, right */
@@ -212,13 +212,13 @@ function sideBySide([left, right]) {
   const label = CAR_CHECKS.side;
   const gap = right.center.x - left.center.x, dz = right.center.z - left.center.z;
   if (gap < left.radius + right.radius) {
-    return fail(label, `The two lights are only ${fmt(gap)} apart in x (x = ${fmt(left.center.x)} and ${fmt(right.center.x)}): ` +
+    return fail(label, `The two lights are only ${formatLabel(gap)} apart in x (x = ${formatLabel(left.center.x)} and ${formatLabel(right.center.x)}): ` +
       'put one on the left of the car and one on the right.');
   }
   if (Math.abs(dz) > Math.min(left.radius, right.radius)) {
-    return fail(label, `One light is ${fmt(Math.abs(dz))} further back than the other (z = ${fmt(left.center.z)} and ${fmt(right.center.z)}): give both the same z.`);
+    return fail(label, `One light is ${formatLabel(Math.abs(dz))} further back than the other (z = ${formatLabel(left.center.z)} and ${formatLabel(right.center.z)}): give both the same z.`);
   }
-  return pass(label, `Left at x = ${fmt(left.center.x)}, right at x = ${fmt(right.center.x)}, ${fmt(gap)} apart.`);
+  return pass(label, `Left at x = ${formatLabel(left.center.x)}, right at x = ${formatLabel(right.center.x)}, ${formatLabel(gap)} apart.`);
 }
 
 function bothVisible(seen, camera) {
@@ -238,10 +238,10 @@ function symmetric([left, right], body) {
   const off = middle - body.middle;
   const tolerance = Math.min(left.radius, right.radius) / 4;
   if (Math.abs(off) > tolerance) {
-    return { ...fail(label, `The car's middle is x = ${fmt(body.middle)}, but halfway between your lights is x = ${fmt(middle)}: ` +
-      `move both ${fmt(Math.abs(off))} to the ${off > 0 ? 'left' : 'right'}.`), bonus: true };
+    return { ...fail(label, `The car's middle is x = ${formatLabel(body.middle)}, but halfway between your lights is x = ${formatLabel(middle)}: ` +
+      `move both ${formatLabel(Math.abs(off))} to the ${off > 0 ? 'left' : 'right'}.`), bonus: true };
   }
-  return { ...pass(label, `Halfway between the lights is x = ${fmt(middle)}, the middle of the car.`), bonus: true };
+  return { ...pass(label, `Halfway between the lights is x = ${formatLabel(middle)}, the middle of the car.`), bonus: true };
 }
 
 /** The middle (in x) of every shape that is not a light, a plane or huge; null when none. */
@@ -249,10 +249,9 @@ function carBody(scene) {
   let min = Infinity, max = -Infinity;
   for (const o of scene.objects) {
     if (o.material.isEmissive) continue;
-    if (o instanceof Sphere && o.radius < HUGE) {
-      min = Math.min(min, o.center.x - o.radius); max = Math.max(max, o.center.x + o.radius);
-    } else if (o.min && o.max && o.max.x - o.min.x < HUGE) {
-      min = Math.min(min, o.min.x); max = Math.max(max, o.max.x);
+    const ball = ballOf(o), box = o.bounds();
+    if (box && (ball ? ball.radius < HUGE : box.max.x - box.min.x < HUGE)) {
+      min = Math.min(min, box.min.x); max = Math.max(max, box.max.x);
     }
   }
   return min <= max ? { min, max, middle: (min + max) / 2 } : null;
@@ -297,8 +296,8 @@ function whereIsIt(light, camera) {
  */
 export function findLights(scene) {
   return scene.objects
-    .filter((o) => o instanceof Sphere && o.material.isEmissive)
-    .map((sphere) => ({ sphere, center: sphere.center, radius: sphere.radius, color: lightColor(sphere.material.emission) }));
+    .filter((o) => ballOf(o) && o.material.isEmissive)
+    .map((sphere) => ({ sphere, center: ballOf(sphere).center, radius: ballOf(sphere).radius, color: lightColor(sphere.material.emission) }));
 }
 
 /**
@@ -389,7 +388,7 @@ const waiting = (label, what) => ({ label, passed: false, skipped: true, detail:
 const listNames = (lights) => lights.map((l) => l.color).join(', ');
 const andList = (words) => words.length > 1 ? `${words.slice(0, -1).join(', ')} and ${words.at(-1)}` : words[0];
 const count = (n, word) => `${n} ${word}${n === 1 ? '' : 's'}`;
-const fmt = (n) => String(Math.round(n * 100) / 100);
+const formatLabel = (n) => String(Math.round(n * 100) / 100);
 
 /* ============================ the check panel ============================= */
 

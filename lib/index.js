@@ -8,8 +8,10 @@ export { Scene } from './scene.js';
 export { Sphere, intersectQuadratic, intersectGeometric, EPSILON } from './shapes/sphere.js';
 export { Plane } from './shapes/plane.js';
 export { Box } from './shapes/box.js';
+export { registerShape } from './shapes/index.js';
 export { Material } from './material.js';
 export { PointLight } from './lights.js';
+export { AreaLight } from './area-light.js';
 // Rays through pixels.
 export { Ray } from './ray.js';
 export { Camera } from './camera.js';

@@ -9,42 +9,20 @@
  * lesson's readable version and the one the inspector runs; a change to the
  * lighting goes into both. Full shading of the class scene is 1.17–1.2× faster
  * this way (docs/performance.md). A shape with a `hit` or `normalAt` of its
- * own (a subclass, or a method replaced), or a shape added twice, is not
- * packed: `packScene` says no and render() uses trace.js.
+ * own (a subclass, or a method replaced), a shape whose class has no packed
+ * form, or a shape added twice, is not packed: `packScene` says no and
+ * render() uses trace.js. Each shape class packs itself and does its own hit
+ * and normal in numbers (its static `packed`, layout in lib/shapes/packed.js).
  */
-import { Sphere, sphereHit } from './shapes/sphere.js';
-import { Plane, planeHit } from './shapes/plane.js';
-import { Box } from './shapes/box.js';
+import { plainClassOf, ballOf } from './shapes/index.js';
+import { SHAPE, KIND, P, N, scratchNumbers } from './shapes/packed.js';
 
-const SPHERE = 0, PLANE = 1, BOX = 2;
-
-/** Numbers per shape in `shapes`: sphere cx cy cz radius; plane px py pz nx ny nz; box min xyz, max xyz. */
-const SHAPE = 6;
 /** Numbers per material, and where each lies among them: r g b, emission r g b, reflection, transparency, ior, specular, shininess. */
 const MATERIAL = 11;
 const EMISSION = 3, REFLECTION = 6, TRANSPARENCY = 7, IOR = 8, SPECULAR = 9, SHININESS = 10;
 /** Numbers per light: x y z, emission r g b (at EMISSION), the index of its shape (−1 for a point light). */
 const LIGHT = 7;
 const LIGHT_SHAPE = 6;
-
-/**
- * Every number the kernel writes per pixel lives in one buffer of its own,
- * `GUARD` empty bytes from either end. Workers are threads of one process,
- * and in Chromium two workers' small buffers could lie side by side on one
- * cache line: each write by one then stalled the other (false sharing), and
- * two workers ran at half speed (docs/performance.md).
- */
-const GUARD = 256; // more than a cache line and the neighbour the CPU fetches with it
-const scratch = new ArrayBuffer(4096);
-let scratchUsed = GUARD;
-
-/** `count` numbers of the scratch buffer. */
-function scratchNumbers(count) {
-  const numbers = new Float64Array(scratch, scratchUsed, count);
-  scratchUsed += count * Float64Array.BYTES_PER_ELEMENT;
-  if (scratchUsed > scratch.byteLength - GUARD) throw new Error('kernel.js: the scratch buffer is too small');
-  return numbers;
-}
 
 /** The deepest bounce a scene allows (Scene's maxDepth is 0–16), plus the primary ray. */
 const LEVELS = 17;
@@ -82,7 +60,6 @@ export class PackedScene {
   constructor(scene) {
     const { objects, lights } = scene;
     this.count = objects.length;
-    this.kinds = new Uint8Array(objects.length);
     this.shapes = new Float64Array(objects.length * SHAPE);
     this.materials = new Float64Array(objects.length * MATERIAL);
     this.index = new Map(objects.map((object, i) => [object, i]));
@@ -104,53 +81,58 @@ export class PackedScene {
     /** Every shape's index, in order: the list a mirror, glass or shadow ray tests. */
     this.all = Int32Array.from(objects.keys());
     /**
-     * The shapes' hit test: with only spheres (the lesson's scenes) the sphere
+     * The shapes' hit test, `hit(shapes, at, ox, oy, oz, dx, dy, dz, tMin)`: when
+     * every shape is of one kind (the lesson's scenes: spheres) that kind's
      * test itself, which saves asking each shape its kind (about 6 %).
      */
-    this.hit = this.kinds.every((kind) => kind === SPHERE) ? hitSphere : hitShape;
+    const kinds = new Set(objects.map((object) => kindIndex(object.constructor)));
+    const only = kinds.size === 1 ? KINDS[[...kinds][0]] : null;
+    this.hit = only ? only.hit : hitShape;
+    /** The normal, `normal(shapes, at, surface)`: that kind's own too, for a scene of one kind. */
+    this.normal = only ? only.normal : normalShape;
   }
 
-  /** For each light and shape, how far the shape's near side is from the light, less a margin (spheres; −Infinity otherwise). */
+  /** For each light and shape, how far the shape's near side is from the light, less a margin (balls; −Infinity otherwise). */
   #apart(objects, lights) {
     const apart = new Float64Array(lights.length * objects.length).fill(-Infinity);
     lights.forEach(({ position: p }, l) => objects.forEach((object, i) => {
-      if (!(object instanceof Sphere)) return;
-      const c = object.center, D = Math.hypot(c.x - p.x, c.y - p.y, c.z - p.z), r = object.radius;
+      const ball = ballOf(object);
+      if (!ball) return;
+      const c = ball.center, D = Math.hypot(c.x - p.x, c.y - p.y, c.z - p.z), r = ball.radius;
       apart[l * objects.length + i] = D - r - APART_MARGIN * (D + r + 1);
     }));
     return apart;
   }
 
-  /** Shape i's numbers and its material's into `shapes` and `materials`. */
+  /** Shape i's numbers (its class packs them) and its material's into `shapes` and `materials`. */
   #packShape(object, i) {
-    const s = i * SHAPE, m = object.material;
-    if (object instanceof Sphere) {
-      this.kinds[i] = SPHERE;
-      this.shapes.set([object.center.x, object.center.y, object.center.z, object.radius], s);
-    } else if (object instanceof Plane) {
-      this.kinds[i] = PLANE;
-      this.shapes.set([object.point.x, object.point.y, object.point.z, object.normal.x, object.normal.y, object.normal.z], s);
-    } else {
-      this.kinds[i] = BOX;
-      this.shapes.set([object.min.x, object.min.y, object.min.z, object.max.x, object.max.y, object.max.z], s);
-    }
+    const s = i * SHAPE, m = object.material, kind = kindIndex(object.constructor);
+    KINDS[kind].pack(object, this.shapes, s);
+    this.shapes[s + KIND] = kind;
     this.materials.set([...m.color, ...m.emission, m.reflection, m.transparency, m.ior, m.specular, m.shininess], i * MATERIAL);
   }
 }
 
-/** The shape classes the kernel knows, with the `hit` and `normalAt` it does in numbers. */
-const KNOWN = new Map([Sphere, Plane, Box].map((Shape) => [Shape, { hit: Shape.prototype.hit, normalAt: Shape.prototype.normalAt }]));
+/** The packed form of every shape class the kernel has met, by kind: `shapes[at + KIND]` indexes this. */
+const KINDS = [];
+/** Each class's kind number. */
+const KIND_OF = new Map();
 
-/** True when trace.js would ask this shape exactly what the kernel computes. */
+/** The kind number of a shape class (its packed form read once). */
+function kindIndex(Shape) {
+  if (!KIND_OF.has(Shape)) KIND_OF.set(Shape, KINDS.push(Shape.packed) - 1);
+  return KIND_OF.get(Shape);
+}
+
+/** True when trace.js would ask this shape exactly what the kernel computes: a listed class's own methods, with a packed form. */
 function plain(shape) {
-  const known = KNOWN.get(shape.constructor);
-  return known !== undefined && shape.hit === known.hit && shape.normalAt === known.normalAt;
+  return Boolean(plainClassOf(shape)?.packed);
 }
 
 /**
  * The scene packed, or null for trace.js to handle: when a shape is not a
- * plain Sphere, Plane or Box (a subclass, or a `hit` or `normalAt` of its
- * own, on the shape or its class), or when one shape was added twice (trace.js
+ * plain listed shape with a packed form (a subclass, or a `hit` or `normalAt`
+ * of its own, on the shape or its class), or when one shape was added twice (trace.js
  * tells shapes apart by identity, the kernel by their place in the list).
  */
 export function packScene(scene) {
@@ -181,14 +163,14 @@ export function tracePrimary(k, origin, direction, candidates, from, to) {
  * a double handed to a function the engine did not inline is boxed, per call.
  */
 const surface = scratchNumbers(10);
-const P = 0, N = 3, D = 6, INSIDE = 9;
+const D = 6, INSIDE = 9; // P and N: lib/shapes/packed.js
 
 /** trace(): the ray at `depth` in `rays`; its colour into `colors[out …]`. */
 function traceRay(k, depth, out, candidates, from, to) {
   const r = depth * 6, ox = rays[r], oy = rays[r + 1], oz = rays[r + 2], dx = rays[r + 3], dy = rays[r + 4], dz = rays[r + 5];
   let t = Infinity, object = -1;
   for (let n = from; n < to; n++) { // nearestHit
-    const i = candidates[n], ti = k.hit(k, i, ox, oy, oz, dx, dy, dz, k.epsilon);
+    const i = candidates[n], ti = k.hit(k.shapes, i * SHAPE, ox, oy, oz, dx, dy, dz, k.epsilon);
     if (ti < t) { t = ti; object = i; }
   }
   if (object < 0) {
@@ -205,7 +187,7 @@ function traceRay(k, depth, out, candidates, from, to) {
 
 /** surfaceAt: the unit normal at P, turned to face the ray, into `surface`. */
 function surfaceAt(k, object) {
-  normalAt(k, object);
+  k.normal(k.shapes, object * SHAPE, surface);
   const dx = surface[D], dy = surface[D + 1], dz = surface[D + 2];
   const inside = dx * surface[N] + dy * surface[N + 1] + dz * surface[N + 2] > 0;
   if (inside) { surface[N] = -surface[N]; surface[N + 1] = -surface[N + 1]; surface[N + 2] = -surface[N + 2]; } // shade the side the ray sees
@@ -299,7 +281,7 @@ function shadowRay(k, ox, oy, oz, dx, dy, dz, reach, light) {
   const beyond = outOfReach(k, reach);
   let transmission = 1;
   for (let i = 0; i < k.count; i++) {
-    if (i === lightObject || apart[row + i] > beyond || k.hit(k, i, ox, oy, oz, dx, dy, dz, k.epsilon) >= reach) continue;
+    if (i === lightObject || apart[row + i] > beyond || k.hit(k.shapes, i * SHAPE, ox, oy, oz, dx, dy, dz, k.epsilon) >= reach) continue;
     transmission *= k.materials[i * MATERIAL + TRANSPARENCY];
     if (transmission === 0) return 0;
   }
@@ -315,68 +297,12 @@ function specular(strength, shininess, Lx, Ly, Lz) {
   return rv > 0 ? strength * Math.pow(rv, shininess) : 0;
 }
 
-/** Shape `i`'s smallest t > tMin along the ray, or Infinity: its class's `hit`, in numbers. */
-function hitShape(k, i, ox, oy, oz, dx, dy, dz, tMin) {
-  const kind = k.kinds[i], s = k.shapes, b = i * SHAPE;
-  if (kind === SPHERE) return hitSphere(k, i, ox, oy, oz, dx, dy, dz, tMin);
-  if (kind === PLANE) return hitPlane(s, b, ox, oy, oz, dx, dy, dz, tMin);
-  return hitBox(s, b, ox, oy, oz, dx, dy, dz, tMin);
+/** The smallest t > tMin along the ray of the shape at `shapes[at]`, or Infinity: its kind's `hit`, in numbers. */
+function hitShape(s, at, ox, oy, oz, dx, dy, dz, tMin) {
+  return KINDS[s[at + KIND]].hit(s, at, ox, oy, oz, dx, dy, dz, tMin);
 }
 
-/** Sphere #i's hit (the geometric route, shared with Sphere#hit). */
-function hitSphere(k, i, ox, oy, oz, dx, dy, dz, tMin) {
-  const s = k.shapes, b = i * SHAPE;
-  return sphereHit(s[b], s[b + 1], s[b + 2], s[b + 3], ox, oy, oz, dx, dy, dz, tMin);
-}
-
-/** Plane #i's hit (shared with Plane#hit). */
-function hitPlane(s, b, ox, oy, oz, dx, dy, dz, tMin) {
-  return planeHit(s[b], s[b + 1], s[b + 2], s[b + 3], s[b + 4], s[b + 5], ox, oy, oz, dx, dy, dz, tMin);
-}
-
-/** Box#hit: the slabs, x then y then z. */
-function hitBox(s, b, ox, oy, oz, dx, dy, dz, tMin) {
-  slab[0] = -Infinity; slab[1] = Infinity;
-  if (!clipSlab(s[b], s[b + 3], ox, dx) || !clipSlab(s[b + 1], s[b + 4], oy, dy) || !clipSlab(s[b + 2], s[b + 5], oz, dz)) return Infinity;
-  const tNear = slab[0], tFar = slab[1];
-  if (tNear > tMin) return tNear;
-  return tFar > tMin ? tFar : Infinity; // the ray starts inside
-}
-
-/** [tNear, tFar] of the box's slabs so far. */
-const slab = scratchNumbers(2);
-
-/** Narrows `slab` by one axis' slab min…max; false when the ray misses it. */
-function clipSlab(min, max, o, d) {
-  if (d === 0) return !(o < min || o > max); // parallel: inside this slab or never
-  let t1 = (min - o) / d, t2 = (max - o) / d;
-  if (t1 > t2) { const swap = t1; t1 = t2; t2 = swap; }
-  if (t1 > slab[0]) slab[0] = t1;
-  if (t2 < slab[1]) slab[1] = t2;
-  return !(slab[0] > slab[1]);
-}
-
-/** The unit normal of shape `object` at P, facing out, into `surface`: its class's `normalAt`. */
-function normalAt(k, object) {
-  const s = k.shapes, b = object * SHAPE, kind = k.kinds[object];
-  if (kind === SPHERE) {
-    const x = surface[P] - s[b], y = surface[P + 1] - s[b + 1], z = surface[P + 2] - s[b + 2];
-    const length = Math.sqrt(x * x + y * y + z * z), scale = length > 0 ? 1 / length : 0;
-    surface[N] = x * scale; surface[N + 1] = y * scale; surface[N + 2] = z * scale;
-  } else if (kind === PLANE) {
-    surface[N] = s[b + 3]; surface[N + 1] = s[b + 4]; surface[N + 2] = s[b + 5];
-  } else {
-    boxNormal(s, b);
-  }
-}
-
-/** Box#normalAt: the axis of the nearest face, x then y then z, min face before max face. */
-function boxNormal(s, b) {
-  let best = Infinity;
-  surface[N] = 0; surface[N + 1] = 1; surface[N + 2] = 0;
-  for (let a = 0; a < 3; a++) {
-    const toMin = Math.abs(surface[P + a] - s[b + a]), toMax = Math.abs(surface[P + a] - s[b + 3 + a]);
-    if (toMin < best) { best = toMin; surface[N] = 0; surface[N + 1] = 0; surface[N + 2] = 0; surface[N + a] = -1; }
-    if (toMax < best) { best = toMax; surface[N] = 0; surface[N + 1] = 0; surface[N + 2] = 0; surface[N + a] = 1; }
-  }
+/** The unit normal at P of the shape at `shapes[at]`, facing out, into `surface`: its kind's `normalAt`, in numbers. */
+function normalShape(s, at, out) {
+  KINDS[s[at + KIND]].normal(s, at, out);
 }

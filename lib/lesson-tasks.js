@@ -12,7 +12,8 @@
  *   { type: 'answer', ok, answer }                the activity's Check gave its verdict on
  *                                                 `answer`, the line in the slide's format
  *   { type: 'check', passed }                     a homework self-check ran
- * Every event also carries `mode`, `renderMode` and `parts` (the page's other
+ * Every event also carries `mode` (visual), `order` (the render order; `renderMode`,
+ * its old name, too) and `parts` (the page's other
  * views: `photons`, `sceneView`, `animation`). `memory` is the task's own
  * object for this visit to the page (for "two different answers").
  * Pure: runs in Node, so every task is tested against the real scenes.
@@ -144,7 +145,7 @@ export const LESSONS = [
       hint: 'The light is up on the left: the shadow falls on the ground to the right of and behind the pink sphere.',
       done: (e) => selected(e) && hitName(e) === 'ground' && inShadowOf(e.record, e.scene, 'pink') },
     { id: 'slow', text: 'Watch the rays one at a time: slow motion.',
-      hint: 'Tick "Slow motion" under the picture.', done: (e) => e.renderMode === 'slow' },
+      hint: 'Tick "Slow motion" under the picture.', done: (e) => e.order === 'slow' },
   ] },
   { page: '02', title: 'The quadratic', tasks: [
     { id: 'negative', text: 'Find a pixel whose discriminant B² − 4AC is negative: no hit.',

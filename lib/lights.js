@@ -2,7 +2,8 @@
  * Lights. A point light is a position and a colour; an emissive object (a
  * sphere whose material has an emission) is a light too, at its centre.
  */
-import { toVec3, Vec3 } from './vec3.js';
+import { toVec3 } from './vec3.js';
+import { middleOf } from './shapes/index.js';
 import { toColor, MAX_COLOR } from './color.js';
 import { finiteNumber, checkOptions, show } from './check.js';
 
@@ -47,18 +48,10 @@ function isOptions(value) {
 
 /**
  * The scene's light sources as `{ position, emission, object }`: point lights
- * (object null) and emissive objects (their centre, or for other shapes their
- * middle; object is the shape itself, which a shadow ray may not block).
+ * (object null) and emissive objects (their `middle()`: a sphere's centre, a
+ * box's middle; object is the shape itself, which a shadow ray may not block).
  */
 export function lightSource(item) {
   if (item instanceof PointLight) return { position: item.position, emission: item.emission, object: null, source: item };
-  const position = item.center ?? middle(item);
-  return { position, emission: item.material.emission, object: item, source: item };
-}
-
-function middle(item) {
-  if (item.min && item.max) {
-    return new Vec3((item.min.x + item.max.x) / 2, (item.min.y + item.max.y) / 2, (item.min.z + item.max.z) / 2);
-  }
-  return item.point ?? new Vec3();
+  return { position: middleOf(item), emission: item.material.emission, object: item, source: item };
 }

@@ -10,7 +10,8 @@
 import { Ray } from './ray.js';
 import { copy, scaleAndAdd, Vec3 } from './vec3.js';
 import { angles, horizontalAngle, verticalAngle } from './camera.js';
-import { intersectQuadratic, Sphere } from './shapes/sphere.js';
+import { intersectQuadratic } from './shapes/sphere.js';
+import { ballOf } from './shapes/index.js';
 import { nearestHit } from './trace.js';
 import { shapeName } from './scene.js';
 import { renderPixel } from './render.js';
@@ -140,8 +141,8 @@ export function sphereFocus(objects, ray, out = { index: -1, discriminant: 0, ro
   out.index = -1;
   out.discriminant = -Infinity;
   for (let i = 0; i < objects.length; i++) {
-    const sphere = objects[i];
-    if (!(sphere instanceof Sphere)) continue;
+    const sphere = ballOf(objects[i]); // the quadratic is a ball's
+    if (!sphere) continue;
     const q = intersectQuadratic(ray, sphere, _quadratic);
     let take;
     if (q.t !== null) {
@@ -250,7 +251,7 @@ export function depthRange(scene, camera) {
  * patch of ground?": other questions, other thresholds.)
  */
 export function isHuge(object) {
-  return object instanceof Sphere && object.radius >= 100;
+  return (ballOf(object)?.radius ?? 0) >= 100;
 }
 
 /* ---- legends ---- */

@@ -11,6 +11,7 @@
 import { Vec3, dot, normalize, set } from './vec3.js';
 import { Ray } from './ray.js';
 import { Sphere } from './shapes/sphere.js';
+import { ballOf } from './shapes/index.js';
 import { nearestHit } from './trace.js';
 import { checkOptions, positiveInteger, show } from './check.js';
 
@@ -109,7 +110,8 @@ export class PhotonTracer {
     while (this.#lightShare[li] < u) li++;
     const light = this.lights[li];
     power[0] = light.emission[0]; power[1] = light.emission[1]; power[2] = light.emission[2];
-    const from = light.object instanceof Sphere ? this.#leaveSphere(light.object, ray) : this.#leavePoint(light.position, ray);
+    const ball = light.object && ballOf(light.object);
+    const from = ball ? this.#leaveSphere(ball, ray) : this.#leavePoint(light.position, ray);
     const keep = this.paths.length < this.samplePaths;
     const points = keep || this.#pathsReached < this.samplePaths ? [from] : null;
     for (let bounce = 0; bounce <= this.maxBounces; bounce++) {

@@ -212,13 +212,19 @@ export class ProgressiveRenderer {
     return this.#tracingMs > 0 ? (this.#traced * 1000) / this.#tracingMs : 0;
   }
 
-  /**
-   * 'coarse': the block size of the pass under way (16, 8, 4, 2, 1; 1 when done).
-   * 'scanline' and 'slow': the row being traced (height when done).
-   */
-  get pass() {
-    if (this.mode === 'coarse') return this.#passes[this.#passIndex];
+  /** The block size of the coarse pass under way: 16, 8, 4, 2, 1 (1 when done; always 1 in the 'scanline' and 'slow' orders). */
+  get blockSize() {
+    return this.mode === 'coarse' ? this.#passes[this.#passIndex] : 1;
+  }
+
+  /** The row being traced (height when done): in 'scanline' and 'slow' the rows above it are finished. */
+  get row() {
     return this.#done ? this.height : this.#y;
+  }
+
+  /** @deprecated `blockSize` in the 'coarse' order, `row` in the others: one name for two ideas, kept for old sketches. */
+  get pass() {
+    return this.mode === 'coarse' ? this.blockSize : this.row;
   }
 
   /**

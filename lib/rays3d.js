@@ -11,7 +11,7 @@
  * so the view may show it further out, where it is big enough to see.
  */
 import { Vec3, dot, cross, normalize, scaleAndAdd, sub, reflect, length } from './vec3.js';
-import { Sphere } from './shapes/sphere.js';
+import { ballOf } from './shapes/index.js';
 import { nearestHit } from './trace.js';
 import { Ray } from './ray.js';
 import { show } from './check.js';
@@ -189,10 +189,9 @@ export function geometricConstruction(ray, sphere, geometric) {
 export function sceneBounds(scene, camera, planeDistance) {
   const pts = [camera.position, ...imagePlane(camera, planeDistance).corners];
   for (const o of scene.objects) {
-    if (o instanceof Sphere) {
-      if (o.radius > HUGE_RADIUS) continue;
-      for (const s of [-1, 1]) pts.push(new Vec3(o.center.x + s * o.radius, o.center.y + s * o.radius, o.center.z + s * o.radius));
-    } else if (o.min) pts.push(o.min, o.max);
+    if (ballOf(o)?.radius > HUGE_RADIUS) continue;
+    const box = o.bounds();
+    if (box) pts.push(box.min, box.max);
   }
   for (const l of scene.lights) pts.push(l.position);
   const min = new Vec3(Infinity, Infinity, Infinity), max = new Vec3(-Infinity, -Infinity, -Infinity);

@@ -1,13 +1,18 @@
 /**
- * A whole frame into an RGBA buffer: one primary ray per pixel, traced by
- * `trace`, written as bytes the way the inspector writes them too.
+ * A whole frame into an RGBA buffer, tile by tile: each primary ray is tested
+ * only against the shapes that can be under its tile (bounds.js), and traced
+ * by the fast kernel over the packed scene (kernel.js) or, when the scene does
+ * not pack, by trace.js: the same bytes either way. One ray per pixel, or the
+ * camera's `samples` averaged. Colours become bytes in one place, writePixel,
+ * which the inspector uses too.
  */
 import { Ray } from './ray.js';
 import { copy } from './vec3.js';
 import { trace } from './trace.js';
 import { tileCandidates, TILE } from './bounds.js';
 import { Scene } from './scene.js';
-import { Camera } from './camera.js';
+import { Camera, sampleOffsets } from './camera.js';
+import { clamp } from './numbers.js';
 import { show, pixelCoordinate } from './check.js';
 import { packScene, tracePrimary } from './kernel.js';
 
@@ -87,6 +92,10 @@ export function renderRows(scene, camera, target, y0, y1, prepared) {
 function renderTile(scene, camera, target, objects, x0, y0, x1, y1) {
   for (let y = y0; y < y1; y++) {
     for (let x = x0, i = (y * camera.width + x0) * 4; x < x1; x++, i += 4) {
+      if (camera.samples > 1) {
+        writePixel(target, i, traceSamples(scene, camera, x, y, objects));
+        continue;
+      }
       camera.directionAt(x, y, _ray.direction);
       trace(scene, _ray, _color, undefined, 0, objects);
       writePixel(target, i, _color);
@@ -107,6 +116,10 @@ function renderPackedTile(prepared, tile, camera, target, x0, y0, x1, y1) {
  * go to `target` at `i`, the pixel's own place when left out.
  */
 export function renderPackedPixel(prepared, tile, camera, x, y, target, i = (y * camera.width + x) * 4) {
+  if (camera.samples > 1) {
+    writePixel(target, i, tracePackedSamples(prepared, tile, camera, x, y));
+    return;
+  }
   const d = camera.directionAt(x, y, _ray.direction);
   const color = tracePrimary(prepared.packed, camera.position, d, prepared.candidates, prepared.starts[tile], prepared.starts[tile + 1]);
   writePixel(target, i, color);
@@ -118,9 +131,51 @@ export function renderPackedPixel(prepared, tile, camera, x, y, target, i = (y *
  */
 export function renderPixel(scene, camera, x, y, target, objects = scene.objects) {
   copy(_ray.origin, camera.position);
+  if (camera.samples > 1) {
+    writePixel(target, (y * camera.width + x) * 4, traceSamples(scene, camera, x, y, objects));
+    return;
+  }
   camera.directionAt(x, y, _ray.direction);
   trace(scene, _ray, _color, undefined, 0, objects);
   writePixel(target, (y * camera.width + x) * 4, _color);
+}
+
+/**
+ * Several rays per pixel (camera.samples > 1): the average of the colours of
+ * the rays through the centres of the pixel's n × n cells, each clamped to
+ * 0–1 first (what that ray alone would show), so an edge pixel is the share
+ * of its cells that see each side. Reused array: read it before the next call.
+ */
+function traceSamples(scene, camera, x, y, objects) {
+  const offsets = sampleOffsets(camera.samples);
+  _average[0] = _average[1] = _average[2] = 0;
+  for (let s = 0; s < offsets.length; s += 2) {
+    camera.directionAt(x + offsets[s], y + offsets[s + 1], _ray.direction);
+    addClamped(_average, trace(scene, _ray, _color, undefined, 0, objects));
+  }
+  return divide(_average, offsets.length / 2);
+}
+
+/** traceSamples by the fast path (lib/kernel.js). */
+function tracePackedSamples(prepared, tile, camera, x, y) {
+  const offsets = sampleOffsets(camera.samples);
+  _average[0] = _average[1] = _average[2] = 0;
+  for (let s = 0; s < offsets.length; s += 2) {
+    const d = camera.directionAt(x + offsets[s], y + offsets[s + 1], _ray.direction);
+    addClamped(_average, tracePrimary(prepared.packed, camera.position, d, prepared.candidates, prepared.starts[tile], prepared.starts[tile + 1]));
+  }
+  return divide(_average, offsets.length / 2);
+}
+
+const _average = [0.5, 0.5, 0.5];
+
+function addClamped(sum, color) {
+  sum[0] += clamp(color[0], 0, 1); sum[1] += clamp(color[1], 0, 1); sum[2] += clamp(color[2], 0, 1);
+}
+
+function divide(sum, n) {
+  sum[0] /= n; sum[1] /= n; sum[2] /= n;
+  return sum;
 }
 
 /** Colour (0–1, clamped) to bytes; the one place a float colour becomes a pixel. */

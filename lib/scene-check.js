@@ -11,9 +11,7 @@ import { Scene } from './scene.js';
 import { Camera } from './camera.js';
 import { Material } from './material.js';
 import { PointLight } from './lights.js';
-import { Sphere } from './shapes/sphere.js';
-import { Plane } from './shapes/plane.js';
-import { Box } from './shapes/box.js';
+import { classOf } from './shapes/index.js';
 import { toColor } from './color.js';
 import { show, withPath } from './check.js';
 
@@ -38,8 +36,8 @@ export function checkScene(scene) {
  * @param {Camera} camera
  */
 export function checkCamera(camera) {
-  const { width, height, fov, position, yaw, pitch } = camera;
-  withPath(() => new Camera({ width, height, fov, position, yaw, pitch }), 'camera.');
+  const { width, height, fov, position, yaw, pitch, samples } = camera;
+  withPath(() => new Camera({ width, height, fov, position, yaw, pitch, samples }), 'camera.');
 }
 
 /** The scene's own options as they are now. */
@@ -48,19 +46,17 @@ function sceneOptions({ background, ambient, shadows, bias, epsilon, maxDepth, s
 }
 
 /**
- * One shape: a Sphere, Plane or Box by its own constructor on its fields; a
- * shape of the sketch's own (a `hit` and `normalAt` of its own) by its
- * material alone.
+ * One shape: a listed shape (a Sphere, Plane, Box, …) rebuilt by its class's
+ * own `build` from its fields as they are now; a shape of the sketch's own
+ * (the protocol's methods of its own) by its material alone.
  */
 function checkShape(o, path) {
   if (o === null || typeof o !== 'object' || typeof o.hit !== 'function') {
-    throw new TypeError(`${path} must be a Sphere, Plane or Box, got ${show(o)}`);
+    throw new TypeError(`${path} must be a shape (a Sphere, Plane, Box, … with hit, normalAt, intersect and bounds), got ${show(o)}`);
   }
   const material = checkMaterial(o.material, `${path}.material`);
-  const build = o instanceof Sphere ? () => new Sphere(o.center, o.radius, material)
-    : o instanceof Plane ? () => new Plane(o.point, o.normal, material)
-      : o instanceof Box ? () => new Box(o.min, o.max, material) : null;
-  if (build) withPath(build, `${path}.`);
+  const Shape = classOf(o);
+  if (Shape) withPath(() => Shape.build(o, material), `${path}.`);
   if (o.name !== undefined && typeof o.name !== 'string') throw new TypeError(`${path}.name must be text, got ${show(o.name)}`);
 }
 

@@ -4,11 +4,10 @@
  */
 import { toColor } from './color.js';
 import { numberInRange, bool, show, checkOptions } from './check.js';
-import { Sphere } from './shapes/sphere.js';
 import { EPSILON } from './constants.js';
-import { Plane } from './shapes/plane.js';
-import { Box } from './shapes/box.js';
+import { isShape, ballOf, kindOf } from './shapes/index.js';
 import { PointLight, lightSource } from './lights.js';
+import { AreaLight } from './area-light.js';
 
 /** The options a scene takes. */
 const OPTIONS = ['background', 'ambient', 'shadows', 'bias', 'epsilon', 'maxDepth', 'specular'];
@@ -46,15 +45,17 @@ export class Scene {
     this.lights = [];
   }
 
-  /** Adds a Sphere, Plane, Box or PointLight; returns the scene (chainable). */
+  /** Adds a shape (a Sphere, Plane, Box or any object with the shape protocol, lib/shapes/index.js) or a PointLight; returns the scene (chainable). */
   add(item) {
     if (item instanceof PointLight) {
       this.lights.push(lightSource(item));
-    } else if (item instanceof Sphere || item instanceof Plane || item instanceof Box) {
+    } else if (item instanceof AreaLight) {
+      this.lights.push(...item.sources()); // one point light per sample of the disc
+    } else if (isShape(item)) {
       this.objects.push(item);
       if (item.material.isEmissive) this.lights.push(lightSource(item));
     } else {
-      throw new TypeError(`scene.add takes a Sphere, Plane, Box or PointLight, got ${show(item)}`);
+      throw new TypeError(`scene.add takes a shape (a Sphere, Plane, Box, … with hit, normalAt, intersect, bounds and a material), a PointLight or an AreaLight, got ${show(item)}`);
     }
     return this;
   }
@@ -66,9 +67,9 @@ export class Scene {
     return this;
   }
 
-  /** Every sphere, in order (the inspector tests each of them). */
+  /** Every sphere (every ball), in order: the inspector tests each of them by both routes. */
   get spheres() {
-    return this.objects.filter((o) => o instanceof Sphere);
+    return this.objects.filter((o) => ballOf(o) !== null);
   }
 }
 
@@ -85,15 +86,24 @@ export class Scene {
  */
 export function shapeName(object, objects) {
   if (object?.name) return object.name;
-  const kind = KINDS.find(([type]) => object instanceof type);
-  const same = kind ? objects.filter((o) => o instanceof kind[0]) : objects;
+  const word = kindOf(object);
+  const same = word === 'object' ? objects : objects.filter((o) => kindOf(o) === word);
   const number = same.indexOf(object) + 1;
-  const word = kind ? kind[1] : 'object';
   return number > 0 ? `${word} ${number}` : word;
 }
 
 /**
- * Each kind of shape and its word (by class, not by class name: a minified build renames classes).
- * @type {[Function, string][]}
+ * shapeName of every shape of `objects`, in one pass (a 10,000-shape scene
+ * would take 10,000 passes one shape at a time).
+ * @param {readonly object[]} objects the scene's shapes, in order
+ * @returns {string[]}
  */
-const KINDS = [[Sphere, 'sphere'], [Plane, 'plane'], [Box, 'box']];
+export function shapeNames(objects) {
+  const counts = new Map(), numbers = new Map(); // per kind word: how many so far; per shape: its number (the first place it stands)
+  objects.forEach((o, i) => {
+    const word = kindOf(o), n = word === 'object' ? i + 1 : (counts.get(word) ?? 0) + 1;
+    counts.set(word, n);
+    if (!numbers.has(o)) numbers.set(o, n);
+  });
+  return objects.map((o) => (o?.name ? o.name : `${kindOf(o)} ${numbers.get(o)}`));
+}

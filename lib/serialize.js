@@ -4,33 +4,33 @@
  * and a scene as readable code that rebuilds it with the public API.
  *
  * Scene JSON: `{ background, ambient, shadows, bias, epsilon, maxDepth, specular, objects }`,
- * `objects` in the order they were added, each one of
+ * `objects` in the order they were added, each one a shape's own `toJSON()`
+ * (lib/shapes/: its `type`, `name`, the fields its class lists, `material`), e.g.
  *   `{ type: 'sphere', name, center, radius, material }`
  *   `{ type: 'plane', name, point, normal, material }`
  *   `{ type: 'box', name, min, max, material }`
- *   `{ type: 'pointLight', name, position, color, intensity }`
+ * or `{ type: 'pointLight', name, position, color, intensity }`,
  * with `material` = `{ color, emission, reflection, transparency, ior, specular, shininess }`.
  */
 import { Scene } from './scene.js';
 import { Camera } from './camera.js';
 import { Material } from './material.js';
 import { PointLight } from './lights.js';
-import { Sphere } from './shapes/sphere.js';
-import { Plane } from './shapes/plane.js';
-import { Box } from './shapes/box.js';
+import { shapeClass, shapeClasses, className } from './shapes/index.js';
+import { vector } from './shapes/json.js';
 import { checkOptions, show, withPath as named } from './check.js';
 
 const SCENE_FIELDS = ['background', 'ambient', 'shadows', 'bias', 'epsilon', 'maxDepth', 'specular', 'objects'];
 const MATERIAL_FIELDS = ['color', 'emission', 'reflection', 'transparency', 'ior', 'specular', 'shininess'];
-const CAMERA_FIELDS = ['width', 'height', 'fov', 'position', 'yaw', 'pitch'];
+const CAMERA_FIELDS = ['width', 'height', 'fov', 'position', 'yaw', 'pitch', 'samples'];
 
-/** Each type: its JSON fields, and how to build it from them. */
-const TYPES = {
-  sphere: { fields: ['center', 'radius', 'material'], build: (o, m) => new Sphere(o.center, o.radius, m) },
-  plane: { fields: ['point', 'normal', 'material'], build: (o, m) => new Plane(o.point, o.normal, m) },
-  box: { fields: ['min', 'max', 'material'], build: (o, m) => new Box(o.min, o.max, m) },
-  pointLight: { fields: ['position', 'color', 'intensity'], build: (o) => new PointLight(o.position, o.color, o.intensity) },
-};
+/** The point light's JSON fields, and how to build it from them (each shape class says its own). */
+const POINT_LIGHT = { type: 'pointLight', fields: ['position', 'color', 'intensity'], build: (o) => new PointLight(o.position, o.color, o.intensity) };
+
+/** The kind of object a JSON `type` names: a listed shape class or the point light; undefined for none. */
+function kindOfType(type) {
+  return type === POINT_LIGHT.type ? POINT_LIGHT : shapeClass(type);
+}
 
 /**
  * The scene as plain JSON-ready data (numbers, booleans, strings, arrays).
@@ -69,8 +69,10 @@ export function sceneFromJSON(json, options) {
 /** The camera as plain JSON-ready data. */
 export function cameraToJSON(camera) {
   if (!(camera instanceof Camera)) throw new TypeError(`camera must be a Camera, got ${show(camera)}`);
-  const { width, height, fov, position, yaw, pitch } = camera;
-  return { width, height, fov, position: vector(position), yaw, pitch };
+  const { width, height, fov, position, yaw, pitch, samples } = camera;
+  const json = { width, height, fov, position: vector(position), yaw, pitch };
+  if (samples !== 1) json.samples = samples; // one ray per pixel, the usual: links and files stay as they were
+  return json;
 }
 
 /** A Camera from JSON data or text, checked; errors name the field. */
@@ -106,8 +108,8 @@ export function sceneToCode(scene, options) {
 export function* sceneCodeLines(scene, { importFrom = '../lib/index.js' } = {}) {
   if (!(scene instanceof Scene)) throw new TypeError(`scene must be a Scene, got ${show(scene)}`);
   const items = addOrder(scene);
-  const used = new Set(['Scene', ...items.map(className)]);
-  const order = ['Scene', 'Sphere', 'Plane', 'Box', 'PointLight'].filter((n) => used.has(n));
+  const used = new Set(['Scene', ...items.map(itemClassName)]);
+  const order = ['Scene', ...shapeClasses().map((Shape) => className(Shape.type)), 'PointLight'].filter((n) => used.has(n));
   const fields = sceneFieldsOf(scene);
   yield `import { ${order.join(', ')} } from ${quote(importFrom)};\n`;
   yield '\n';
@@ -125,13 +127,10 @@ export function* sceneCodeLines(scene, { importFrom = '../lib/index.js' } = {}) 
   }
 }
 
-/** The class a scene item is built with, in the code. */
-function className(item) {
-  if (item instanceof Sphere) return 'Sphere';
-  if (item instanceof Plane) return 'Plane';
-  if (item instanceof Box) return 'Box';
+/** The class an item is built with in the code ('Sphere', 'PointLight'), read without writing its JSON where its class says it. */
+function itemClassName(item) {
   if (item instanceof PointLight) return 'PointLight';
-  throw new TypeError(`scene objects must be spheres, planes, boxes or point lights, got ${show(item)}`);
+  return className(shapeClasses().includes(item?.constructor) ? item.constructor.type : objectToJSON(item).type);
 }
 
 /** A scene's own fields as JSON (all but its objects). */
@@ -167,23 +166,10 @@ export function addOrder(scene) {
 
 /** One shape's or point light's JSON, as sceneToJSON writes it. */
 export function objectToJSON(item) {
-  const name = item.name ?? '';
-  if (item instanceof Sphere) return { type: 'sphere', name, center: vector(item.center), radius: item.radius, material: materialToJSON(item.material) };
-  if (item instanceof Plane) return { type: 'plane', name, point: vector(item.point), normal: vector(item.normal), material: materialToJSON(item.material) };
-  if (item instanceof Box) return { type: 'box', name, min: vector(item.min), max: vector(item.max), material: materialToJSON(item.material) };
-  if (item instanceof PointLight) return { type: 'pointLight', name, position: vector(item.position), color: [...item.color], intensity: item.intensity };
-  throw new TypeError(`scene objects must be spheres, planes, boxes or point lights, got ${show(item)}`);
-}
-
-function materialToJSON(m) {
-  return {
-    color: [...m.color], emission: [...m.emission], reflection: m.reflection, transparency: m.transparency,
-    ior: m.ior, specular: m.specular, shininess: m.shininess,
-  };
-}
-
-function vector(v) {
-  return [v.x, v.y, v.z];
+  if (item instanceof PointLight) return { type: 'pointLight', name: item.name ?? '', position: vector(item.position), color: [...item.color], intensity: item.intensity };
+  const json = typeof item?.toJSON === 'function' ? item.toJSON() : null;
+  if (json && shapeClass(json.type)) return json;
+  throw new TypeError(`scene objects must be spheres, planes, boxes or point lights (or other listed shapes, with a toJSON), got ${show(item)}`);
 }
 
 /* ---- from JSON ---- */
@@ -256,10 +242,11 @@ function onlyFields(data, allowed, path) {
 export function objectFromJSON(given, path) {
   if (given === null || typeof given !== 'object' || Array.isArray(given)) throw new TypeError(`${path} must be an object, got ${show(given)}`);
   const type = Object.hasOwn(given, 'type') ? given.type : undefined;
-  if (typeof type !== 'string' || !Object.hasOwn(TYPES, type)) { // ["sphere"] is not "sphere"
-    throw new TypeError(`${path}.type must be one of ${Object.keys(TYPES).map((t) => `"${t}"`).join(', ')}, got ${show(type)}`);
+  const kind = typeof type === 'string' ? kindOfType(type) : undefined; // ["sphere"] is not "sphere"
+  if (!kind) {
+    const types = [...shapeClasses().map((Shape) => Shape.type), POINT_LIGHT.type];
+    throw new TypeError(`${path}.type must be one of ${types.map((t) => `"${t}"`).join(', ')}, got ${show(type)}`);
   }
-  const kind = TYPES[type];
   const o = onlyFields(given, ['type', 'name', ...kind.fields], path);
   if (o.name !== undefined && typeof o.name !== 'string') throw new TypeError(`${path}.name must be a string, got ${show(o.name)}`);
   let material;
@@ -283,20 +270,20 @@ function sceneOptions(data) {
   return withoutDefaults(data, SCENE_DEFAULTS);
 }
 
+/** `new Sphere(…)` for one object's JSON: its class's fields in the order the constructor takes them, defaults left out. */
 function constructorCall(o) {
-  const args = {
-    sphere: () => [o.center, o.radius, o.material],
-    plane: () => [o.point, o.normal, o.material],
-    box: () => [o.min, o.max, o.material],
-    pointLight: () => [o.position, isWhite(o.color) && o.intensity === 1 ? undefined : o.color, o.intensity === 1 ? undefined : o.intensity],
-  }[o.type]();
-  if (o.material) {
-    const m = withoutDefaults(o.material, MATERIAL_DEFAULTS);
-    args[args.length - 1] = Object.keys(m).length ? m : undefined;
-  }
+  const args = o.type === POINT_LIGHT.type
+    ? [o.position, isWhite(o.color) && o.intensity === 1 ? undefined : o.color, o.intensity === 1 ? undefined : o.intensity]
+    : shapeClass(o.type).fields.map((field) => (field === 'material' ? materialArgument(o.material) : o[field]));
   while (args.length && args.at(-1) === undefined) args.pop();
-  const cls = { sphere: 'Sphere', plane: 'Plane', box: 'Box', pointLight: 'PointLight' }[o.type];
-  return `new ${cls}(${args.map((a, i) => literal(a, o.type === 'pointLight' && i === 1)).join(', ')})`;
+  return `new ${className(o.type)}(${args.map((a, i) => literal(a, o.type === POINT_LIGHT.type && i === 1)).join(', ')})`;
+}
+
+/** A material as the code writes it: only what differs from the defaults, or nothing. */
+function materialArgument(material) {
+  if (!material) return undefined;
+  const m = withoutDefaults(material, MATERIAL_DEFAULTS);
+  return Object.keys(m).length ? m : undefined;
 }
 
 const isWhite = (c) => c[0] === 1 && c[1] === 1 && c[2] === 1;
@@ -344,7 +331,7 @@ function colorLiteral(rgb) {
 function identifier(name, taken) {
   const words = name.replace(/[^A-Za-z0-9_$ ]+/g, ' ').trim().split(/\s+/).filter(Boolean);
   let id = words.map((w, i) => (i ? w[0].toUpperCase() + w.slice(1) : w.toLowerCase())).join('') || 'object';
-  if (/^[0-9]/.test(id) || RESERVED.has(id)) id = `_${id}`;
+  if (/^[0-9]/.test(id) || RESERVED.has(id) || shapeClasses().some((Shape) => className(Shape.type) === id)) id = `_${id}`;
   let unique = id;
   for (let n = 2; taken.has(unique); n++) unique = `${id}${n}`;
   taken.add(unique);

@@ -38,8 +38,8 @@ new p5((p) => {
     p.createCanvas(600, 640).parent('diagram');
     p.pixelDensity(1);
     const eye = new Camera({ width: WIDTH, height: HEIGHT, fov: FOV });
-    view = p.createTracerView({ scene: makeScene(), camera: eye, parent: 'picture', scale: 16, grid: true, renderMode: 'scanline', label: `The screen: ${WIDTH} × ${HEIGHT} pixels` });
-    view.renderer.slowRaysPerStep = SLOW_RAYS_PER_FRAME;
+    view = p.createTracerView({ scene: makeScene(), camera: eye, parent: 'picture', scale: 16, grid: true, order: 'scanline', label: `The screen: ${WIDTH} × ${HEIGHT} pixels` });
+    view.slowRaysPerStep = SLOW_RAYS_PER_FRAME; // slow motion: rays traced per frame
     p.createInspector({ view, parent: 'picture' });
     p.createSceneView({ view, parent: 'diagram', width: 600, height: 420, label: 'The same rays in 3D: drag to turn, h / v for a whole row / column' });
 
@@ -49,7 +49,7 @@ new p5((p) => {
     const controls = p.createDiv().class('controls').parent('picture');
     slow.parent(controls); again.parent(controls);
     view.figure.after(controls.elt);
-    slow.changed(() => view.setRenderMode(slow.checked() ? 'slow' : 'scanline'));
+    slow.changed(() => view.setOrder(slow.checked() ? 'slow' : 'scanline'));
     again.elt.addEventListener('click', () => view.restart()); // a click, Enter or Space (p5's mousePressed is the mouse only)
 
     // Pointing at a pixel shows its ray; leaving the picture shows the selected one again.
@@ -60,7 +60,7 @@ new p5((p) => {
 
   p.draw = () => {
     // Which ray to draw: the one being traced (slow motion), else the pixel pointed at, else the selected one.
-    const tracing = view.renderMode === 'slow' && !view.done ? view.renderer.current : null;
+    const tracing = view.order === 'slow' && !view.done ? view.current : null;
     const pixel = tracing ?? hovered ?? view.selected;
     const shownKey = pixel ? `${pixel.x},${pixel.y}` : 'none';
     if (shownKey === shown) return; // nothing new to draw

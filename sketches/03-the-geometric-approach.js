@@ -10,7 +10,7 @@
  */
 import p5 from 'p5';
 import { Camera, Scene, Sphere, PointLight, intersectQuadratic, intersectGeometric } from '../lib/index.js';
-import { fmt } from '../lib/p5/index.js'; // and the sketchbook's p5 addon: p.createTracerView, …
+import { formatLabel } from '../lib/p5/index.js'; // and the sketchbook's p5 addon: p.createTracerView, …
 
 // The worksheet's sphere, an eye outside it and an eye inside it (past its centre, a little high).
 const SPHERE_CENTER = [0, 0, -20], SPHERE_RADIUS = 4, COLOR = [1, 0.32, 0.36];
@@ -74,19 +74,19 @@ new p5((p) => {
     const head = document.createElement('tr');
     head.append(cell('th', ''), cell('th', 'quadratic'), cell('th', 'geometric'));
     p.select('#compare').elt.replaceChildren(cell('caption', 'The same ray, both routes'), head,
-      row('hit if > 0', `B² − 4AC = ${fmt(q.discriminant, 2)}`, `r² − d² = ${fmt(SPHERE_RADIUS ** 2 - g.d2, 2)}`),
-      row('t0', fmt(q.t0, 3), fmt(g.t0, 3)), row('t1', fmt(q.t1, 3), fmt(g.t1, 3)),
-      row('t', fmt(q.t, 3), fmt(g.t, 3), 't'));
+      row('hit if > 0', `B² − 4AC = ${formatLabel(q.discriminant, 2)}`, `r² − d² = ${formatLabel(SPHERE_RADIUS ** 2 - g.d2, 2)}`),
+      row('t0', formatLabel(q.t0, 3), formatLabel(g.t0, 3)), row('t1', formatLabel(q.t1, 3), formatLabel(g.t1, 3)),
+      row('t', formatLabel(q.t, 3), formatLabel(g.t, 3), 't'));
   }
 
   /** One sentence about this ray: which rule decides, with its numbers. */
   function explain(g) {
     const inside = g.d2 + g.tca * g.tca < SPHERE_RADIUS ** 2; // |L| < r
     const sentence = inside
-      ? `The eye is inside the sphere (|L| < r). tca = ${fmt(g.tca, 2)}${g.tca < 0 ? ' < 0, yet' : ', and'} the ray hits at t = tca + thc = ${fmt(g.tca, 2)} + ${fmt(g.thc, 2)} = ${fmt(g.t, 2)}.`
-      : g.tca < 0 ? `tca = ${fmt(g.tca, 2)} < 0 and the eye is outside: the sphere is behind the eye, no intersection.`
-        : g.roots === 0 ? `d = ${fmt(Math.sqrt(g.d2), 2)} > r = ${SPHERE_RADIUS}: the ray passes the sphere by, no intersection.`
-          : `tca = ${fmt(g.tca, 2)} ≥ 0 and d ≤ r: the ray hits first at t = tca − thc = ${fmt(g.t, 2)}.`;
+      ? `The eye is inside the sphere (|L| < r). tca = ${formatLabel(g.tca, 2)}${g.tca < 0 ? ' < 0, yet' : ', and'} the ray hits at t = tca + thc = ${formatLabel(g.tca, 2)} + ${formatLabel(g.thc, 2)} = ${formatLabel(g.t, 2)}.`
+      : g.tca < 0 ? `tca = ${formatLabel(g.tca, 2)} < 0 and the eye is outside: the sphere is behind the eye, no intersection.`
+        : g.roots === 0 ? `d = ${formatLabel(Math.sqrt(g.d2), 2)} > r = ${SPHERE_RADIUS}: the ray passes the sphere by, no intersection.`
+          : `tca = ${formatLabel(g.tca, 2)} ≥ 0 and d ≤ r: the ray hits first at t = tca − thc = ${formatLabel(g.t, 2)}.`;
     p.select('#now').elt.textContent = sentence;
   }
 }, document.getElementById('sketch'));

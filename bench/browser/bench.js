@@ -62,7 +62,7 @@ function instrument(view) {
     const tracedBefore = renderer.traced;
     draw();
     const end = performance.now();
-    const frame = { start, end, step: probe.stepMs, draw: end - start, traced: renderer.traced - tracedBefore, shown: renderer.traced, pass: renderer.pass, done: renderer.done };
+    const frame = { start, end, step: probe.stepMs, draw: end - start, traced: renderer.traced - tracedBefore, shown: renderer.traced, blockSize: renderer.blockSize, done: renderer.done };
     probe.frames.push(frame);
     probe.onDraw?.(frame);
   };

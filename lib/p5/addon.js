@@ -22,6 +22,7 @@ import { createAnimation } from './animation.js';
 import { createSceneForm } from './scene-form.js';
 import { createHomeworkCheck } from './homework-check.js';
 import { createTaskList } from './task-list.js';
+import { createSampleRays } from './sample-rays.js';
 import { drawSideView, drawTopView } from './diagrams/plane-views.js';
 import { drawGeometricConstruction } from './diagrams/construction.js';
 import { drawParabola } from './diagrams/parabola.js';
@@ -47,6 +48,7 @@ export const FACTORIES = {
   createSceneForm,
   createHomeworkCheck,
   createTaskList,
+  createSampleRays,
   // Diagrams draw into the sketch's own canvas, inside the box { x, y, w, h }.
   drawSideView,
   drawTopView,

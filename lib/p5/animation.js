@@ -232,7 +232,7 @@ export class SceneAnimation {
   #paused() {
     if (this.thread === 'workers' && this.#workerFrame) {
       this.traceHere(this.shown); // the same frame on one thread, so the inspector knows its scene…
-      const same = sameBytes(this.#workerFrame, this.view.renderer.buffer);
+      const same = sameBytes(this.#workerFrame, this.view.buffer);
       this.#blit(this.#workerFrame); // …but what stays on screen is the workers' picture
       this.onPause?.({ thread: 'workers', same });
     } else if (this.thread === 'main') {

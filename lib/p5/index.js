@@ -20,7 +20,7 @@ export { TracerView } from './tracer-view.js';
 export { SceneView } from './scene-view.js';
 export { PhotonView } from './photon-view.js';
 export { Inspector, answerLine } from './inspector.js';
-export { formatAngle, fmt } from '../format.js';
+export { formatAngle, formatLabel, fmt } from '../format.js';
 export { SceneAnimation } from './animation.js';
 export { exampleInLink } from './example-picker.js';
 export { pageRenderState } from './page-state.js';

@@ -8,12 +8,14 @@
  *   - the ray R(t) = Ro + Rd·t and what it hit (t, point, normal, incidence);
  *   - each light: facing it or not, in shadow or not, what it added;
  *   - per sphere, both routes: A, B, C, discriminant → roots t0, t1, and
- *     L, tca, d², thc → t0, t1, with a mark that the two routes agree.
+ *     L, tca, d², thc → t0, t1, with a mark that the two routes agree;
+ *   - every other shape by its own test (its `intersect` record's lines).
  * Every value sits in an element with data attributes (`data-field`, and
  * `data-sphere`/`data-route` or `data-light` where needed) and its full
  * precision in `data-value`, so tests and worksheets can read it.
  */
 import { inspectPixel } from '../explain.js';
+import { kindOf } from '../shapes/index.js';
 import { toHex, colorName } from '../color.js';
 import { formatNumber, formatVector, formatAngle } from '../format.js';
 import { show, checkOptions } from '../check.js';
@@ -107,7 +109,7 @@ export class Inspector {
     const tests = shown ?? r.tests;
     const more = shown ? this.#moreButton(r) : null;
     this.body.replaceChildren(colorSection(r), raySection(r), hitSection(r), lightsSection(r),
-      quadraticSection(r, tests, more), geometricSection(r, tests, more && this.#moreButton(r)));
+      quadraticSection(r, tests, more), geometricSection(r, tests, more && this.#moreButton(r)), shapesSection(r));
   }
 
   /** "Show all 1,000 spheres": the whole tables, for this pixel. */
@@ -211,7 +213,7 @@ export function pixelAnnouncement(r) {
 
 /** "pink sphere" for a sphere named pink; "ground" for one named ground; "sphere 2" for one with no name. */
 function hitName(hit) {
-  const kind = hit.object?.radius ? 'sphere' : hit.object?.normal ? 'plane' : hit.object?.min ? 'box' : 'object';
+  const kind = kindOf(hit.object);
   const name = shownName(hit.object?.name?.trim() ?? '');
   if (!name) return `${kind} ${hit.index}`;
   return /^(pink|red|orange|yellow|green|cyan|blue|purple|white|gray|grey|black|brown)$/i.test(name) ? `${name} ${kind}` : name;
@@ -370,6 +372,26 @@ function wrapBeforeZ(span) {
   span.replaceChildren(text.slice(0, at), element('wbr'), text.slice(at));
   span.classList.add('rt-wrap');
   return span;
+}
+
+/**
+ * Every shape that is not a sphere, by its own test (a plane's Rd·n and t, a
+ * box's slabs): one row per shape, its record's lines; hidden when there is none.
+ */
+function shapesSection(r) {
+  const spheres = new Set(r.tests.map((test) => test.sphere));
+  const others = r.records.filter((entry) => !spheres.has(entry.object));
+  if (others.length === 0) return element('div', { hidden: '' });
+  // Many shapes: the ones the ray meets, nearest first (so the hit, if one of them), as many as the spheres' tables show.
+  const shown = others.length <= SPHERE_ROWS ? others : others.filter((entry) => entry.record.t !== null).sort((a, b) => a.record.t - b.record.t).slice(0, SPHERE_ROWS);
+  const rows = shown.map((entry) => {
+    const at = { 'data-shape': String(entry.index) };
+    const lines = entry.rows.map(([label, n], i) => element('span', { class: 'rt-record-line' }, i ? '; ' : '', `${label} = `,
+      value('record', n, { ...at, 'data-label': label })));
+    return element('tr', { class: entry.object === r.hit?.object ? 'rt-hit-row' : '' }, element('th', { scope: 'row' }, entry.name), element('td', {}, ...lines));
+  });
+  const note = shown.length < others.length && element('p', { class: 'rt-note' }, `Showing ${shown.length} of the ${others.length.toLocaleString('en')} other shapes: ones the ray meets.`);
+  return section('Other shapes: each one\'s own test', table(['shape', 'its record (t: the nearest hit past 0)'], rows, 'Other shapes'), ...[note].filter(Boolean));
 }
 
 /** Instead of a table with no rows: the scene has no sphere to test yet. */

@@ -16,7 +16,7 @@ let ids = 0;
  * Makes `canvas` an image described in words; returns the disclosure and the
  * description (to put under the picture) and `changed()`, `done()` for the view to call.
  * @param {HTMLCanvasElement} canvas
- * @param {{ scene: object, camera: object, mode: string, width: number, height: number, renderer: { buffer: Uint8ClampedArray } }} view
+ * @param {{ scene: object, camera: object, mode: string, width: number, height: number, buffer: Uint8ClampedArray }} view
  */
 export function createPictureWords(canvas, view) {
   const id = `rt-picture-description-${++ids}`;
@@ -36,7 +36,7 @@ export function createPictureWords(canvas, view) {
     if (description.textContent !== text) description.textContent = text;
   };
   const readRows = () => {
-    rows.replaceChildren(...pictureRows(view.renderer.buffer, view.width, view.height).map((line) => element('li', {}, line)));
+    rows.replaceChildren(...pictureRows(view.buffer, view.width, view.height).map((line) => element('li', {}, line)));
   };
   details.addEventListener('toggle', () => { if (details.open) readRows(); });
 

@@ -3,7 +3,7 @@
  * laid over the picture: the traced canvas stays exactly as traced.
  *
  *   const marks = createPixelMarks(p, view, 'pink-marks');
- *   p.draw = () => marks.draw(findPixels(view.renderer.buffer, 32, 24, isPink));
+ *   p.draw = () => marks.draw(findPixels(view.buffer, 32, 24, isPink));
  *
  * Or all of it behind a tick box under the picture, with a count:
  *
@@ -98,7 +98,7 @@ export function createPixelHighlight(p, options) {
       }
       if (!view.done) return marks.clear();
       if (!found || foundIn.scene !== view.scene || foundIn.camera !== view.camera) {
-        found = findPixels(view.renderer.buffer, view.width, view.height, test);
+        found = findPixels(view.buffer, view.width, view.height, test);
         foundIn = { scene: view.scene, camera: view.camera };
         count.textContent = describe(found.length, view.width * view.height);
         count.setAttribute(`data-${name}-count`, String(found.length));

@@ -13,19 +13,20 @@
  */
 import { colorToHex } from '../color.js';
 import { readColor, colorText } from '../values.js';
-import { tableColumns, fieldText } from '../scene-fields.js';
+import { tableColumns, fieldText, formTypes } from '../scene-fields.js';
+import { shapeClass } from '../shapes/index.js';
 import { SceneEdits } from '../scene-edits.js';
 import { show, checkOptions } from '../check.js';
 import { useStyle, element, shownName, nameTitle } from './dom.js';
 import { valueBox } from './value-box.js';
 
-/** What each table is called, and what a new row holds. */
-const TABLES = [
-  { type: 'sphere', title: 'Spheres', add: 'Add sphere', what: 'Sphere' },
-  { type: 'pointLight', title: 'Point lights', add: 'Add point light', what: 'Point light' },
-  { type: 'plane', title: 'Planes', what: 'Plane' },
-  { type: 'box', title: 'Boxes', what: 'Box' },
-];
+/** The point light's table (each shape's is its class's `form`). */
+const POINT_LIGHTS = { title: 'Point lights', what: 'Point light' };
+
+/** Each table, in order: its type, what it is called and what a row is called. */
+function tables() {
+  return formTypes().map((type) => ({ type, ...(type === 'pointLight' ? POINT_LIGHTS : shapeClass(type).form) }));
+}
 
 /* ---------------- the scene form ---------------- */
 
@@ -88,8 +89,7 @@ export class SceneForm {
     background.element.querySelector('.sf-label').classList.remove('sf-hidden-label'); // no column head above this one
     const top = element('div', { class: 'sf-top' }, background.element, ...this.#addButtons());
     this.#tables.clear();
-    const tables = TABLES.map((t) => this.#table(t)).filter(Boolean);
-    this.element.replaceChildren(top, ...tables);
+    this.element.replaceChildren(top, ...tables().map((t) => this.#table(t)).filter(Boolean));
   }
 
   /** Adds an object's JSON at the end: one new row (or one more in "not shown"); the other rows stay. */

@@ -118,7 +118,7 @@ export class TaskList {
   /** Asks each task not yet done whether `happened` did it. */
   #judge(happened) {
     const view = this.#view;
-    const event = { scene: view.scene, camera: view.camera, mode: view.mode, renderMode: view.renderMode, parts: this.#parts, ...happened };
+    const event = { scene: view.scene, camera: view.camera, mode: view.mode, order: view.order, renderMode: view.order, parts: this.#parts, ...happened };
     const before = loadProgress(); // another tab of the same browser may have done tasks too
     let progress = { ...before, [this.#lesson.page]: [...new Set([...(before[this.#lesson.page] ?? []), ...(this.#progress[this.#lesson.page] ?? [])])] };
     const newly = [];

@@ -18,7 +18,8 @@
  * TracerView coordinates: it schedules the frames, builds its figure and
  * keeps the page's render state. Its parts live beside it: tracer-layout.js
  * (the size on screen), tracer-overlay.js (grid and marks over the picture),
- * tracer-input.js (press, drag, arrow keys), tracer-export.js (the PNG).
+ * tracer-input.js (press, drag, arrow keys), tracer-export.js (the PNG),
+ * tracer-events.js (what it tells listeners: `view.on('select' | 'restart' | 'progress', fn)`).
  */
 import { formatRate } from '../format.js';
 import { ORDERS } from '../progressive.js';
@@ -34,6 +35,7 @@ import { pixelAt, listenForPixels } from './tracer-input.js';
 import { pngDataURL, pngFilename, download, createSaveButton } from './tracer-export.js';
 import { checkScale, pictureScale, sizePicture } from './tracer-layout.js';
 import { createPictureWords } from './picture-words.js';
+import { createEvents } from './tracer-events.js';
 
 /**
  * Creates a tracer view inside a p5 sketch (call it from setup()).
@@ -44,7 +46,8 @@ import { createPictureWords } from './picture-words.js';
  * @param {'auto'|number} [options.scale='auto'] on-screen pixels per traced pixel with 16 px text (more, in whole steps, when the page's text is larger); 'auto' = the largest whole number that fits
  * @param {boolean} [options.grid=false] draw the pixel grid (on an overlay, never into the picture)
  * @param {string} [options.mode='shaded'] visual mode: 'shaded', 'discriminant', 'roots', 'h', 'v', 'normals', 'depth'
- * @param {'coarse'|'scanline'|'slow'} [options.renderMode='coarse'] the order pixels are traced in
+ * @param {'coarse'|'scanline'|'slow'} [options.order='coarse'] the render order: coarse blocks first, row by row, or row by row in slow motion
+ * @param {'coarse'|'scanline'|'slow'} [options.renderMode] deprecated: the old name of `order` (it still works)
  * @param {number} [options.budgetMs=8] tracing time per animation frame
  * @param {'auto'|number|false} [options.workers='auto'] Web Workers for large shaded frames ('auto': one per core; false: none)
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where to put it (element, id or p5.Element); default the sketch's node
@@ -67,7 +70,9 @@ export function createTracerView(p, options) { // no options: checkOptions gives
 }
 
 /** The options createTracerView takes. */
-const TRACER_VIEW_OPTIONS = ['scene', 'camera', 'scale', 'grid', 'mode', 'renderMode', 'budgetMs', 'workers', 'parent', 'label', 'legend'];
+const TRACER_VIEW_OPTIONS = ['scene', 'camera', 'scale', 'grid', 'mode', 'order', 'renderMode', 'budgetMs', 'workers', 'parent', 'label', 'legend'];
+/** What a tracer view tells its listeners (see `on`). */
+const EVENTS = ['select', 'restart', 'progress'];
 
 /**
  * The traced picture on the page, what `p.createTracerView({ … })` returns: progressive, clickable, restartable.
@@ -75,11 +80,12 @@ const TRACER_VIEW_OPTIONS = ['scene', 'camera', 'scale', 'grid', 'mode', 'render
  * const view = p.createTracerView({ scene: classScene(), camera: new Camera({ width: 64, height: 48 }) });
  * view.setMode('discriminant');          // the discriminant map; 'shaded' for the picture again
  * view.setScene(classSceneAt(2));        // re-traces without a reload
- * view.onSelect((record) => console.log(record?.color)); // a click: that pixel's inspectPixel record
+ * view.onSelect((pixel) => console.log(pixel)); // a click: { x, y } (null when the selection is cleared)
+ * view.on('progress', ({ progress }) => console.log(`${Math.round(progress * 100)}%`));
  */
 export class TracerView {
   #renderer; #page; #imageData = null; #raf = 0; #destroyed = false;
-  #scale; #grid; #mode; #selected = null; #listeners = [];
+  #scale; #grid; #mode; #selected = null; #events = createEvents(EVENTS);
   #shownCurrent = null; #progressText = ''; #shownProblem = null;
   #ctx; #overlayCtx; #onResize; #words;
 
@@ -87,14 +93,15 @@ export class TracerView {
    * @param {import('p5').default} p
    * @param {Parameters<typeof createTracerView>[1]} options as for createTracerView
    */
-  constructor(p, { scene, camera, scale = 'auto', grid = false, mode = 'shaded', renderMode = 'coarse', budgetMs = 8, workers = 'auto', parent, label, legend = true } = /** @type {any} */ ({})) {
+  constructor(p, { scene, camera, scale = 'auto', grid = false, mode = 'shaded', order, renderMode, budgetMs = 8, workers = 'auto', parent, label, legend = true } = /** @type {any} */ ({})) {
     this.#scale = checkScale(scale);
     this.#grid = Boolean(grid);
     this.budgetMs = checkBudget(budgetMs);
     this.#mode = mode;
-    // The renderer checks scene, camera and renderMode; modeShader checks mode.
+    if (order !== undefined && renderMode !== undefined) throw new TypeError('createTracerView takes order or renderMode (its old name), not both');
+    // The renderer checks scene, camera and the order (its `mode`); modeShader checks the visual mode.
     // Large shaded frames go to Web Workers (lib/workers/progressive.js); the rest is traced here.
-    this.#renderer = new WorkerProgressiveRenderer({ scene, camera, mode: renderMode, budgetMs: this.budgetMs, shader: modeShader(mode), workers });
+    this.#renderer = new WorkerProgressiveRenderer({ scene, camera, mode: checkOrder(order ?? renderMode ?? 'coarse', renderMode === undefined ? 'order' : 'renderMode'), budgetMs: this.budgetMs, shader: modeShader(mode), workers });
     this.showLegend = legend;
 
     useStyle();
@@ -113,10 +120,15 @@ export class TracerView {
   get scene() { return this.#renderer.scene; }
   /** The camera (its width × height is the traced resolution). */
   get camera() { return this.#renderer.camera; }
-  /** The visual mode ('shaded', 'discriminant', …). */
+  /** The visual mode ('shaded', 'discriminant', …): what a pixel shows. */
   get mode() { return this.#mode; }
-  /** The render order ('coarse', 'scanline', 'slow'). */
-  get renderMode() { return this.#renderer.mode; }
+  /** The render order: 'coarse' (blocks of 16, 8, … 1 px), 'scanline' (row by row) or 'slow' (row by row, a few rays at a time). */
+  get order() { return this.#renderer.mode; }
+  /**
+   * Deprecated: the old name of `order` (it still works).
+   * @deprecated
+   */
+  get renderMode() { return this.order; }
   /** The traced image's width and height in pixels. */
   get width() { return this.#renderer.width; }
   get height() { return this.#renderer.height; }
@@ -130,7 +142,21 @@ export class TracerView {
   get scale() { return this.#screenScale(); }
   /** The `<canvas data-tracer>` holding the traced image (and nothing else). */
   get canvas() { return this.canvasElement; }
-  /** The progressive renderer doing the work (read its buffer, pass, current…). */
+  /**
+   * The pixel traced last `{ x, y }` in 'scanline' and 'slow' order (in slow
+   * motion, the ray being shown), null in 'coarse' order or before the first.
+   * It stays on the last pixel once the picture is done.
+   */
+  get current() { return this.#renderer.current && { ...this.#renderer.current }; }
+  /** The traced picture's RGBA bytes, `width * height * 4` (read them; the view writes them). */
+  get buffer() { return this.#renderer.buffer; }
+  /** In 'slow' order: pixels traced per animation frame (a whole number ≥ 1), when `slowRaysPerSecond` is 0. */
+  get slowRaysPerStep() { return this.#renderer.slowRaysPerStep; }
+  set slowRaysPerStep(n) { this.#renderer.slowRaysPerStep = n; }
+  /** In 'slow' order: rays per second by the clock (0: `slowRaysPerStep` a frame instead). Shoot in the 3D view sets it. */
+  get slowRaysPerSecond() { return this.#renderer.slowRaysPerSecond; }
+  set slowRaysPerSecond(n) { this.#renderer.slowRaysPerSecond = n; }
+  /** The progressive renderer doing the work, for tools and benchmarks; sketches use the view's own API. */
   get renderer() { return this.#renderer; }
 
   /** The traced pixel `{ x, y }` under a point of the screen (a pointer event's clientX, clientY), or null. */
@@ -148,13 +174,13 @@ export class TracerView {
     this.#mode = mode;
     return this.#change({ shader });
   }
-  /** Traces in another order: 'coarse', 'scanline' or 'slow'. */
-  setRenderMode(renderMode) {
-    if (!ORDERS.includes(renderMode)) {
-      throw new RangeError(`renderMode must be one of ${ORDERS.map((m) => `'${m}'`).join(', ')}, got ${show(renderMode)}`);
-    }
-    return this.#change({ mode: renderMode });
-  }
+  /** Traces again in another render order: 'coarse', 'scanline' or 'slow'. */
+  setOrder(order) { return this.#change({ mode: checkOrder(order) }); }
+  /**
+   * Deprecated: the old name of `setOrder` (it still works).
+   * @deprecated
+   */
+  setRenderMode(order) { return this.#change({ mode: checkOrder(order, 'renderMode') }); }
   /** Sets the on-screen scale: 'auto' or a number of screen pixels per traced pixel. */
   setScale(scale) {
     this.#scale = checkScale(scale);
@@ -188,15 +214,29 @@ export class TracerView {
   }
 
   /**
-   * Calls `cb({ x, y }, view)` whenever the selection changes, and again when
-   * the scene, camera or mode changes while a pixel is selected (its story
-   * changed). Returns a function that removes the listener.
+   * Calls `fn` whenever something happens to the view; returns a function that removes the listener.
+   * - `'select'`: `fn({ x, y } | null, view)` when the selection changes, and again when the
+   *   scene, camera or mode changes while a pixel is selected (its story changed);
+   * - `'restart'`: `fn(view)` when the picture clears to be traced again (a new scene, camera,
+   *   mode or order, or `restart()`);
+   * - `'progress'`: `fn({ progress, done, current }, view)` after each frame of tracing
+   *   (`progress` 0–1, `current` as the `current` property).
+   * @param {'select'|'restart'|'progress'} event
+   * @param {Function} fn
+   * @returns {() => void}
+   * @example
+   * const stop = view.on('restart', () => console.log('tracing again'));
+   * stop(); // no more calls
    */
-  onSelect(cb) {
-    if (typeof cb !== 'function') throw new TypeError(`onSelect needs a function, got ${show(cb)}`);
-    this.#listeners.push(cb);
-    return () => { this.#listeners = this.#listeners.filter((l) => l !== cb); };
-  }
+  on(event, fn) { return this.#events.on(event, fn); }
+
+  /**
+   * Calls `fn({ x, y }, view)` whenever the selection changes (`null` when it is
+   * cleared), as `on('select', fn)`. Returns a function that removes the listener.
+   * @example
+   * view.onSelect((pixel) => { if (pixel) console.log(`pixel ${pixel.x},${pixel.y}`); });
+   */
+  onSelect(fn) { return this.#events.on('select', fn); }
 
   /** The traced image (at traced resolution) as a PNG data URL. */
   toPNG() {
@@ -219,6 +259,7 @@ export class TracerView {
     const { changed, done } = r.step(this.budgetMs);
     if (changed) this.#blit();
     this.#showProgress();
+    if (this.#events.heard('progress')) this.#events.emit('progress', { progress: done ? 1 : r.progress, done, current: this.current }, this);
     if (r.problem !== this.#shownProblem) this.#shownProblem = showWorkerProblem(this.workerNote, r.problem);
     const c = r.current;
     if (c && (c.x !== this.#shownCurrent?.x || c.y !== this.#shownCurrent?.y)) this.#drawOverlay();
@@ -270,6 +311,7 @@ export class TracerView {
     this.figure.dataset.state = 'rendering';
     this.#page.rendering();
     this.#schedule();
+    this.#events.emit('restart', this);
   }
 
   #schedule() {
@@ -360,8 +402,7 @@ export class TracerView {
   }
 
   #notify() {
-    const s = this.selected;
-    for (const cb of this.#listeners) cb(s, this);
+    this.#events.emit('select', this.selected, this);
   }
 }
 
@@ -375,6 +416,12 @@ function showWorkerProblem(note, problem) {
   note.hidden = problem === null;
   note.textContent = problem === null ? '' : `Workers unavailable: rendering on the page's thread instead — ${problem}.`;
   return problem;
+}
+
+/** A render order ('coarse', 'scanline', 'slow'), checked before anything changes. */
+function checkOrder(order, field = 'order') {
+  if (!ORDERS.includes(order)) throw new RangeError(`${field} must be one of ${ORDERS.map((m) => `'${m}'`).join(', ')}, got ${show(order)}`);
+  return order;
 }
 
 function checkBudget(ms) {

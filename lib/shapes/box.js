@@ -4,6 +4,9 @@
 import { toVec3, Vec3, set } from '../vec3.js';
 import { shapeOptions } from '../material.js';
 import { EPSILON } from '../constants.js';
+import { vector, materialToJSON } from './json.js';
+import { xyz, share, SURFACE } from './form.js';
+import { P, N, scratchNumbers } from './packed.js';
 
 const AXES = ['x', 'y', 'z'];
 
@@ -59,4 +62,111 @@ export class Box {
     }
     return out;
   }
+
+  /**
+   * The lesson's record: each slab's `{ axis, tmin, tmax }` (where the ray
+   * enters and leaves it; for a ray parallel to it −∞…∞ inside, null outside),
+   * `tNear` the latest entry, `tFar` the earliest exit, and `t` the nearest
+   * hit past EPSILON or null.
+   */
+  intersect(ray, target = {}) {
+    let tNear = -Infinity, tFar = Infinity;
+    target.slabs = AXES.map((axis) => {
+      const o = ray.origin[axis], d = ray.direction[axis], min = this.min[axis], max = this.max[axis];
+      if (d === 0) return o < min || o > max ? { axis, tmin: null, tmax: null } : { axis, tmin: -Infinity, tmax: Infinity };
+      const t1 = (min - o) / d, t2 = (max - o) / d;
+      const slab = { axis, tmin: Math.min(t1, t2), tmax: Math.max(t1, t2) };
+      tNear = Math.max(tNear, slab.tmin); tFar = Math.min(tFar, slab.tmax);
+      return slab;
+    });
+    const outside = target.slabs.some((slab) => slab.tmin === null);
+    target.tNear = outside ? null : tNear;
+    target.tFar = outside ? null : tFar;
+    const t = this.hit(ray, EPSILON);
+    target.t = t === Infinity ? null : t;
+    return target;
+  }
+
+  /** The record's lines for the inspector: `[label, value]`. */
+  recordRows(record) {
+    return [...record.slabs.flatMap(({ axis, tmin, tmax }) => [[`${axis} slab tmin`, tmin], [`${axis} slab tmax`, tmax]]),
+      ['tNear', record.tNear], ['tFar', record.tFar], ['t', record.t]];
+  }
+
+  /** Its two corners. */
+  bounds() {
+    return { min: this.min, max: this.max };
+  }
+
+  /** Where a light of this shape shines from: halfway between its corners. */
+  middle() {
+    const { min, max } = this;
+    return new Vec3((min.x + max.x) / 2, (min.y + max.y) / 2, (min.z + max.z) / 2);
+  }
+
+  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view.js). */
+  drawIn3D(kit, into, rgb) {
+    kit.box(into, this.min, this.max, rgb);
+  }
+
+  /** Its scene JSON (lib/serialize.js). */
+  toJSON() {
+    return { type: 'box', name: this.name ?? '', min: vector(this.min), max: vector(this.max), material: materialToJSON(this.material) };
+  }
+
+  /** Its type in scene JSON. */
+  static get type() { return 'box'; }
+
+  /** Its JSON fields, in the order the constructor takes them. */
+  static get fields() { return ['min', 'max', 'material']; }
+
+  /** A box from its fields (checked by the constructor). */
+  static build(o, material) {
+    return new Box(o.min, o.max, material);
+  }
+
+  /** Its packed form for render()'s kernel (lib/shapes/packed.js): min xyz, max xyz. */
+  static get packed() { return PACKED; }
+
+  /** Its table in the scene form (lib/shapes/form.js). */
+  static get form() { return FORM; }
 }
+
+const FORM = Object.freeze({ title: 'Boxes', what: 'Box', columns: [...xyz('min', 'min'), ...xyz('max', 'max'), SURFACE, share('reflection')] });
+
+/** [tNear, tFar] of the packed box's slabs so far. */
+const slab = scratchNumbers(2);
+
+/** Narrows `slab` by one axis' slab min…max; false when the ray misses it. */
+function clipSlab(min, max, o, d) {
+  if (d === 0) return !(o < min || o > max); // parallel: inside this slab or never
+  let t1 = (min - o) / d, t2 = (max - o) / d;
+  if (t1 > t2) { const swap = t1; t1 = t2; t2 = swap; }
+  if (t1 > slab[0]) slab[0] = t1;
+  if (t2 < slab[1]) slab[1] = t2;
+  return !(slab[0] > slab[1]);
+}
+
+const PACKED = Object.freeze({
+  pack(box, shapes, at) {
+    shapes.set([box.min.x, box.min.y, box.min.z, box.max.x, box.max.y, box.max.z], at);
+  },
+  /** Box#hit in numbers: the slabs, x then y then z. */
+  hit(s, b, ox, oy, oz, dx, dy, dz, tMin) {
+    slab[0] = -Infinity; slab[1] = Infinity;
+    if (!clipSlab(s[b], s[b + 3], ox, dx) || !clipSlab(s[b + 1], s[b + 4], oy, dy) || !clipSlab(s[b + 2], s[b + 5], oz, dz)) return Infinity;
+    const tNear = slab[0], tFar = slab[1];
+    if (tNear > tMin) return tNear;
+    return tFar > tMin ? tFar : Infinity; // the ray starts inside
+  },
+  /** Box#normalAt in numbers: the axis of the nearest face, x then y then z, min face before max face. */
+  normal(s, b, surface) {
+    let best = Infinity;
+    surface[N] = 0; surface[N + 1] = 1; surface[N + 2] = 0;
+    for (let a = 0; a < 3; a++) {
+      const toMin = Math.abs(surface[P + a] - s[b + a]), toMax = Math.abs(surface[P + a] - s[b + 3 + a]);
+      if (toMin < best) { best = toMin; surface[N] = 0; surface[N + 1] = 0; surface[N + 2] = 0; surface[N + a] = -1; }
+      if (toMax < best) { best = toMax; surface[N] = 0; surface[N + 1] = 0; surface[N + 2] = 0; surface[N + a] = 1; }
+    }
+  },
+});

@@ -6,6 +6,9 @@ import { toVec3, Vec3, sub, normalize } from '../vec3.js';
 import { finiteNumber } from '../check.js';
 import { shapeOptions } from '../material.js';
 import { EPSILON } from '../constants.js';
+import { vector, materialToJSON } from './json.js';
+import { xyz, share, SURFACE } from './form.js';
+import { P, N } from './packed.js';
 
 // Re-exported: EPSILON's public path (lib/index.js) has always been this module.
 export { EPSILON };
@@ -50,7 +53,87 @@ export class Sphere {
   normalAt(point, out = new Vec3()) {
     return normalize(out, sub(out, point, this.center));
   }
+
+  /**
+   * The lesson's record: the quadratic route's `{ A, B, C, discriminant, roots, t0, t1, t }`
+   * (intersectQuadratic) with the geometric route's record beside it as `geometric`.
+   */
+  intersect(ray, target = {}) {
+    intersectQuadratic(ray, this, target);
+    target.geometric = intersectGeometric(ray, this, target.geometric ?? {});
+    return target;
+  }
+
+  /** The record's lines for the inspector: `[label, value]`. */
+  recordRows(record) {
+    return [['A', record.A], ['B', record.B], ['C', record.C], ['B² − 4AC', record.discriminant], ['t', record.t]];
+  }
+
+  /** The box from Sc − r to Sc + r. */
+  bounds() {
+    const { center: c, radius: r } = this;
+    return { min: new Vec3(c.x - r, c.y - r, c.z - r), max: new Vec3(c.x + r, c.y + r, c.z + r) };
+  }
+
+  /** A sphere is a ball: its `center` and `radius` (itself). Shapes that are not a ball have no `ball`. */
+  ball() {
+    return this;
+  }
+
+  /** Where a light of this shape shines from: its centre. */
+  middle() {
+    return this.center;
+  }
+
+  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view.js). */
+  drawIn3D(kit, into, rgb) {
+    kit.ball(into, this.center, this.radius, rgb, !this.material.isEmissive);
+  }
+
+  /** Its scene JSON (lib/serialize.js). */
+  toJSON() {
+    return { type: 'sphere', name: this.name ?? '', center: vector(this.center), radius: this.radius, material: materialToJSON(this.material) };
+  }
+
+  /** Its type in scene JSON. */
+  static get type() { return 'sphere'; }
+
+  /** Its JSON fields, in the order the constructor takes them. */
+  static get fields() { return ['center', 'radius', 'material']; }
+
+  /** A sphere from its fields (checked by the constructor). */
+  static build(o, material) {
+    return new Sphere(o.center, o.radius, material);
+  }
+
+  /** Its packed form for render()'s kernel (lib/shapes/packed.js): cx cy cz radius. */
+  static get packed() { return PACKED; }
+
+  /** Its table in the scene form (lib/shapes/form.js). */
+  static get form() { return FORM; }
 }
+
+const FORM = Object.freeze({
+  title: 'Spheres', what: 'Sphere',
+  columns: [...xyz('center', 'centre'), { path: ['radius'], label: 'radius', head: 'radius', kind: 'number', rule: { above: 0 } },
+    SURFACE, share('reflection'), share('transparency'),
+    { path: ['material', 'emission'], label: 'emission', head: 'emission', kind: 'color', grey: true }],
+});
+
+const PACKED = Object.freeze({
+  pack(sphere, shapes, at) {
+    shapes.set([sphere.center.x, sphere.center.y, sphere.center.z, sphere.radius], at);
+  },
+  hit(s, b, ox, oy, oz, dx, dy, dz, tMin) {
+    return sphereHit(s[b], s[b + 1], s[b + 2], s[b + 3], ox, oy, oz, dx, dy, dz, tMin);
+  },
+  /** normalAt in numbers: (P − Sc) / |P − Sc|, as vec3.js normalize. */
+  normal(s, b, surface) {
+    const x = surface[P] - s[b], y = surface[P + 1] - s[b + 1], z = surface[P + 2] - s[b + 2];
+    const length = Math.sqrt(x * x + y * y + z * z), scale = length > 0 ? 1 / length : 0;
+    surface[N] = x * scale; surface[N + 1] = y * scale; surface[N + 2] = z * scale;
+  },
+});
 
 /**
  * The ray–sphere test in numbers only (Sphere#hit, and render()'s fast path

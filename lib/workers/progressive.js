@@ -97,7 +97,7 @@ export class WorkerProgressiveRenderer {
       return { changed: true, done: true };
     }
     let changed = false;
-    if (this.#rowsShown === 0 && inner.pass >= MAIN_PASSES_DOWN_TO && !inner.done) {
+    if (this.#rowsShown === 0 && inner.blockSize >= MAIN_PASSES_DOWN_TO && !inner.done) {
       inner.step(Math.min(budgetMs ?? inner.budgetMs, MAIN_BUDGET_MS));
       changed = true;
     }
@@ -131,10 +131,15 @@ export class WorkerProgressiveRenderer {
     const ms = (this.#complete ? this.#endedAt : this.#inner.now()) - this.#startedAt;
     return ms > 0 ? (this.traced * 1000) / ms : 0;
   }
-  get pass() {
-    if (!this.#useWorkers) return this.#inner.pass;
-    return this.#complete || this.#rowsShown > 0 ? 1 : this.#inner.pass;
+  /** As ProgressiveRenderer's: the coarse block size, 1 once the workers' rows show. */
+  get blockSize() {
+    if (!this.#useWorkers) return this.#inner.blockSize;
+    return this.#complete || this.#rowsShown > 0 ? 1 : this.#inner.blockSize;
   }
+  /** As ProgressiveRenderer's: the row being traced on this thread (height when done). */
+  get row() { return this.done ? this.height : this.#inner.row; }
+  /** @deprecated `blockSize` in the 'coarse' order, `row` in the others. */
+  get pass() { return this.mode === 'coarse' ? this.blockSize : this.row; }
   get current() { return this.#inner.current; }
   get buffer() { return this.#inner.buffer; }
   get scene() { return this.#inner.scene; }
@@ -147,7 +152,6 @@ export class WorkerProgressiveRenderer {
   set budgetMs(ms) { this.#inner.budgetMs = ms; }
   get slowRaysPerStep() { return this.#inner.slowRaysPerStep; }
   set slowRaysPerStep(n) { this.#inner.slowRaysPerStep = n; }
-  /** Checked by the inner renderer: without it, Infinity was a plain property here and Shoot's rate was never used. */
   get slowRaysPerSecond() { return this.#inner.slowRaysPerSecond; }
   set slowRaysPerSecond(n) { this.#inner.slowRaysPerSecond = n; }
 

@@ -8,7 +8,7 @@ import { readdirSync } from 'node:fs';
 import { expectQuietConsole, waitForDone } from './helpers.js';
 
 const SKETCHES = readdirSync(new URL('../../sketches/', import.meta.url)).filter((f) => f.endsWith('.html')).sort();
-const PAGES = ['/', ...SKETCHES.map((f) => `/sketches/${f}`), '/web-editor.html', '/api/'];
+const PAGES = ['/', ...SKETCHES.map((f) => `/sketches/${f}`), '/web-editor.html', '/teacher.html', '/api/'];
 const TAGS = ['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'wcag22aa'];
 
 expectQuietConsole(test);

@@ -29,10 +29,10 @@ const runWorkers = async () => {
 function fakeView(camera) {
   const shown = [];
   return {
-    shown, budgetMs: 8, scene: null, renderer: { buffer: null },
+    shown, budgetMs: 8, scene: null, buffer: null,
     setCamera() { return this; },
     setScene(scene) { this.scene = scene; return this; },
-    draw() { this.renderer.buffer = render(this.scene, camera); },
+    draw() { this.buffer = render(this.scene, camera); },
     canvas: { getContext: () => ({ putImageData: (image) => shown.push(image.data) }) },
   };
 }

@@ -80,7 +80,7 @@ describe('very bright lights', () => {
       .add(new Sphere([3, 0, -10], 1, { color: [0, 0, 0], emission: MAX_COLOR }))
       .add(new PointLight([5, 5, 0], [MAX_COLOR, MAX_COLOR, MAX_COLOR], MAX_COLOR));
     const record = inspectPixel(bright, camera, 4, 3);
-    for (const c of record.light) expect(Number.isNaN(c)).toBe(false);
+    for (const c of record.tracedColor) expect(Number.isNaN(c)).toBe(false);
     expect(record.hit).not.toBeNull();
     expect(Math.max(...record.color)).toBe(255); // bright, not NaN-black
     const rgba = render(bright, camera);

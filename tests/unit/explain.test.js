@@ -147,3 +147,22 @@ describe('the names in the record', () => {
     expect(inspectPixel(scene, camera, 16, 23).hit.name).toBe('plane 1'); // the bottom row: the ground
   });
 });
+
+describe('inspectPixel: every shape by its own test', () => {
+  it("a plane's Rd·n and t, a box's slabs, a sphere's quadratic: each shape's record and lines", () => {
+    const camera = new Camera({ width: 65, height: 49 }); // the centre ray is (0, 0, −1)
+    const scene = new Scene()
+      .add(new Plane([0, 0, -30], [0, 0, 1]))
+      .add(new Box([-1, -1, -12], [1, 1, -10]))
+      .add(new Sphere([0, 0, -20], 4));
+    const { records, hit } = inspectPixel(scene, camera, 32, 24);
+    expect(records.map((r) => r.name)).toEqual(['plane 1', 'box 1', 'sphere 1']);
+    const [plane, box, sphere] = records;
+    expect(plane.record).toMatchObject({ denominator: -1, t: 30 });
+    expect(plane.rows).toEqual([['Rd·n', -1], ['(P0 − Ro)·n', -30], ['t', 30]]);
+    expect(box.record.slabs[2]).toEqual({ axis: 'z', tmin: 10, tmax: 12 });
+    expect(box.rows.at(-1)).toEqual(['t', 10]);
+    expect(sphere.record).toMatchObject({ discriminant: 64, t: 16 });
+    expect(hit.object).toBe(box.object); // the nearest of the three records' t
+  });
+});

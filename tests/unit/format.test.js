@@ -1,20 +1,20 @@
 // Numbers as the kit prints them: each formatter prints what the pages, the
 // legends and the screenshots have always shown.
 import { describe, it, expect } from 'vitest';
-import { fmt, sign, formatNumber, formatVector, formatAngle, formatRounded, formatPowerOfTen, formatRate } from '../../lib/format.js';
+import { formatLabel, sign, formatNumber, formatVector, formatAngle, formatRounded, formatPowerOfTen, formatRate } from '../../lib/format.js';
 
-describe('fmt, the diagrams\' labels', () => {
+describe('formatLabel, the diagrams\' labels', () => {
   it('rounds to one decimal (or `digits`) with a real minus sign, and never prints −0', () => {
-    expect([-3.25, 12.345, 0.05, 0].map((n) => fmt(n))).toEqual(['−3.3', '12.3', '0.1', '0.0']);
-    expect(fmt(-0.04)).toBe('0.0');
-    expect(fmt(-0.04, 2)).toBe('−0.04');
-    expect(fmt(12.345, 2)).toBe('12.35');
+    expect([-3.25, 12.345, 0.05, 0].map((n) => formatLabel(n))).toEqual(['−3.3', '12.3', '0.1', '0.0']);
+    expect(formatLabel(-0.04)).toBe('0.0');
+    expect(formatLabel(-0.04, 2)).toBe('−0.04');
+    expect(formatLabel(12.345, 2)).toBe('12.35');
   });
 
   it('prints thousands whole, millions as a×10ⁿ, and a dash for no number', () => {
-    expect([1234.5, -98765.4].map((n) => fmt(n))).toEqual(['1235', '−98765']);
-    expect([1e6, 2.5e7, -3.4e12].map((n) => fmt(n))).toEqual(['1.00×10⁶', '2.50×10⁷', '−3.40×10¹²']);
-    expect([null, undefined, NaN, Infinity].map((n) => fmt(n))).toEqual(['—', '—', '—', '—']);
+    expect([1234.5, -98765.4].map((n) => formatLabel(n))).toEqual(['1235', '−98765']);
+    expect([1e6, 2.5e7, -3.4e12].map((n) => formatLabel(n))).toEqual(['1.00×10⁶', '2.50×10⁷', '−3.40×10¹²']);
+    expect([null, undefined, NaN, Infinity].map((n) => formatLabel(n))).toEqual(['—', '—', '—', '—']);
   });
 
   it('puts + or − between a formula\'s terms', () => {

@@ -3,7 +3,7 @@ import { describe, it, expect } from 'vitest';
 import { Camera, Scene, Sphere, Plane, PointLight, classScene, inspectPixel } from '../../lib/index.js';
 import { LESSONS, lessonOf, sphereTest, nearZeroDiscriminant, eyeInside, hasAcne, inShadowOf, shadowsOnOthers } from '../../lib/lesson-tasks.js';
 
-const select = (scene, camera, x, y) => ({ type: 'select', record: inspectPixel(scene, camera, x, y), scene, camera, parts: {}, mode: 'shaded', renderMode: 'coarse' });
+const select = (scene, camera, x, y) => ({ type: 'select', record: inspectPixel(scene, camera, x, y), scene, camera, parts: {}, mode: 'shaded', order: 'coarse' });
 const task = (page, id) => lessonOf(page).tasks.find((t) => t.id === id);
 
 describe('the lessons', () => {
@@ -23,6 +23,12 @@ describe('the lessons', () => {
 describe('the predicates', () => {
   const ball = () => new Scene().add(new Sphere([0, 0, -20], 4, { color: 'pink', name: 'pink' })).add(new PointLight([-10, 10, 10]));
   const camera = new Camera({ width: 64, height: 48 });
+
+  it('sketch 01\'s slow motion is done by the render order being slow', () => {
+    const state = (order) => ({ type: 'state', scene: ball(), camera, parts: {}, mode: 'shaded', order });
+    expect(task('01', 'slow').done(state('slow'), {})).toBe(true);
+    expect(task('01', 'slow').done(state('scanline'), {})).toBe(false);
+  });
 
   it('a discriminant "about 0" is a band around the sphere\'s edge, not its middle or the sky', () => {
     const at = (x, y) => sphereTest(inspectPixel(ball(), camera, x, y));

@@ -18,7 +18,7 @@ async function runToDone(r, { budgetMs = 8, maxSteps = 5000 } = {}) {
   for (let i = 0; i < maxSteps && !r.done; i++) {
     const before = r.traced;
     const { changed, done } = r.step(budgetMs);
-    steps.push({ changed, done, pass: r.pass, traced: r.traced, before, progress: r.progress });
+    steps.push({ changed, done, pass: r.blockSize, traced: r.traced, before, progress: r.progress });
     if (!done) await tick();
   }
   return steps;
@@ -108,6 +108,23 @@ describe('WorkerProgressiveRenderer', () => {
     const r = new WorkerProgressiveRenderer({ scene, camera: LARGE, workers: 2, createWorker: fake.create, ...MIN });
     await runToDone(r);
     expect(r.buffer).toEqual(render(scene, LARGE));
+  });
+
+  it('slow motion by the clock: slowRaysPerSecond reaches the renderer doing the work (Shoot\'s speed)', () => {
+    let t = 0;
+    const r = new WorkerProgressiveRenderer({ scene: classScene(), camera: SMALL, mode: 'slow', workers: false, now: () => t });
+    expect(r.slowRaysPerSecond).toBe(0);
+    r.slowRaysPerSecond = 4; // one ray every 250 ms
+    expect(r.slowRaysPerSecond).toBe(4);
+    r.step();
+    expect(r.traced).toBe(1);
+    t += 100;
+    r.step();
+    expect(r.traced).toBe(1); // not yet owed: without the setter, one ray would go every step
+    t += 160;
+    r.step();
+    expect(r.traced).toBe(2);
+    expect(() => { r.slowRaysPerSecond = -1; }).toThrow(new RangeError('slowRaysPerSecond must not be negative, got -1'));
   });
 
   it('checks its workers option, and passes the rest to ProgressiveRenderer', () => {

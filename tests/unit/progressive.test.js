@@ -114,7 +114,7 @@ describe('coarse passes', () => {
     const shader = (s, c, x, y, target) => {
       const key = `${x},${y}`;
       expect(passOf.has(key)).toBe(false);
-      passOf.set(key, p.pass);
+      passOf.set(key, p.blockSize);
       renderPixel(s, c, x, y, target);
     };
     p = new ProgressiveRenderer({ scene, camera, shader });
@@ -134,7 +134,7 @@ describe('coarse passes', () => {
     let p, preview = null;
     const shader = (s, c, x, y, target) => {
       // The buffer as the 16 px pass left it, caught as the 8 px pass begins.
-      if (p.pass === 8 && !preview) preview = target.slice();
+      if (p.blockSize === 8 && !preview) preview = target.slice();
       renderPixel(s, c, x, y, target);
     };
     p = new ProgressiveRenderer({ scene, camera, shader });
@@ -149,12 +149,13 @@ describe('coarse passes', () => {
     }
   });
 
-  it('has current null and pass counting down 16, 8, 4, 2, 1', () => {
+  it('has current null and blockSize counting down 16, 8, 4, 2, 1 (pass, its old name, too)', () => {
     const p = new ProgressiveRenderer({ scene, camera: new Camera({ width: 40, height: 30 }) });
-    const seen = [p.pass];
+    const seen = [p.blockSize];
     while (!p.step(0).done) {
       expect(p.current).toBe(null);
-      if (seen.at(-1) !== p.pass) seen.push(p.pass);
+      expect(p.pass).toBe(p.blockSize);
+      if (seen.at(-1) !== p.blockSize) seen.push(p.blockSize);
     }
     expect(seen).toEqual([16, 8, 4, 2, 1]);
   });
@@ -172,7 +173,9 @@ describe('scanline and slow modes', () => {
     const n = order.length;
     expect(order).toEqual([...Array(n).keys()]);
     expect(p.current).toEqual({ x: (n - 1) % 37, y: Math.floor((n - 1) / 37) });
-    expect(p.pass).toBe(Math.floor(n / 37));
+    expect(p.row).toBe(Math.floor(n / 37));
+    expect(p.blockSize).toBe(1); // one pixel at a time, in rows
+    expect(p.pass).toBe(p.row); // the old name: the row, in this order
     for (let i = 0; i < 37 * 23; i++) expect(p.buffer[i * 4 + 3]).toBe(i < n ? 255 : 0);
   });
 

@@ -22,7 +22,7 @@ describe('restart() after the scene changed in place', () => {
     ['a colour made three numbers too many', (s) => { s.objects[1].material.color = [1, 2, 3, 4]; }, TypeError, 'objects[1].material.color must have 3 numbers [r, g, b], got [1, 2, 3, 4]'],
     ['a colour name misspelt', (s) => { s.objects[1].material.color = 'redd'; }, TypeError, /^objects\[1\]\.material\.color/],
     ['a reflection over 1', (s) => { s.objects[1].material.reflection = 2; }, RangeError, 'objects[1].material.reflection must be between 0 and 1, got 2'],
-    ['a shape replaced by null', (s) => { s.objects[0] = null; }, TypeError, 'objects[0] must be a Sphere, Plane or Box, got null'],
+    ['a shape replaced by null', (s) => { s.objects[0] = null; }, TypeError, 'objects[0] must be a shape (a Sphere, Plane, Box, … with hit, normalAt, intersect and bounds), got null'],
     ['the ambient term made text', (s) => { s.ambient = '0.5'; }, TypeError, 'scene.ambient must be a finite number, got "0.5"'],
   ];
   for (const [what, change, Kind, message] of cases) {

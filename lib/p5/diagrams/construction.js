@@ -2,7 +2,7 @@
 import { intersectGeometric } from '../../shapes/sphere.js';
 import { INK, MUTED, FAINT, PAPER, RAY, NORMAL, SHADOW, CONSTRUCT } from './style.js';
 import { label, labelPlacer } from './labels.js';
-import { fmt } from '../../format.js';
+import { formatLabel } from '../../format.js';
 import { panel, closePanel, placeholder, clip, unclip, line, arrow, screenArrow, dot, ring, rightAngle, dimension, darker } from './draw.js';
 import { focusTest } from './focus.js';
 import { nameDiagram } from './aria.js';
@@ -65,11 +65,11 @@ function construction(g, sphere, ray) {
 /** The formulas with this ray's numbers, one a line: `[text, color]`. */
 function formulaLines({ g, r, tca, d, hit, inside, L }) {
   return [
-    [`L = C − Ro = (${fmt(L.x)}, ${fmt(L.y)}, ${fmt(L.z)})`, INK],
-    [`tca = L·Rd = ${fmt(tca)}${tca < 0 ? (inside ? '  (< 0, but Ro is inside: fine)' : '  (< 0: C is behind Ro)') : ''}`, INK],
-    [`d² = L·L − tca² = ${fmt(g.d2)},  d = ${fmt(d)},  r = ${fmt(r)}`, INK],
-    hit ? [`thc = √(r² − d²) = ${fmt(g.thc)}`, INK] : ['d > r: the ray passes by, no hit', SHADOW],
-    hit ? [`t = tca ∓ thc:  t0 = ${fmt(g.t0)},  t1 = ${fmt(g.t1)}  →  ${g.t === null ? 'both behind the eye' : `t = ${fmt(g.t)}`}`, g.t === null ? SHADOW : RAY] : null,
+    [`L = C − Ro = (${formatLabel(L.x)}, ${formatLabel(L.y)}, ${formatLabel(L.z)})`, INK],
+    [`tca = L·Rd = ${formatLabel(tca)}${tca < 0 ? (inside ? '  (< 0, but Ro is inside: fine)' : '  (< 0: C is behind Ro)') : ''}`, INK],
+    [`d² = L·L − tca² = ${formatLabel(g.d2)},  d = ${formatLabel(d)},  r = ${formatLabel(r)}`, INK],
+    hit ? [`thc = √(r² − d²) = ${formatLabel(g.thc)}`, INK] : ['d > r: the ray passes by, no hit', SHADOW],
+    hit ? [`t = tca ∓ thc:  t0 = ${formatLabel(g.t0)},  t1 = ${formatLabel(g.t1)}  →  ${g.t === null ? 'both behind the eye' : `t = ${formatLabel(g.t)}`}`, g.t === null ? SHADOW : RAY] : null,
   ].filter(Boolean);
 }
 
@@ -151,15 +151,15 @@ function placeLabels(p, m, area, { g, r, tca, d, hit, t0, roots }, { x0, y0, cx,
   labels.keepClearLine(x0, y0, cx, cy);
   labels.keepClearLine(cx, cy, px, y0);
   labels.keepClearLine(cx, cy, m.sx(rEnd.u), m.sy(rEnd.v));
-  if (hit && g.thc > 0) labels.put(`thc = ${fmt(g.thc)}`, [[(m.sx(t0) + px) / 2, y0 + 40]], { color: NORMAL, bold: true, box: true });
-  labels.put(`tca = ${fmt(tca)}`, [[(x0 + px) / 2, y0 + 72]], { color: CONSTRUCT, bold: true });
+  if (hit && g.thc > 0) labels.put(`thc = ${formatLabel(g.thc)}`, [[(m.sx(t0) + px) / 2, y0 + 40]], { color: NORMAL, bold: true, box: true });
+  labels.put(`tca = ${formatLabel(tca)}`, [[(x0 + px) / 2, y0 + 72]], { color: CONSTRUCT, bold: true });
   if (!hit) labels.put('d > r: no hit', [[cx, m.sy(d - r) + 16], [cx, y0 + 20], [cx, y0 - 18]], { color: SHADOW, bold: true, size: 15 });
   labels.put('Ro', [[x0 - 8, y0 - 14, 'right'], [x0 - 8, y0 + 16, 'right'], [x0 + 8, y0 + 16, 'left'], [x0, y0 - 18], [x0 + 8, y0 - 14, 'left']], { color: INK, bold: true });
   labels.put('C', [[cx + 10, cy - 12, 'left'], [cx - 10, cy - 12, 'right'], [cx, cy - 18], [cx + 12, cy, 'left'], [cx - 12, cy, 'right'], [cx + 10, cy + 14, 'left'], [cx - 10, cy + 14, 'right']], { color: INK, bold: true });
   for (const [t, name] of roots) {
     const behind = t <= 0, chosen = g.t !== null && t === g.t, tx = m.sx(t);
     const side = name === 't0' ? -1 : 1, align = side < 0 ? 'right' : 'left', other = side < 0 ? 'left' : 'right';
-    labels.put(`${name} = ${fmt(t)}${behind ? ' (behind)' : ''}`,
+    labels.put(`${name} = ${formatLabel(t)}${behind ? ' (behind)' : ''}`,
       [[tx + 6 * side, y0 + 18, align], [tx + 14 * side, y0 - 16, align], [tx - 6 * side, y0 + 18, other], [tx - 14 * side, y0 - 16, other]],
       { color: behind ? MUTED : RAY, bold: chosen });
   }
@@ -168,10 +168,10 @@ function placeLabels(p, m, area, { g, r, tca, d, hit, t0, roots }, { x0, y0, cx,
   let nx = -ey / len, ny = ex / len;
   if (ny > 0) { nx = -nx; ny = -ny; }
   const rAt = (k, f = 0.5) => [cx + ex * f + nx * k, cy + ey * f + ny * k, nx * k < -0.3 * Math.abs(k) ? 'right' : nx * k > 0.3 * Math.abs(k) ? 'left' : 'center'];
-  labels.put(`r = ${fmt(r)}`, [rAt(16), rAt(-16), rAt(16, 0.3), rAt(-16, 0.3), rAt(16, 0.7), rAt(-16, 0.7), rAt(30), rAt(-30)], { color: NORMAL, bold: true });
+  labels.put(`r = ${formatLabel(r)}`, [rAt(16), rAt(-16), rAt(16, 0.3), rAt(-16, 0.3), rAt(16, 0.7), rAt(-16, 0.7), rAt(30), rAt(-30)], { color: NORMAL, bold: true });
   // d beside the dashed line, or beside C when d is short
   const dy = (cy + y0) / 2;
-  labels.put(`d = ${fmt(d)}`, [[px + 8, dy, 'left'], [px - 8, dy, 'right'], [px + 8, dy - 22, 'left'], [px - 8, dy - 22, 'right'],
+  labels.put(`d = ${formatLabel(d)}`, [[px + 8, dy, 'left'], [px - 8, dy, 'right'], [px + 8, dy - 22, 'left'], [px - 8, dy - 22, 'right'],
     [cx + 12, cy - 30, 'left'], [cx - 12, cy - 30, 'right'], [px + 8, y0 + 22, 'left'], [px - 8, y0 + 22, 'right']], { color: INK, bold: true });
   // L beside its arrow, Rd above or below its own
   const along = (f, k) => {

@@ -8,7 +8,7 @@
  *   drawParabola                  f(t) = At² + Bt + C and its roots
  *   drawLegend, createLegendElement   the key of a visual mode
  *   focusTest                      which sphere a pixel's diagrams explain
- *   fmt                            a number as the diagrams print it
+ *   formatLabel                    a number as the diagrams print it (fmt: its old name)
  *
  * `record` is `inspectPixel(scene, camera, x, y)`'s result; without one the
  * diagrams draw the scene and ask for a click. Nothing here throws on a miss,
@@ -23,4 +23,4 @@ export { drawGeometricConstruction } from './construction.js';
 export { drawParabola } from './parabola.js';
 export { drawLegend, createLegendElement } from './legend.js';
 export { focusTest } from './focus.js';
-export { fmt } from '../../format.js';
+export { formatLabel, fmt } from '../../format.js';

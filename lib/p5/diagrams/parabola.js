@@ -1,7 +1,7 @@
 /** The lesson's quadratic f(t) = At² + Bt + C as a curve, with its roots and vertex. */
 import { INK, MUTED, RAY, LIT, SHADOW, CONSTRUCT } from './style.js';
 import { label } from './labels.js';
-import { fmt, sign } from '../../format.js';
+import { formatLabel, sign } from '../../format.js';
 import { niceTicks } from '../../numbers.js';
 import { panel, closePanel, placeholder, clip, unclip, dot } from './draw.js';
 import { focusTest } from './focus.js';
@@ -31,7 +31,7 @@ export function drawParabola(p, o) {
   }
   const curve = quadratic(q, A, B, C);
   const lines = formulaLines(curve);
-  const roots = curve.roots === 2 ? `roots t0 = ${fmt(curve.t0)} and t1 = ${fmt(curve.t1)}` : curve.roots === 1 ? `one root t = ${fmt(curve.t0)}` : 'no root: the curve stays above the t axis';
+  const roots = curve.roots === 2 ? `roots t0 = ${formatLabel(curve.t0)} and t1 = ${formatLabel(curve.t1)}` : curve.roots === 1 ? `one root t = ${formatLabel(curve.t0)}` : 'no root: the curve stays above the t axis';
   nameDiagram(p, o, `The parabola${o.record ? ` of pixel ${o.record.x},${o.record.y}` : ''}: ${lines.map(([text]) => text).join('; ')}; ${roots}.`);
   const area = drawFormulas(p, content, lines);
   const m = plotMapping(curve, area);
@@ -61,8 +61,8 @@ function quadratic(q, A, B, C) {
 function formulaLines({ A, B, C, discriminant, roots }) {
   const meaning = roots === 2 ? ['> 0: two roots, the ray goes in and out', RAY] : roots === 1 ? ['= 0: one root, the ray just touches', LIT] : ['< 0: no real root, no hit', SHADOW];
   return [
-    [`f(t) = ${fmt(A, 2)}t² ${sign(B)} ${fmt(Math.abs(B), 2)}t ${sign(C)} ${fmt(Math.abs(C), 2)}`, INK],
-    [`B² − 4AC = ${fmt(discriminant)} ${meaning[0]}`, meaning[1]],
+    [`f(t) = ${formatLabel(A, 2)}t² ${sign(B)} ${formatLabel(Math.abs(B), 2)}t ${sign(C)} ${formatLabel(Math.abs(C), 2)}`, INK],
+    [`B² − 4AC = ${formatLabel(discriminant)} ${meaning[0]}`, meaning[1]],
   ];
 }
 
@@ -110,7 +110,7 @@ function drawAxes(p, { lo, hi, fmin, sx, sy }, area, { roots, t0, t1 }) {
   if (lo < 0 && hi > 0) label(p, 'eye, t = 0', sx(0) + 6, area.y + 12, { color: MUTED, align: 'left', size: 12 });
   for (const t of niceTicks(lo, hi, 6)) {
     p.push(); p.stroke(INK); p.strokeWeight(1); p.line(sx(t), sy(0) - 4, sx(t), sy(0) + 4); p.pop();
-    label(p, fmt(t, Math.abs(hi - lo) < 5 ? 1 : 0), sx(t), sy(0) - 10, { color: MUTED, size: 11 });
+    label(p, formatLabel(t, Math.abs(hi - lo) < 5 ? 1 : 0), sx(t), sy(0) - 10, { color: MUTED, size: 11 });
   }
   label(p, 't →', area.x + area.w - 6, sy(0) - 12, { color: INK, align: 'right', bold: true });
 }
@@ -131,12 +131,12 @@ function drawCurve(p, { lo, hi, sx, sy }, area, { f }) {
 /** The vertex and the roots, marked and labelled; a root at t ≤ 0 is behind the eye. */
 function drawVertexAndRoots(p, { sx, sy }, { roots, t0, t1, tv, fv }) {
   dot(p, sx(tv), sy(fv), 5, CONSTRUCT);
-  label(p, `vertex: t = −B/2A = ${fmt(tv)}, f = ${fmt(fv)}`, sx(tv), sy(fv) + 18, { color: CONSTRUCT, size: 12, bold: true });
+  label(p, `vertex: t = −B/2A = ${formatLabel(tv)}, f = ${formatLabel(fv)}`, sx(tv), sy(fv) + 18, { color: CONSTRUCT, size: 12, bold: true });
   if (roots > 0) {
     const pts = roots === 1 ? [[t0, 't0 = t1']] : [[t0, 't0'], [t1, 't1']];
     for (const [t, name] of pts) {
       dot(p, sx(t), sy(0), 7, t > 0 ? RAY : MUTED);
-      label(p, `${name} = ${fmt(t)}${t <= 0 ? ' (behind)' : ''}`, sx(t), sy(0) - 18, { color: t > 0 ? RAY : MUTED, bold: true });
+      label(p, `${name} = ${formatLabel(t)}${t <= 0 ? ' (behind)' : ''}`, sx(t), sy(0) - 18, { color: t > 0 ? RAY : MUTED, bold: true });
     }
   }
 }

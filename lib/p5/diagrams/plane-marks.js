@@ -7,7 +7,7 @@
  */
 import { INK, MUTED, PAPER, RAY, NORMAL, LIT, SHADOW, FONT } from './style.js';
 import { ON_LABEL, ON_THICK, ON_FILL, ON_THIN, around, sidesToward } from './labels.js';
-import { fmt } from '../../format.js';
+import { formatLabel } from '../../format.js';
 import { line, screenArrow, darker } from './draw.js';
 
 /** A line in world (u, v), kept clear of labels at `cost` (ON_THICK for a line a label should not cross). */
@@ -133,7 +133,7 @@ export function hugeArc(p, m, labels, c, r, eye, sphere, selected) {
       places.push([x + ((cx - x) / len) * off, y + ((cy - y) / len) * off, 'center', 'middle']);
     }
   }
-  return { text: `${sphere.name || 'sphere'}, r = ${fmt(r, 0)}`, places, style: { color: MUTED, size: 12 }, optional: true, later: 0.2 };
+  return { text: `${sphere.name || 'sphere'}, r = ${formatLabel(r, 0)}`, places, style: { color: MUTED, size: 12 }, optional: true, later: 0.2 };
 }
 
 /** A shadow ray from the hit point to a light: lit, in shadow, or (faint) facing away. */
@@ -175,7 +175,7 @@ export function angleArc(p, labels, ex, ey, view, along, angle) {
     [ex - 18, ey + 22, 'right', 'top'], [ex + 18, ey + 22, 'left', 'top'],
     ...around(ex, ey, r, 6, sidesToward(-Math.cos(a0 + d / 2), -Math.sin(a0 + d / 2))),
   ];
-  return { text: `${angle.name} = ${fmt(angle.value)}°`, places, style: { color: RAY, bold: true } };
+  return { text: `${angle.name} = ${formatLabel(angle.value)}°`, places, style: { color: RAY, bold: true } };
 }
 
 /** The eye, "eye (Ro)" under it or beside it. */

@@ -6,7 +6,7 @@ import { isHuge } from '../../modes.js';
 import { nameDiagram } from './aria.js';
 import { colorWord } from '../../describe.js';
 import { MUTED, RAY } from './style.js';
-import { fmt } from '../../format.js';
+import { formatLabel } from '../../format.js';
 import { labelPlacer, ON_LABEL, ON_THICK, ON_THIN } from './labels.js';
 import { panel, closePanel, placeholder, message, messageBox, mapping, clip, unclip, dot, offset, norm2 } from './draw.js';
 import {
@@ -112,8 +112,8 @@ function planeViewWords(view, scene, camera, record) {
   const shown = `${view.title}: the eye, the image plane of ${camera[view.cells]} ${view.cellWord}s, ${spheres.length ? `the spheres ${spheres.join(', ')}` : 'no spheres'} and ${scene.lights.length} ${scene.lights.length === 1 ? 'light' : 'lights'}.`;
   if (!record) return `${shown} Click a pixel to see its ray.`;
   const { name, value } = view.angle(record);
-  const hit = record.hit ? `hits ${record.hit.object.name || 'an object'} at t = ${fmt(record.hit.t)}` : 'hits nothing';
-  return `${shown} The ray of pixel ${record.x},${record.y}, ${name} = ${fmt(value)}°, ${hit}.`;
+  const hit = record.hit ? `hits ${record.hit.object.name || 'an object'} at t = ${formatLabel(record.hit.t)}` : 'hits nothing';
+  return `${shown} The ray of pixel ${record.x},${record.y}, ${name} = ${formatLabel(value)}°, ${hit}.`;
 }
 
 /**
@@ -172,7 +172,7 @@ function rayMarks(v, record) {
     dot(p, x1, y1, 5, RAY);
     labels.keepClearCircle(x1, y1, 6, ON_LABEL, { disc: true });
   }
-  const note = !hit ? 'no hit: the background colour' : inView ? null : `hit at t = ${fmt(hit.t)}, off the view →`;
+  const note = !hit ? 'no hit: the background colour' : inView ? null : `hit at t = ${formatLabel(hit.t)}, off the view →`;
   const along = pr(ray.direction);
   return {
     note: note && rayEndNote(area, v.ex, v.ey, x1, y1, note),

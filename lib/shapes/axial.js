@@ -1,0 +1,104 @@
+/**
+ * What the cylinder and the cone share: both stand on a vertical axis through
+ * `center`, from center.y − height/2 to center.y + height/2, both are the
+ * lesson's quadratic At² + Bt + C = 0 with y treated apart, and both may be
+ * closed by flat discs (caps).
+ */
+import { toVec3, Vec3 } from '../vec3.js';
+import { finiteNumber, bool } from '../check.js';
+import { Material, shapeOptions } from '../material.js';
+
+/**
+ * A discriminant this small, relative to the terms it is the difference of
+ * (B² and 4AC), counts as zero: the ray grazes the surface (as for the sphere).
+ */
+export const TANGENT = 1e-12;
+
+/**
+ * The checked arguments of a Cylinder or a Cone: `center`, `radius` > 0,
+ * `height` > 0, and the options: `capped` (default true) plus a sphere's
+ * material options and `name`.
+ */
+export function axialArguments(center, radius, height, options) {
+  const c = toVec3(center, 'center');
+  positive(radius, 'radius');
+  positive(height, 'height');
+  let capped = true, rest = options;
+  if (options && typeof options === 'object' && !(options instanceof Material) && Object.hasOwn(options, 'capped')) {
+    ({ capped, ...rest } = options);
+    bool(capped, 'capped');
+  }
+  const { name, material } = shapeOptions(rest);
+  return { center: c, radius, height, capped, name, material };
+}
+
+/** A finite number greater than 0, else an error naming `field`. */
+function positive(value, field) {
+  finiteNumber(value, field);
+  if (value <= 0) throw new RangeError(`${field} must be greater than 0, got ${value}`);
+}
+
+/**
+ * Solves At² + Bt + C = 0 into `out` (a Float64Array of 2, t0 ≤ t1) and
+ * returns how many real roots there are: 0, 1 or 2. A = 0 is a line, not a
+ * parabola: one root −C/B, or none when B = 0 too (the ray runs along the
+ * surface, never crossing it).
+ */
+export function solveQuadratic(A, B, C, out) {
+  if (A === 0) {
+    if (B === 0) return 0;
+    out[0] = out[1] = -C / B;
+    return 1;
+  }
+  const discriminant = B * B - 4 * A * C;
+  if (Math.abs(discriminant) <= TANGENT * (B * B + 4 * Math.abs(A * C))) {
+    out[0] = out[1] = -B / (2 * A); // tangent
+    return 1;
+  }
+  if (discriminant < 0) return 0;
+  // (−B ± √disc) / 2A, written so the two terms never cancel each other out.
+  const q = -0.5 * (B + (B < 0 ? -1 : 1) * Math.sqrt(discriminant));
+  const ta = q / A, tb = C / q;
+  out[0] = Math.min(ta, tb);
+  out[1] = Math.max(ta, tb);
+  return 2;
+}
+
+/** The record's `roots`, `t0`, `t1` (from `solveQuadratic`) and their heights `y0`, `y1`; null when there are none. */
+export function recordSide(target, count, roots, oy, dy) {
+  target.roots = count;
+  target.t0 = count ? roots[0] : null;
+  target.t1 = count ? roots[1] : null;
+  target.y0 = count ? oy + dy * roots[0] : null;
+  target.y1 = count ? oy + dy * roots[1] : null;
+}
+
+/**
+ * t where the ray (x, z: the origin relative to the axis) crosses the plane
+ * y = yPlane inside the disc of radius² `r2` around the axis, or NaN: a ray
+ * parallel to the plane, or one crossing it outside the disc.
+ */
+export function capCrossing(yPlane, r2, x, oy, z, dx, dy, dz) {
+  if (dy === 0) return NaN;
+  const t = (yPlane - oy) / dy;
+  const px = x + dx * t, pz = z + dz * t;
+  return px * px + pz * pz <= r2 ? t : NaN;
+}
+
+/** Is y within the side's span: above `lo`, below `hi` (or at it, when `closedTop`)? */
+export function withinSpan(y, lo, hi, closedTop) {
+  return y > lo && (y < hi || (closedTop && y === hi));
+}
+
+/** A number, or null when it is NaN (the record's "none"). */
+export function orNull(value) {
+  return Number.isNaN(value) ? null : value;
+}
+
+/** The box around a shape of `radius` on the axis from `bottom` to `top`. */
+export function axialBounds(center, radius, height) {
+  return {
+    min: new Vec3(center.x - radius, center.y - height / 2, center.z - radius),
+    max: new Vec3(center.x + radius, center.y + height / 2, center.z + radius),
+  };
+}

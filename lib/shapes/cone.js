@@ -1,0 +1,112 @@
+/**
+ * A cone standing on the y axis through `center`: its base, a circle of
+ * `radius`, at center.y − height/2, its apex at center.y + height/2. Its
+ * radius shrinks by k = radius / height per unit up, so a point is on it when
+ * (X − Xc)² + (Z − Zc)² = k²·(apex − Y)²; along the ray that is the lesson's
+ * At² + Bt + C = 0 again, with A = Xd² + Zd² − k²·Yd², which may be 0 or
+ * negative: a ray parallel to the cone's slope meets it once.
+ */
+import { Vec3, set } from '../vec3.js';
+import { EPSILON } from '../constants.js';
+import { axialArguments, solveQuadratic, recordSide, capCrossing, withinSpan, orNull, axialBounds } from './axial.js';
+
+const _roots = new Float64Array(2);
+
+export class Cone {
+  /**
+   * @param {number[]|{x,y,z}} center the middle of the axis
+   * @param {number} radius > 0, the base circle's
+   * @param {number} height > 0: base at center.y − height/2, apex at center.y + height/2
+   * @param {object} [options] `capped` (default true: the base closed by a disc), and a sphere's material options and `name`
+   * @example
+   * const hat = new Cone([0, 2, -20], 3, 4, { color: 'orange' });
+   */
+  constructor(center, radius, height, options) {
+    const checked = axialArguments(center, radius, height, options);
+    this.center = checked.center;
+    this.radius = checked.radius;
+    this.height = checked.height;
+    this.capped = checked.capped;
+    this.name = checked.name;
+    this.material = checked.material;
+  }
+
+  /** Smallest t > tMin where the ray meets the cone, or Infinity. */
+  hit(ray, tMin = EPSILON) {
+    const o = ray.origin, d = ray.direction, c = this.center;
+    return coneHit(c.x, c.y, c.z, this.radius, this.height, this.capped, o.x, o.y, o.z, d.x, d.y, d.z, tMin);
+  }
+
+  /**
+   * The lesson's record, written into `target`: the sloped side's
+   * `A, B, C, discriminant, roots, t0, t1` (the roots of the double cone,
+   * tip to tip), `y0, y1` (their heights: a root above the apex, on the
+   * upper half, or below the base is cut off), the base's `tBase` (null when
+   * the ray crosses its plane outside the disc, or it has no cap), and
+   * `part` ('side', 'base' or null) with `t`, the nearest hit past EPSILON or null.
+   */
+  intersect(ray, target = {}) {
+    const o = ray.origin, d = ray.direction, c = this.center, r = this.radius;
+    const k2 = (r / this.height) * (r / this.height);
+    const x = o.x - c.x, z = o.z - c.z; // Ro − center, sideways
+    const base = c.y - this.height / 2, apex = c.y + this.height / 2, below = apex - o.y;
+    const A = d.x * d.x + d.z * d.z - k2 * d.y * d.y;
+    const B = 2 * (x * d.x + z * d.z + k2 * below * d.y);
+    const C = x * x + z * z - k2 * below * below;
+    Object.assign(target, { A, B, C, discriminant: B * B - 4 * A * C });
+    recordSide(target, solveQuadratic(A, B, C, _roots), _roots, o.y, d.y);
+    target.tBase = this.capped ? orNull(capCrossing(base, r * r, x, o.y, z, d.x, d.y, d.z)) : null;
+    target.t = null;
+    target.part = null;
+    for (const [t, part] of [[target.t0, 'side'], [target.t1, 'side'], [target.tBase, 'base']]) {
+      const ok = t !== null && t > EPSILON && (target.t === null || t < target.t) &&
+        (part !== 'side' || withinSpan(o.y + d.y * t, base, apex, true));
+      if (ok) { target.t = t; target.part = part; }
+    }
+    return target;
+  }
+
+  /**
+   * The outward unit normal at a surface point: down on the base; on the
+   * side, out from the axis and up by the slope k, ∝ (X − Xc, k·ρ, Z − Zc)
+   * where ρ is the distance from the axis; straight up at the apex.
+   */
+  normalAt(point, out = new Vec3()) {
+    const c = this.center, k = this.radius / this.height, x = point.x - c.x, z = point.z - c.z;
+    const rho = Math.sqrt(x * x + z * z);
+    const toSide = Math.abs(rho - k * (c.y + this.height / 2 - point.y)) / Math.sqrt(1 + k * k);
+    if (this.capped && Math.abs(point.y - (c.y - this.height / 2)) < toSide) return set(out, 0, -1, 0);
+    if (rho === 0) return set(out, 0, 1, 0);
+    const length = rho * Math.sqrt(1 + k * k); // |(x, kρ, z)|
+    return set(out, x / length, (k * rho) / length, z / length);
+  }
+
+  /** The world-space box around the cone. */
+  bounds() {
+    return axialBounds(this.center, this.radius, this.height);
+  }
+}
+
+/**
+ * The ray–cone test in numbers only (Cone#hit; a packed scene's kernel may
+ * call it too): the nearest of the side's roots between base and apex and
+ * the base's crossing greater than tMin, or Infinity.
+ */
+export function coneHit(cx, cy, cz, radius, height, capped, ox, oy, oz, dx, dy, dz, tMin) {
+  const k2 = (radius / height) * (radius / height);
+  const x = ox - cx, z = oz - cz, base = cy - height / 2, apex = cy + height / 2, below = apex - oy;
+  const A = dx * dx + dz * dz - k2 * dy * dy;
+  const B = 2 * (x * dx + z * dz + k2 * below * dy);
+  const C = x * x + z * z - k2 * below * below;
+  let best = Infinity;
+  const roots = solveQuadratic(A, B, C, _roots);
+  for (let i = 0; i < roots; i++) {
+    const t = _roots[i];
+    if (t > tMin && t < best && withinSpan(oy + dy * t, base, apex, true)) best = t;
+  }
+  if (capped) {
+    const tBase = capCrossing(base, radius * radius, x, oy, z, dx, dy, dz);
+    if (tBase > tMin && tBase < best) best = tBase;
+  }
+  return best;
+}

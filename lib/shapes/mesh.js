@@ -1,0 +1,232 @@
+/**
+ * A triangle mesh (a bunny, a teapot): many triangles under a bounding
+ * volume hierarchy (lib/bvh.js), so a ray tests the few triangles in the
+ * boxes it passes through: the same nearest t as a loop over every triangle,
+ * at a cost that grows with the log of their number.
+ */
+import { toVec3, Vec3, set } from '../vec3.js';
+import { show } from '../check.js';
+import { shapeOptions } from '../material.js';
+import { EPSILON } from '../constants.js';
+import { BVH } from '../bvh.js';
+import { intersectTriangle, FLAT } from './triangle.js';
+import { parseOBJ } from './obj.js';
+
+export class Mesh {
+  /**
+   * @param {{ positions: number[][], cells: number[][] }} data the vertices `[x, y, z]`
+   *   and the triangles, each 3 indices into positions, counterclockwise seen from the front
+   * @param {import('../material.js').Material|object} [options] a Material or its options, which may also give the shape a `name`
+   * @example
+   * import bunny from 'bunny'; // { positions, cells }
+   * const mesh = new Mesh(bunny, { color: [0.9, 0.8, 0.7] });
+   * const tetra = new Mesh({ positions: [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], cells: [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]] });
+   */
+  constructor(data, options) {
+    const { positions, cells } = checkData(data);
+    const shape = shapeOptions(options);
+    this.name = shape.name;
+    this.material = shape.material;
+    this.positions = positions;
+    this.cells = cells;
+    this.triangleCount = cells.length;
+    this.vertices = Float64Array.from(positions.flat());
+    this.indices = Int32Array.from(cells.flat());
+    this.normals = triangleNormals(this.vertices, this.indices);
+    this.bvh = new BVH(triangleBoxes(this.vertices, this.indices));
+    this.corners = cornersInOrder(this.vertices, this.indices, this.bvh.order);
+    this.size = boxSize(this.bounds());
+    this.lastTriangle = -1;
+  }
+
+  /**
+   * A Mesh from Wavefront OBJ text (its v and f lines; see lib/shapes/obj.js).
+   * @param {string} text
+   * @param {import('../material.js').Material|object} [options]
+   */
+  static fromOBJ(text, options) {
+    return new Mesh(parseOBJ(text), options);
+  }
+
+  /** Smallest t > tMin where the ray meets a triangle, or Infinity; remembers which (for normalAt). */
+  hit(ray, tMin = EPSILON) {
+    this.lastTriangle = this.bvh.nearest(ray, tMin, this.corners);
+    return this.bvh.t;
+  }
+
+  /**
+   * The record of the BVH's work, written into `target`: `boxTests` (slab
+   * tests), `boxesEntered` and `entered` (those boxes' node numbers, see
+   * `bvh.box(i)`), `triangleTests` (Möller–Trumbore tests) beside
+   * `bruteForceTests` (what a loop over every triangle would do: all of them),
+   * `triangle` (the index into cells of the triangle hit, or null), `steps`
+   * (its Möller–Trumbore record) and `t`, the nearest hit past EPSILON or null.
+   */
+  intersect(ray, target = {}) {
+    const stats = { boxTests: 0, boxesEntered: 0, entered: [], itemTests: 0 };
+    const triangle = this.bvh.nearest(ray, EPSILON, this.corners, stats);
+    const t = this.bvh.t;
+    this.lastTriangle = triangle;
+    Object.assign(target, {
+      boxTests: stats.boxTests, boxesEntered: stats.boxesEntered, entered: stats.entered,
+      triangleTests: stats.itemTests, bruteForceTests: this.triangleCount,
+      triangle: triangle >= 0 ? triangle : null,
+      steps: triangle >= 0 ? intersectTriangle(ray, ...this.cells[triangle].map((i) => new Vec3(...this.positions[i]))) : null,
+      t: t === Infinity ? null : t,
+    });
+    return target;
+  }
+
+  /**
+   * The unit normal (front side, e1 × e2) of the triangle `point` lies on:
+   * the last hit's when the point is on it (as after hit or intersect),
+   * else the nearest triangle's (a loop over all of them).
+   */
+  normalAt(point, out = new Vec3()) {
+    let triangle = this.lastTriangle;
+    const near = 1e-7 * (this.size + Math.abs(point.x) + Math.abs(point.y) + Math.abs(point.z));
+    if (triangle < 0 || this.distanceTo(triangle, point) > near) triangle = this.nearestTriangle(point);
+    const n = this.normals, j = 3 * triangle;
+    return set(out, n[j], n[j + 1], n[j + 2]);
+  }
+
+  /** The index of the triangle nearest to `point`. */
+  nearestTriangle(point) {
+    let best = 0, bestDistance = Infinity;
+    for (let i = 0; i < this.triangleCount; i++) {
+      const d = this.distanceTo(i, point);
+      if (d < bestDistance) { bestDistance = d; best = i; }
+    }
+    return best;
+  }
+
+  /**
+   * The distance from `point` to triangle i: to its plane when it lies over
+   * the triangle, else to its nearest edge. Numbers only: normalAt runs once a pixel.
+   */
+  distanceTo(i, point) {
+    const v = this.vertices, ia = 3 * this.indices[3 * i], ib = 3 * this.indices[3 * i + 1], ic = 3 * this.indices[3 * i + 2];
+    const ax = v[ia], ay = v[ia + 1], az = v[ia + 2];
+    const e1x = v[ib] - ax, e1y = v[ib + 1] - ay, e1z = v[ib + 2] - az;
+    const e2x = v[ic] - ax, e2y = v[ic + 1] - ay, e2z = v[ic + 2] - az;
+    const wx = point.x - ax, wy = point.y - ay, wz = point.z - az;
+    const d00 = e1x * e1x + e1y * e1y + e1z * e1z, d01 = e1x * e2x + e1y * e2y + e1z * e2z;
+    const d11 = e2x * e2x + e2y * e2y + e2z * e2z;
+    const d20 = wx * e1x + wy * e1y + wz * e1z, d21 = wx * e2x + wy * e2y + wz * e2z;
+    const denominator = d00 * d11 - d01 * d01;
+    const s = (d11 * d20 - d01 * d21) / denominator, t = (d00 * d21 - d01 * d20) / denominator; // point ≈ a + s·e1 + t·e2
+    if (s >= 0 && t >= 0 && s + t <= 1) {
+      const n = this.normals;
+      return Math.abs(wx * n[3 * i] + wy * n[3 * i + 1] + wz * n[3 * i + 2]);
+    }
+    return Math.min(toSegment(point, v, ia, ib), toSegment(point, v, ib, ic), toSegment(point, v, ic, ia));
+  }
+
+  /** The world-space box around every vertex. */
+  bounds() {
+    const min = new Vec3(Infinity, Infinity, Infinity), max = new Vec3(-Infinity, -Infinity, -Infinity);
+    for (const [x, y, z] of this.positions) {
+      set(min, Math.min(min.x, x), Math.min(min.y, y), Math.min(min.z, z));
+      set(max, Math.max(max.x, x), Math.max(max.y, y), Math.max(max.z, z));
+    }
+    return { min, max };
+  }
+}
+
+/** `data`'s positions and cells, checked and copied as plain lists; an error names the field. */
+function checkData(data) {
+  if (!data || typeof data !== 'object') throw new TypeError(`mesh data must be { positions, cells }, got ${show(data)}`);
+  const { positions, cells } = data;
+  if (!Array.isArray(positions) || positions.length < 3) {
+    throw new TypeError(`positions must be a list of at least 3 points [x, y, z], got ${show(positions)}`);
+  }
+  if (!Array.isArray(cells) || cells.length < 1) {
+    throw new TypeError(`cells must be a list of triangles [i, j, k], at least one, got ${show(cells)}`);
+  }
+  const points = positions.map((p, i) => (isTriple(p) ? p : vec3List(p, `positions[${i}]`)));
+  const checkedCells = cells.map((cell, i) => {
+    const list = /** @type {ArrayLike<number>} */ (cell);
+    if (!(Array.isArray(cell) || ArrayBuffer.isView(cell)) || list.length !== 3) {
+      throw new TypeError(`cells[${i}] must be a triple of vertex indices [i, j, k], got ${show(cell)}`);
+    }
+    for (let k = 0; k < 3; k++) {
+      const index = list[k];
+      if (!Number.isInteger(index) || index < 0 || index >= points.length) {
+        throw new RangeError(`cells[${i}][${k}] must be a whole number from 0 to ${points.length - 1} (an index into positions), got ${show(index)}`);
+      }
+    }
+    return [list[0], list[1], list[2]];
+  });
+  return { positions: points.map((p) => [p[0], p[1], p[2]]), cells: checkedCells };
+}
+
+/** Is p already three finite numbers [x, y, z] (the common case, checked without a Vec3)? */
+function isTriple(p) {
+  return Array.isArray(p) && p.length === 3 && Number.isFinite(p[0]) && Number.isFinite(p[1]) && Number.isFinite(p[2]) &&
+    typeof p[0] === 'number' && typeof p[1] === 'number' && typeof p[2] === 'number';
+}
+
+/** Any other point form toVec3 takes ({x, y, z}, a typed array), or its error naming `field`. */
+function vec3List(p, field) {
+  const v = toVec3(p, field);
+  return [v.x, v.y, v.z];
+}
+
+/** Every triangle's box, 6 numbers each (the BVH's items). */
+function triangleBoxes(vertices, indices) {
+  const boxes = new Float64Array(2 * indices.length);
+  for (let i = 0; i < indices.length / 3; i++) {
+    for (let a = 0; a < 3; a++) {
+      const p = vertices[3 * indices[3 * i] + a], q = vertices[3 * indices[3 * i + 1] + a], r = vertices[3 * indices[3 * i + 2] + a];
+      boxes[6 * i + a] = Math.min(p, q, r);
+      boxes[6 * i + 3 + a] = Math.max(p, q, r);
+    }
+  }
+  return boxes;
+}
+
+/** Corner a and edges e1 = b − a, e2 = c − a of every triangle, 9 numbers each, in the BVH's order: a leaf's triangles sit side by side. */
+function cornersInOrder(vertices, indices, order) {
+  const corners = new Float64Array(3 * indices.length);
+  for (let k = 0; k < order.length; k++) {
+    const i = order[k], ia = 3 * indices[3 * i], ib = 3 * indices[3 * i + 1], ic = 3 * indices[3 * i + 2];
+    for (let a = 0; a < 3; a++) {
+      corners[9 * k + a] = vertices[ia + a];
+      corners[9 * k + 3 + a] = vertices[ib + a] - vertices[ia + a];
+      corners[9 * k + 6 + a] = vertices[ic + a] - vertices[ia + a];
+    }
+  }
+  return corners;
+}
+
+/**
+ * Every triangle's unit normal e1 × e2, 3 numbers each, in cells' order; a
+ * RangeError naming the cell when one has (next to) no area, as for a Triangle.
+ */
+function triangleNormals(vertices, indices) {
+  const normals = new Float64Array(indices.length);
+  for (let i = 0; i < indices.length / 3; i++) {
+    const ia = 3 * indices[3 * i], ib = 3 * indices[3 * i + 1], ic = 3 * indices[3 * i + 2];
+    const e1x = vertices[ib] - vertices[ia], e1y = vertices[ib + 1] - vertices[ia + 1], e1z = vertices[ib + 2] - vertices[ia + 2];
+    const e2x = vertices[ic] - vertices[ia], e2y = vertices[ic + 1] - vertices[ia + 1], e2z = vertices[ic + 2] - vertices[ia + 2];
+    const nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
+    const length = Math.hypot(nx, ny, nz);
+    if (!(length > FLAT * Math.hypot(e1x, e1y, e1z) * Math.hypot(e2x, e2y, e2z))) {
+      throw new RangeError(`cells[${i}]: a, b, c must not lie on one line: the triangle has zero area`);
+    }
+    normals[3 * i] = nx / length; normals[3 * i + 1] = ny / length; normals[3 * i + 2] = nz / length;
+  }
+  return normals;
+}
+
+function boxSize({ min, max }) {
+  return Math.hypot(max.x - min.x, max.y - min.y, max.z - min.z);
+}
+
+/** The distance from p to the segment between the vertices at v[i] and v[j]. */
+function toSegment(p, v, i, j) {
+  const abx = v[j] - v[i], aby = v[j + 1] - v[i + 1], abz = v[j + 2] - v[i + 2];
+  const apx = p.x - v[i], apy = p.y - v[i + 1], apz = p.z - v[i + 2];
+  const s = Math.min(1, Math.max(0, (apx * abx + apy * aby + apz * abz) / (abx * abx + aby * aby + abz * abz)));
+  return Math.hypot(apx - s * abx, apy - s * aby, apz - s * abz);
+}

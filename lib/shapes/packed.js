@@ -1,0 +1,40 @@
+/**
+ * The packed layout render()'s fast kernel (lib/kernel.js) reads shapes in,
+ * in a module of its own below both the kernel and the shapes: each shape
+ * class writes its own numbers and does its own numbers-only hit and normal,
+ * and neither imports the other.
+ *
+ * A shape class that the kernel can run has a static `packed`:
+ * `{ pack(shape, shapes, at), hit(shapes, at, ox, oy, oz, dx, dy, dz, tMin), normal(shapes, at, surface) }`:
+ * `pack` writes at most KIND numbers from `shapes[at]`; `hit` is its `hit`
+ * in numbers (the same t, bit for bit); `normal` reads the point at
+ * `surface[P…]` and writes its `normalAt` into `surface[N…]`.
+ */
+
+/** Numbers per shape in the kernel's `shapes` array: up to six of the shape's own, then its kind. */
+export const SHAPE = 7;
+
+/** Where among a shape's numbers its kind lies: the kernel's index of its class's `packed`. */
+export const KIND = 6;
+
+/** Where the hit point P and the unit normal N lie in the kernel's `surface` record. */
+export const P = 0, N = 3;
+
+/**
+ * Every number the kernel writes per pixel lives in one buffer of its own,
+ * `GUARD` empty bytes from either end. Workers are threads of one process,
+ * and in Chromium two workers' small buffers could lie side by side on one
+ * cache line: each write by one then stalled the other (false sharing), and
+ * two workers ran at half speed (docs/performance.md).
+ */
+const GUARD = 256; // more than a cache line and the neighbour the CPU fetches with it
+const scratch = new ArrayBuffer(4096);
+let scratchUsed = GUARD;
+
+/** `count` numbers of the kernel's scratch buffer. */
+export function scratchNumbers(count) {
+  const numbers = new Float64Array(scratch, scratchUsed, count);
+  scratchUsed += count * Float64Array.BYTES_PER_ELEMENT;
+  if (scratchUsed > scratch.byteLength - GUARD) throw new Error('lib/shapes/packed.js: the scratch buffer is too small');
+  return numbers;
+}
