@@ -5,6 +5,7 @@ import { includeText, oneFileInDev, apiReference, apiLine, fromFileNotice } from
 import { p5OfflineI18n } from './scripts/p5-offline-i18n.js';
 import { teachersAnswers, classroom } from './scripts/classroom.js';
 import { reloadItsPagesOnly, swapSketchesInPlace, syntaxErrorsWhereTheyAre } from './scripts/vite-live-coding.js';
+import { longLinks } from './scripts/long-links.js';
 
 // Every page is an entry of the static build: the gallery, the web editor's
 // steps, the teacher's page of progress codes and each sketch (the API reference is made by a plugin).
@@ -29,7 +30,8 @@ export default defineConfig(({ command, mode }) => ({
   // The web editor's page, its one-file build, the API reference and each lesson's
   // "API:" line, and the notice a lesson page shows when opened from a file: scripts/site-plugins.js.
   // The answers and the class server's ways (compressed, revalidated, p5 minified): scripts/classroom.js.
-  plugins: [teachersAnswers({ served: command === 'serve' ? mode !== 'class' : withSolutions }), ...(mode === 'class' ? [classroom()] : []),
+  // A link too long for the server gets a page saying so (scripts/long-links.js).
+  plugins: [teachersAnswers({ served: command === 'serve' ? mode !== 'class' : withSolutions }), ...(mode === 'class' ? [classroom()] : []), longLinks(),
     p5OfflineI18n(), reloadItsPagesOnly(), swapSketchesInPlace(), syntaxErrorsWhereTheyAre(), includeText(), oneFileInDev(), apiReference(), apiLine(), fromFileNotice()],
   optimizeDeps: { rolldownOptions: { plugins: [p5OfflineI18n()] } },
   build: {

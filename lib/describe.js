@@ -19,6 +19,13 @@ const SAMPLE_ROWS = 18;
 const NAMED = 8;
 /** The share of a shape's rays another shape must meet first for it to be "behind" that one. */
 const HIDDEN_SHARE = 0.25;
+/**
+ * Hit tests (rays × shapes) a description may cost: a ray toward each of
+ * 10,000 spheres' centres made 10⁸ of them, 1.6 s at every change. Past it,
+ * the centre rays go to a spread of the spheres in view (the others are
+ * counted), and past that the grid of rays has fewer rays.
+ */
+const MAX_HIT_TESTS = 500_000;
 const NUMBER_WORDS = ['no', 'one', 'two', 'three', 'four', 'five', 'six', 'seven', 'eight', 'nine', 'ten'];
 
 /**
@@ -33,17 +40,17 @@ const NUMBER_WORDS = ['no', 'one', 'two', 'three', 'four', 'five', 'six', 'seven
  * // 'A pink sphere in the middle; a white sphere on the left; …; and a gray floor, on a white background. Two lights.'
  */
 export function describeScene(scene, camera) {
-  const seen = sampleScene(scene, camera);
+  const { seen, unsampled } = sample(scene, camera);
   const flat = [], round = [];
   for (const s of seen) (s.surface ? flat : round).push(s);
   round.sort((a, b) => b.first - a.first);
   const parts = round.slice(0, NAMED).map((s) => objectPhrase(s, seen));
-  const more = round.length - NAMED;
+  const more = round.length - NAMED + unsampled;
   if (more > 0) parts.push(`${count(more)} more ${more === 1 ? 'shape' : 'shapes'}`);
   parts.push(...flat.map(surfacePhrase));
   const things = parts.length ? list(parts) : 'nothing';
   const background = `on a ${colorWord(scene.background)} background`;
-  const hidden = scene.objects.filter((o) => !o.material.isEmissive).length - seen.filter((s) => !s.object.material.isEmissive).length;
+  const hidden = scene.objects.filter((o) => !o.material.isEmissive).length - seen.filter((s) => !s.object.material.isEmissive).length - unsampled;
   const outOfView = hidden > 0 ? ` ${capital(count(hidden))} ${hidden === 1 ? 'shape is' : 'shapes are'} out of view.` : '';
   const lights = scene.lights.length;
   return `${capital(things)}, ${background}.${outOfView} ${capital(count(lights))} ${lights === 1 ? 'light' : 'lights'}.`;
@@ -55,6 +62,11 @@ export function describeScene(scene, camera) {
  * x, y: where on the picture, 0–1; behind: the shape in front of it most often).
  */
 export function sampleScene(scene, camera) {
+  return sample(scene, camera).seen;
+}
+
+/** sampleScene's shapes (`seen`), and how many spheres in view got no ray of their own and were met by none (`unsampled`). */
+function sample(scene, camera) {
   const objects = scene.objects;
   const seen = objects.map((object) => ({ object, first: 0, any: 0, sx: 0, sy: 0, fx: 0, fy: 0, covers: new Map(), surface: surfaceKind(object, camera) }));
   const ray = { origin: camera.position, direction: { x: 0, y: 0, z: -1 } };
@@ -75,16 +87,33 @@ export function sampleScene(scene, camera) {
       if (i === nearest) { s.first++; s.fx += u; s.fy += v; } else s.covers.set(nearest, (s.covers.get(nearest) ?? 0) + 1);
     }
   };
-  const columns = Math.min(SAMPLE_COLUMNS, camera.width), rows = Math.min(SAMPLE_ROWS, camera.height);
+  const affordable = Math.floor(MAX_HIT_TESTS / Math.max(1, objects.length));
+  const shrink = Math.min(1, Math.sqrt(affordable / (SAMPLE_COLUMNS * SAMPLE_ROWS)));
+  const columns = Math.max(1, Math.min(Math.floor(SAMPLE_COLUMNS * shrink), camera.width));
+  const rows = Math.max(1, Math.min(Math.floor(SAMPLE_ROWS * shrink), camera.height));
   for (let j = 0; j < rows; j++) {
     for (let i = 0; i < columns; i++) cast(((i + 0.5) * camera.width) / columns - 0.5, ((j + 0.5) * camera.height) / rows - 0.5);
   }
-  for (const o of objects) {
-    const ball = ballOf(o); // a ray at each ball's centre too: a small one falls between the samples
+  const inView = [];
+  for (let i = 0; i < objects.length; i++) {
+    const ball = ballOf(objects[i]); // a ray at each ball's centre too: a small one falls between the samples
     if (!ball) continue;
     const p = camera.project(ball.center);
-    if (p.depth > 0 && p.x >= -0.5 && p.x <= camera.width - 0.5 && p.y >= -0.5 && p.y <= camera.height - 0.5) cast(p.x, p.y);
+    if (p.depth > 0 && p.x >= -0.5 && p.x <= camera.width - 0.5 && p.y >= -0.5 && p.y <= camera.height - 0.5) inView.push([i, p]);
   }
+  // One ray toward each sphere's centre, or toward an even spread of them when that would cost too many hit tests.
+  const rays = Math.min(inView.length, Math.max(0, affordable - columns * rows));
+  const skipped = new Set(inView.map(([i]) => i));
+  for (let j = 0; j < rays; j++) {
+    const [i, p] = inView[Math.floor((j * inView.length) / rays)];
+    skipped.delete(i);
+    cast(p.x, p.y);
+  }
+  return { seen: summary(seen), unsampled: [...skipped].filter((i) => seen[i].any === 0).length };
+}
+
+/** The shapes some ray met, with where they are and what is in front of them. */
+function summary(seen) {
   return seen.filter((s) => s.any > 0).map((s) => {
     const n = s.first || s.any;
     const x = (s.first ? s.fx : s.sx) / n, y = (s.first ? s.fy : s.sy) / n;

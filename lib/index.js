@@ -29,7 +29,8 @@ export { ParallelRenderer } from './workers/parallel.js';
 export { toColor, toHex, colorName } from './color.js';
 // The class's example scene; scenes as JSON and as code.
 export { classScene, classSceneAt } from './scenes.js';
-export { sceneToJSON, sceneFromJSON, sceneToCode } from './serialize.js';
+export { sceneToJSON, sceneFromJSON, sceneToCode, sceneCodeLines } from './serialize.js';
+export { joinInSlices, nextTask } from './slices.js';
 // The class activity and the homework self-checks.
 export { pinkPixelVerdict, answerText, readAnswerLine } from './activity.js';
 export { checkTrafficSignal, checkRearLights, solutionParameter } from './homework.js';

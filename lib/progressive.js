@@ -34,6 +34,12 @@ const CHANGES = ['scene', 'camera', 'mode', 'shader', 'slowRaysPerStep'];
  */
 export const CHECK_EVERY = 16;
 
+/**
+ * A run of at least this many milliseconds tells the render's dearest pace
+ * (ms a pixel); a shorter one is too near the clock's own steps to tell it.
+ */
+const PACE_RUN_MS = 0.5;
+
 export class ProgressiveRenderer {
   #passes = COARSE_PASSES;
   #passIndex = 0;
@@ -56,6 +62,8 @@ export class ProgressiveRenderer {
   #credit = 0;
   #lastStepAt = null;
   #raysPerSecond = 0;
+  /** The dearest pace a run of this render has had, ms a pixel (0: none measured yet). */
+  #dearest = 0;
 
   /**
    * @param {object} options
@@ -131,6 +139,7 @@ export class ProgressiveRenderer {
     this.#done = false;
     this.#credit = 0;
     this.#lastStepAt = null;
+    this.#dearest = 0;
     this.current = null;
     this.#nextRow(); // a row with nothing to trace (1 px wide, later passes): on to one with something
     return this;
@@ -222,17 +231,26 @@ export class ProgressiveRenderer {
    * Traces until `budgetMs` have passed since `start`; returns how many pixels
    * it traced. The clock is read after CHECK_EVERY pixels, then after runs of
    * a quarter of the pixels that the pace so far says still fit (CHECK_EVERY
-   * at least; twice the last run while the clock has not moved): a few dozen
-   * reads a step instead of one every CHECK_EVERY pixels, and a quarter leaves
-   * room for pixels up to four times dearer than the average so far.
+   * at least): a few dozen reads a step instead of one every CHECK_EVERY
+   * pixels, and a quarter leaves room for pixels up to four times dearer than
+   * the average so far. A run is also at most twice the last one, and half of
+   * what fits at the dearest pace this render has had: with 10,000 spheres a
+   * lit pixel costs a hundred background ones, and runs sized by the
+   * background made one step take half a second.
    */
   #traceFor(budgetMs, start) {
-    let count = 0, run = CHECK_EVERY;
+    let count = 0, run = CHECK_EVERY, before = 0;
     while (!this.#done) {
-      count += this.#traceRun(run);
+      const traced = this.#traceRun(run);
+      count += traced;
       const elapsed = this.now() - start;
+      if (traced > 0 && elapsed - before >= PACE_RUN_MS) this.#dearest = Math.max(this.#dearest, (elapsed - before) / traced);
+      before = elapsed;
       if (elapsed >= budgetMs) break;
-      run = elapsed > 0 ? Math.max(CHECK_EVERY, Math.floor((count * (budgetMs - elapsed)) / elapsed / 4)) : 2 * run;
+      const left = budgetMs - elapsed;
+      const byAverage = elapsed > 0 ? Math.floor((count * left) / elapsed / 4) : Infinity;
+      const byDearest = this.#dearest > 0 ? Math.floor(left / this.#dearest / 2) : Infinity;
+      run = Math.max(CHECK_EVERY, Math.min(2 * run, byAverage, byDearest));
     }
     return count;
   }

@@ -31,7 +31,8 @@ function defaultValues() {
   return defaults;
 }
 
-const same = (a, b) => JSON.stringify(a) === JSON.stringify(b);
+/** Equal as JSON text would say (−0 is 0), without writing the text: 70,000 stringify calls at 10,000 spheres. */
+const same = (a, b) => (Array.isArray(a) ? Array.isArray(b) && a.length === b.length && a.every((x, i) => same(x, b[i])) : a === b);
 
 /** Scene JSON without the fields that hold their default value (shorter links); `sceneFromJSON` reads it back the same. */
 export function compactSceneJSON(json) {

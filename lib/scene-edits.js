@@ -20,7 +20,10 @@
  *   view.setScene(edits.scene);
  */
 import { Scene } from './scene.js';
-import { sceneToJSON, sceneFromJSON, objectToJSON, objectFromJSON } from './serialize.js';
+import { sceneToJSON, sceneFromJSON, objectToJSON, objectFromJSON, addOrder } from './serialize.js';
+import { Sphere } from './shapes/sphere.js';
+import { Box } from './shapes/box.js';
+import { PointLight } from './lights.js';
 import { withValue } from './scene-fields.js';
 import { show } from './check.js';
 
@@ -31,8 +34,12 @@ export class SceneEdits {
   /** @param {object|string} json scene JSON, checked by sceneFromJSON */
   constructor(json) {
     /** The scene's JSON, every field present (as sceneToJSON writes it). */
-    this.json = sceneToJSON(sceneFromJSON(json));
-    this.#items = this.json.objects.map((o, i) => objectFromJSON(o, `objects[${i}]`));
+    const first = sceneFromJSON(json);
+    this.json = sceneToJSON(first);
+    // A sphere, box or point light built from this.json would be the same to the bit: checked once, not twice. Any other
+    // shape is built again from its JSON (a plane's normal, for one, is normalised again).
+    const same = (item) => item instanceof Sphere || item instanceof Box || item instanceof PointLight;
+    this.#items = addOrder(first).map((item, i) => (same(item) ? item : objectFromJSON(this.json.objects[i], `objects[${i}]`)));
     /** The scene: what sceneFromJSON(this.json) builds. */
     this.scene = sceneOf(this.json, this.#items);
   }

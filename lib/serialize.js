@@ -62,16 +62,7 @@ function kindOfType(type) {
  */
 export function sceneToJSON(scene) {
   if (!(scene instanceof Scene)) throw new TypeError(`scene must be a Scene, got ${show(scene)}`);
-  return {
-    background: [...scene.background],
-    ambient: scene.ambient,
-    shadows: scene.shadows,
-    bias: scene.bias,
-    epsilon: scene.epsilon,
-    maxDepth: scene.maxDepth,
-    specular: scene.specular,
-    objects: addOrder(scene).map(objectToJSON),
-  };
+  return { ...sceneFieldsOf(scene), objects: addOrder(scene).map(objectToJSON) };
 }
 
 /**
@@ -123,29 +114,54 @@ export function cameraFromJSON(json) {
  * @example
  * const code = sceneToCode(classScene()); // "import { Scene, Sphere } from '../lib/index.js'; const scene = new Scene(…"
  */
-export function sceneToCode(scene, { importFrom = '../lib/index.js' } = {}) {
-  const data = sceneToJSON(scene);
-  const used = new Set(['Scene']);
+export function sceneToCode(scene, options) {
+  return [...sceneCodeLines(scene, options)].join('');
+}
+
+/**
+ * sceneToCode's text, a line (with its line break) at a time, each object's
+ * line made when it is read: big scenes' code is built in slices
+ * (joinInSlices, lib/slices.js) with no long task.
+ * @param {Scene} scene
+ * @param {{ importFrom?: string }} [options]
+ * @returns {Generator<string>}
+ * @example
+ * const lines = [...sceneCodeLines(classScene())]; // sceneToCode's lines; joinInSlices(sceneCodeLines(scene)) builds its text with no long task
+ */
+export function* sceneCodeLines(scene, { importFrom = '../lib/index.js' } = {}) {
+  if (!(scene instanceof Scene)) throw new TypeError(`scene must be a Scene, got ${show(scene)}`);
+  const items = addOrder(scene);
+  const used = new Set(['Scene', ...items.map(itemClassName)]);
+  const order = ['Scene', ...shapeClasses().map((Shape) => className(Shape.type)), 'PointLight', 'AreaLight', 'SpotLight'].filter((n) => used.has(n));
+  const fields = sceneFieldsOf(scene);
+  yield `import { ${order.join(', ')} } from ${quote(importFrom)};\n`;
+  yield '\n';
+  yield `const scene = new Scene(${literal(sceneOptions(fields))});\n`;
   const names = new Set(['scene']);
-  const body = [];
-  for (const o of data.objects) {
+  for (const item of items) {
+    const o = objectToJSON(item);
     const call = constructorCall(o);
-    used.add(call.slice(4, call.indexOf('(')));
     if (!o.name) {
-      body.push(`scene.add(${call});`);
+      yield `scene.add(${call});\n`;
       continue;
     }
     const id = identifier(o.name, names);
-    body.push(`const ${id} = ${call};`, `${id}.name = ${quote(o.name)};`, `scene.add(${id});`);
+    yield `const ${id} = ${call};\n${id}.name = ${quote(o.name)};\nscene.add(${id});\n`;
   }
-  const order = ['Scene', ...shapeClasses().map((Shape) => className(Shape.type)), 'PointLight', 'AreaLight', 'SpotLight'].filter((n) => used.has(n));
-  return [
-    `import { ${order.join(', ')} } from ${quote(importFrom)};`,
-    '',
-    `const scene = new Scene(${literal(sceneOptions(data))});`,
-    ...body,
-    '',
-  ].join('\n');
+}
+
+/** The class an item is built with in the code ('Sphere', 'PointLight'), read without writing its JSON where its class says it. */
+function itemClassName(item) {
+  if (item instanceof PointLight) return 'PointLight';
+  const light = LIGHTS.find((l) => item instanceof l.Light);
+  if (light) return className(light.type);
+  return className(shapeClasses().includes(item?.constructor) ? item.constructor.type : objectToJSON(item).type);
+}
+
+/** A scene's own fields as JSON (all but its objects). */
+function sceneFieldsOf(scene) {
+  const { background, ambient, shadows, bias, epsilon, maxDepth, specular } = scene;
+  return { background: [...background], ambient, shadows, bias, epsilon, maxDepth, specular };
 }
 
 /* ---- to JSON ---- */
@@ -156,7 +172,7 @@ export function sceneToCode(scene, { importFrom = '../lib/index.js' } = {}) {
  * bit can depend on. A point light goes just before the first emissive shape
  * that comes after it among the scene's lights.
  */
-function addOrder(scene) {
+export function addOrder(scene) {
   const items = [];
   let next = 0; // the next of scene.lights not yet placed
   const placePointLights = () => {

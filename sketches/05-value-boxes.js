@@ -9,8 +9,8 @@
  * The scene travels in the page's link (#scene=…, compressed) and as code.
  */
 import p5 from 'p5';
-import { Camera, classScene, sceneToJSON, sceneToCode } from '../lib/index.js';
-import { readSceneLink, sceneLinkURL, linkNotice, element, copyText } from '../lib/p5/index.js'; // and the p5 addon: p.createTracerView, …
+import { Camera, classScene, sceneToJSON, sceneCodeLines, joinInSlices, nextTask } from '../lib/index.js';
+import { readSceneLink, sceneLinkURL, linkNotice, element, copyText, showInBox } from '../lib/p5/index.js'; // and the p5 addon: p.createTracerView, …
 
 // The picture: its size in pixels and how wide the eye sees.
 const WIDTH = 160;
@@ -23,6 +23,8 @@ new p5((p) => {
   p.setup = async () => {
     p.noCanvas();
     const { scene, problem } = await sceneFromLink();
+    // The picture, then the boxes, each in a task of its own: at 10,000 spheres each part is checked and built in about 50 ms.
+    await nextTask();
     view = p.createTracerView({ scene, camera: new Camera({ width: WIDTH, height: HEIGHT, fov: FOV }), scale: 3, label: `${WIDTH} × ${HEIGHT} pixels` });
     p.createInspector({ view }); // beside the picture
 
@@ -31,6 +33,7 @@ new p5((p) => {
     values.parentElement.before(element('p', { class: 'notice', 'data-link-problem': '', role: 'alert' }, problem));
     const panel = element('section', { class: 'card' }, element('h2', {}, 'The values'));
     values.append(panel, shareTools());
+    await nextTask();
     p.createSceneForm({ json: sceneToJSON(scene), parent: panel, onChange: (changed, json) => {
       view.setScene(changed);
       shareInLink(json); // the link now shares this scene
@@ -50,10 +53,12 @@ new p5((p) => {
   function shareTools() {
     const codeBox = element('textarea', { rows: '12', readonly: '', spellcheck: 'false', 'data-scene-code': '', 'aria-label': 'The scene as code', hidden: '' });
     status = element('span', { class: 'status', role: 'status' });
-    const copyCode = button('Copy scene as code', () => {
-      codeBox.value = sceneToCode(view.scene);
+    const codeNote = element('p', { class: 'rt-note', 'data-scene-code-note': '' });
+    const copyCode = button('Copy scene as code', async () => {
+      const code = await joinInSlices(sceneCodeLines(view.scene)); // in slices: 10,000 spheres are 1.4 MB of code
+      codeNote.textContent = showInBox(codeBox, code); // a box shows 20,000 characters at most; the copy has them all
       codeBox.hidden = false;
-      share(codeBox.value, 'Code copied: paste it into a sketch.');
+      share(code, 'Code copied: paste it into a sketch.');
     });
     const copyLink = button('Copy link', async () => {
       await linked; // the last edit's link
@@ -61,7 +66,7 @@ new p5((p) => {
       if (open) share(location.href, message);
       else status.textContent = message;
     });
-    return element('section', { class: 'card share' }, copyCode, copyLink, status, codeBox);
+    return element('section', { class: 'card share' }, copyCode, copyLink, status, codeBox, codeNote);
   }
 
   // The link is made in a task of its own, not in the edit's (at 1,000 spheres it takes a few ms),

@@ -38,6 +38,28 @@ export function element(tag, attributes = {}, ...children) {
   return el;
 }
 
+/** A name from a scene is shown cut past this many characters: a 100,000-character name made page 05 a million pixels wide. */
+export const NAME_SHOWN = 40;
+
+/**
+ * A name as the page shows it: whole up to `max` characters, else cut with
+ * an ellipsis (the title, the JSON, the CSV and the code keep it whole).
+ * @example
+ * shownName('x'.repeat(100_000)); // 'xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx…' (40 characters)
+ */
+export function shownName(name, max = NAME_SHOWN) {
+  const text = String(name);
+  if (text.length <= max) return text;
+  let cut = text.slice(0, max - 1);
+  if (/[\uD800-\uDBFF]$/.test(cut)) cut = cut.slice(0, -1); // not half of a character
+  return `${cut}…`;
+}
+
+/** An element's attributes for a name it shows: the whole name as its title when shownName cuts it. */
+export function nameTitle(name, max = NAME_SHOWN) {
+  return String(name).length > max ? { title: String(name) } : {};
+}
+
 /**
  * Sets a p5.Element's (or an element's) text, never parsed as HTML: p5's
  * createP/createDiv/createElement(tag, text) and .html() set innerHTML.

@@ -27,3 +27,4 @@ export { pageRenderState } from './page-state.js';
 // A scene in the page's link (#scene=…), page parts built from text (never parsed as HTML), text to the clipboard:
 export { readSceneLink, sceneLinkURL, linkNotice } from './scene-link.js';
 export { element, copyText } from './dom.js';
+export { showInBox, downloadText } from './text-box.js';

@@ -19,12 +19,14 @@ import { kindOf } from '../shapes/index.js';
 import { toHex, colorName } from '../color.js';
 import { formatNumber, formatVector, formatAngle } from '../format.js';
 import { show, checkOptions } from '../check.js';
-import { PLAIN_NUMBER } from '../values.js';
-import { useStyle, element, resolveParent, copyText } from './dom.js';
+import { useStyle, element, resolveParent, copyText, shownName, nameTitle } from './dom.js';
+import { showInBox, downloadText } from './text-box.js';
+import { joinInSlices } from '../slices.js';
+import { pixelCSV, pixelCSVLines, rootsMeaning, routesAgree } from './pixel-csv.js';
 import { createAnnouncer } from './announce.js';
+import { virtualRows, VIRTUAL_FROM } from './virtual-rows.js';
 
-/** Relative tolerance within which the two intersection routes "agree". */
-export const AGREE_TOLERANCE = 1e-9;
+export { pixelCSV, pixelCSVLines, csvCell, rootsMeaning, routesAgree, AGREE_TOLERANCE } from './pixel-csv.js';
 
 /**
  * A scene with more spheres than this shows only the rows that matter (the
@@ -62,6 +64,8 @@ export class Inspector {
   /** The last `inspectPixel` record shown, or null. */
   record = null;
   #unsubscribe; #announcer;
+  /** The last record's CSV text (a promise), `{ record, text }`. */
+  #csv = null;
 
   constructor({ view, parent, title }) {
     if (!view || typeof view.onSelect !== 'function') throw new TypeError(`view must be a tracer view (createTracerView), got ${show(view)}`);
@@ -95,7 +99,8 @@ export class Inspector {
     this.element.dataset.x = String(r.x);
     this.element.dataset.y = String(r.y);
     this.#showBody(r, rowsThatMatter(r));
-    this.csvBox.value = this.csvDetails.open ? pixelCSV(r) : ''; // written when opened or copied: 1,000 rows cost time
+    if (this.csvDetails.open) this.#fillCSV(r); // written when opened or copied: 10,000 rows cost time
+    else this.#showCSV('');
     this.status.textContent = '';
     this.element.dataset.state = 'shown';
   }
@@ -124,17 +129,43 @@ export class Inspector {
 
   /**
    * Copies the CSV to the clipboard when the browser allows it; the text is
-   * always in the panel's text box too, selected, ready for Ctrl+C.
+   * always in the panel's text box too, selected, ready for Ctrl+C (up to
+   * the box's limit, lib/p5/text-box.js; "Download CSV" saves it all).
+   * Built in slices (lib/slices.js): 10,000 rows are 1 MB of text.
    */
   async copyCSV() {
-    const text = this.csv();
-    this.csvBox.value = text;
+    const r = this.record;
+    const text = r ? await this.#fillCSV(r) : '';
     this.csvDetails.open = true;
     this.csvBox.select();
     if (!text) { this.status.textContent = 'Select a pixel first.'; return false; }
     const copied = await copyText(text);
-    this.status.textContent = copied ? 'Copied: paste it into a spreadsheet.' : 'Select the text below and press Ctrl+C (⌘C).';
+    this.status.textContent = copied ? 'Copied: paste it into a spreadsheet.' : 'Select the text below and press Ctrl+C (⌘C), or download it.';
     return copied;
+  }
+
+  /** Saves the shown pixel's CSV as a file, `pixel-X-Y.csv`. */
+  async downloadCSV() {
+    const r = this.record;
+    if (!r) { this.status.textContent = 'Select a pixel first.'; return; }
+    downloadText(await this.#csvText(r), `pixel-${r.x}-${r.y}.csv`, 'text/csv');
+  }
+
+  /** The CSV of record `r`, built in slices; kept for the record until another is shown. */
+  async #csvText(r) {
+    if (this.#csv?.record !== r) this.#csv = { record: r, text: joinInSlices(pixelCSVLines(r)) };
+    return this.#csv.text;
+  }
+
+  /** Fills the text box with record `r`'s CSV, unless another pixel is shown by then; returns the text. */
+  async #fillCSV(r) {
+    const text = await this.#csvText(r);
+    if (this.record === r) this.#showCSV(text);
+    return text;
+  }
+
+  #showCSV(text) {
+    this.csvNote.textContent = showInBox(this.csvBox, text);
   }
 
   /** Stops following the view and removes the panel. */
@@ -147,11 +178,14 @@ export class Inspector {
   #csvTools() {
     const button = element('button', { type: 'button', class: 'rt-button', 'data-copy-csv': '' }, 'Copy CSV');
     button.addEventListener('click', () => this.copyCSV());
+    const save = element('button', { type: 'button', class: 'rt-button', 'data-download-csv': '' }, 'Download CSV');
+    save.addEventListener('click', () => this.downloadCSV());
     this.status = element('span', { class: 'rt-status', 'data-copy-status': '', role: 'status' });
     this.csvBox = element('textarea', { class: 'rt-csv', 'data-csv': '', rows: '6', readonly: '', spellcheck: 'false', 'aria-label': 'This pixel as CSV' });
-    this.csvDetails = element('details', { class: 'rt-csv-details' }, element('summary', {}, 'CSV text'), this.csvBox);
-    this.csvDetails.addEventListener('toggle', () => { if (this.csvDetails.open) this.csvBox.value = this.csv(); });
-    return element('footer', { class: 'rt-inspector-tools' }, element('div', { class: 'rt-row' }, button, this.status), this.csvDetails);
+    this.csvNote = element('p', { class: 'rt-note', 'data-csv-note': '' });
+    this.csvDetails = element('details', { class: 'rt-csv-details' }, element('summary', {}, 'CSV text'), this.csvBox, this.csvNote);
+    this.csvDetails.addEventListener('toggle', () => { if (this.csvDetails.open && this.record) this.#fillCSV(this.record); });
+    return element('footer', { class: 'rt-inspector-tools' }, element('div', { class: 'rt-row' }, button, save, this.status), this.csvDetails);
   }
 }
 
@@ -181,24 +215,9 @@ export function pixelAnnouncement(r) {
 /** "pink sphere" for a sphere named pink; "ground" for one named ground; "sphere 2" for one with no name. */
 function hitName(hit) {
   const kind = kindOf(hit.object);
-  const name = hit.object?.name?.trim();
+  const name = shownName(hit.object?.name?.trim() ?? '');
   if (!name) return `${kind} ${hit.index}`;
   return /^(pink|red|orange|yellow|green|cyan|blue|purple|white|gray|grey|black|brown)$/i.test(name) ? `${name} ${kind}` : name;
-}
-
-/** What a number of roots means for the ray. */
-export function rootsMeaning(roots) {
-  return ['no hit', 'tangent', 'two hits'][roots];
-}
-
-/** True when both routes found the same number of roots and the same t0, t1 (relative 1e-9). */
-export function routesAgree(quadratic, geometric) {
-  return quadratic.roots === geometric.roots && close(quadratic.t0, geometric.t0) && close(quadratic.t1, geometric.t1);
-}
-
-function close(a, b) {
-  if (a === null || b === null) return a === b;
-  return Math.abs(a - b) <= AGREE_TOLERANCE * Math.max(1, Math.abs(a), Math.abs(b));
 }
 
 /** The name a light goes by in the panel (shapes have theirs in the record: shapeName). */
@@ -219,6 +238,11 @@ function vectorValue(field, v, attributes = {}, text = formatVector(v)) {
 
 function textValue(field, text, attributes = {}) {
   return element('span', { class: 'rt-value', 'data-field': field, 'data-value': text, ...attributes }, text);
+}
+
+/** A name's value cell: cut on the page (shownName), whole in its title and data-value. */
+function nameValue(field, name, attributes = {}) {
+  return element('span', { class: 'rt-value', 'data-field': field, 'data-value': name, ...nameTitle(name), ...attributes }, shownName(name));
 }
 
 function section(title, ...children) {
@@ -257,7 +281,7 @@ function hitSection(r) {
   }
   const name = hit.name;
   return section('Hit', facts([
-    ['object', textValue('hit-object', name), hit.inside ? ' (from inside)' : ''],
+    ['object', nameValue('hit-object', name), hit.inside ? ' (from inside)' : ''],
     ['t', value('hit-t', hit.t)],
     ['point', vectorValue('hit-point', hit.point)],
     ['normal N', vectorValue('hit-normal', hit.normal)],
@@ -273,18 +297,18 @@ function lightsSection(r) {
     const status = !l.facing ? 'faces away' : l.beam === 0 ? 'outside its cone' : l.inShadow ? (l.transmission > 0 ? 'partly shadowed' : 'in shadow') : 'lit';
     const added = l.contribution;
     return element('tr', { class: `rt-light-${status.replace(' ', '-')}` },
-      element('td', {}, textValue('light', nameOf(l.light, `light ${i + 1}`), at)),
+      element('td', {}, nameValue('light', nameOf(l.light, `light ${i + 1}`), at)),
       element('td', {}, value('cos', l.cos, at)),
       element('td', {}, element('span', { class: 'rt-value', 'data-field': 'in-shadow', 'data-value': String(l.inShadow), ...at }, status)),
       element('td', {},
         element('span', { class: 'rt-swatch rt-swatch-small', style: `background: ${toHex(added.map((c) => Math.min(1, c) * 255))}` }),
         element('span', { class: 'rt-value rt-wrap', 'data-field': 'contribution', 'data-value': added.join(','), ...at }, `(${added.map(formatNumber).join(', ')})`)));
   });
-  return section('Lights (one shadow ray each)', table(['light', 'cos θ', 'shadow ray', 'adds (r, g, b)'], rows, 'Lights'));
+  return section('Lights (one shadow ray each)', table(['light', 'cos θ', 'shadow ray', 'adds (r, g, b)'], rows.length, (k) => rows[k], 'Lights'));
 }
 
 function sphereCell(test) {
-  return element('th', { scope: 'row' }, test.name);
+  return element('th', { scope: 'row', ...nameTitle(test.name) }, shownName(test.name));
 }
 
 /**
@@ -309,7 +333,7 @@ function rowClass(r, test) {
 
 function quadraticSection(r, tests = r.tests, more = null) {
   const head = ['sphere', 'A', 'B', 'C', 'B² − 4AC', 'meaning', 't0', 't1'];
-  const rows = tests.map((test, k) => {
+  const row = (k, test = tests[k]) => { // made when shown: a table of 10,000 rows keeps those in view only
     const i = tests === r.tests ? k : r.tests.indexOf(test);
     const q = test.quadratic, at = { 'data-sphere': String(i), 'data-route': 'quadratic' };
     return element('tr', { class: rowClass(r, test) }, sphereCell(test),
@@ -320,14 +344,14 @@ function quadraticSection(r, tests = r.tests, more = null) {
         q.roots > 0 && q.t === null ? element('span', { class: 'rt-behind', 'data-field': 'behind', ...at }, 'behind the eye') : null),
       element('td', {}, value('t0', q.t0, at)),
       element('td', {}, value('t1', q.t1, at)));
-  });
-  return section('Quadratic route: At² + Bt + C = 0', rows.length ? table(head, rows, 'Quadratic route') : noSpheres(), more,
+  };
+  return section('Quadratic route: At² + Bt + C = 0', tests.length ? table(head, tests.length, row, 'Quadratic route') : noSpheres(), more,
     element('p', { class: 'rt-note' }, 'Discriminant < 0: no hit; = 0: tangent; > 0: two hits, t = (−B ± √(B² − 4AC)) / 2A. The nearest hit is the smallest positive t (highlighted row).'));
 }
 
 function geometricSection(r, tests = r.tests, more = null) {
   const head = ['sphere', 'L = C − Ro', 'tca', 'd²', 'thc', 't0', 't1', 'agree'];
-  const rows = tests.map((test, k) => {
+  const row = (k, test = tests[k]) => { // made when shown: a table of 10,000 rows keeps those in view only
     const i = tests === r.tests ? k : r.tests.indexOf(test);
     const g = test.geometric, at = { 'data-sphere': String(i), 'data-route': 'geometric' };
     const agree = routesAgree(test.quadratic, g);
@@ -338,8 +362,8 @@ function geometricSection(r, tests = r.tests, more = null) {
         class: `rt-value ${agree ? 'rt-agree' : 'rt-disagree'}`, 'data-field': 'agree', 'data-value': String(agree), ...at,
         title: agree ? 'Both routes find the same roots' : 'The two routes disagree',
       }, agree ? '✓' : '✗')));
-  });
-  return section('Geometric route: tca = L·Rd, d² = L·L − tca², thc = √(r² − d²)', rows.length ? table(head, rows, 'Geometric route') : noSpheres(), more,
+  };
+  return section('Geometric route: tca = L·Rd, d² = L·L − tca², thc = √(r² − d²)', tests.length ? table(head, tests.length, row, 'Geometric route') : noSpheres(), more,
     element('p', { class: 'rt-note' }, 'd > r: the ray passes the sphere by. Otherwise t = tca ∓ thc — the same roots as the quadratic.'));
 }
 
@@ -376,53 +400,16 @@ function noSpheres() {
   return element('p', { class: 'rt-muted rt-empty', 'data-field': 'no-spheres' }, 'No spheres in the scene yet: nothing to test this ray against.');
 }
 
-/** A table in a box that scrolls sideways when narrow: the box takes focus (the arrow keys scroll it) and is named. */
-function table(head, rows, name) {
-  return element('div', { class: 'rt-table-wrap', tabindex: '0', role: 'region', 'aria-label': `${name} table` }, element('table', { class: 'rt-table' },
+/**
+ * A table in a box that scrolls sideways when narrow: the box takes focus (the arrow keys scroll it) and is named.
+ * Its `count` rows are made by `rowAt(k)`; past VIRTUAL_FROM only those in view (lib/p5/virtual-rows.js).
+ */
+function table(head, count, rowAt, name) {
+  const body = element('tbody', {});
+  const box = element('div', { class: 'rt-table-wrap', tabindex: '0', role: 'region', 'aria-label': `${name} table` }, element('table', { class: 'rt-table' },
     element('thead', {}, element('tr', {}, ...head.map((h) => element('th', { scope: 'col' }, h)))),
-    element('tbody', {}, ...rows)));
-}
-
-/* ---------------- CSV ---------------- */
-
-const CSV_HEAD = ['x', 'y', 'H', 'V', 'sphere', 'A', 'B', 'C', 'discriminant', 'roots', 'meaning', 't0', 't1',
-  'L_x', 'L_y', 'L_z', 'tca', 'd2', 'thc', 'geometric_t0', 'geometric_t1', 'routes_agree',
-  'hit_object', 'hit_t', 'color_hex', 'color_name'];
-
-/**
- * One pixel's record as CSV for worksheets: a header and one row per sphere
- * (the pixel's own columns repeated on each), numbers as the panel shows
- * them, empty cells for "no value".
- */
-export function pixelCSV(r) {
-  const n = (x) => (x === null || x === undefined ? '' : formatNumber(x));
-  const hitName = r.hit ? r.hit.name : '';
-  const pixel = [r.x, r.y, formatAngle(r.h), formatAngle(r.v)];
-  const after = [hitName, r.hit ? n(r.hit.t) : '', toHex(r.color), colorName(r.color)];
-  const rows = r.tests.map((test, i) => {
-    const q = test.quadratic, g = test.geometric;
-    return [...pixel, test.name, n(q.A), n(q.B), n(q.C), n(q.discriminant), q.roots, rootsMeaning(q.roots),
-      n(q.t0), n(q.t1), n(g.L.x), n(g.L.y), n(g.L.z), n(g.tca), n(g.d2), n(g.thc), n(g.t0), n(g.t1),
-      routesAgree(q, g), ...after];
-  });
-  if (rows.length === 0) rows.push([...pixel, ...CSV_HEAD.slice(4, -4).map(() => ''), ...after]);
-  return [CSV_HEAD, ...rows].map((row) => row.map(csvCell).join(',')).join('\n') + '\n';
-}
-
-/**
- * What a cell may start with that a spreadsheet could run as a formula, or
- * skip on its way to one: = + - @ | a tab or CR, a space, a zero-width or
- * bidi mark, a full-width ＝＋－＠, or a quote (as in "=1 or '=1).
- */
-const FORMULA_START = /^[=+\-@|\t\r "'\u200B-\u200F\u202A-\u202E\u2060-\u2069\uFEFF＝＋－＠]/;
-
-/**
- * One CSV cell. Text a spreadsheet would run as a formula (FORMULA_START:
- * a name like =HYPERLINK(…) can) gets a leading ' so it shows as text; plain
- * numbers stay numbers. A cell with a quote, a comma, a CR or a LF is quoted.
- */
-export function csvCell(cell) {
-  let text = String(cell);
-  if (FORMULA_START.test(text) && !PLAIN_NUMBER.test(text)) text = `'${text}`;
-  return /[",\r\n]/.test(text) ? `"${text.replace(/"/g, '""')}"` : text;
+    body));
+  if (count > VIRTUAL_FROM) virtualRows(box, body, count, rowAt, head.length);
+  else for (let k = 0; k < count; k++) body.append(rowAt(k));
+  return box;
 }

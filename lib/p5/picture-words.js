@@ -43,12 +43,12 @@ export function createPictureWords(canvas, view) {
   return {
     details,
     description,
-    /** The scene, camera or mode changed: describe it again (now, or soon when it changes every frame). */
+    /** The scene, camera or mode changed: describe it again (in the next task, or later when it changes every frame). */
     changed() {
       if (details.open) rows.replaceChildren(element('li', {}, 'Tracing…'));
       if (timer) return;
-      const wait = last + DESCRIBE_EVERY_MS - performance.now();
-      if (wait <= 0) describe(); else timer = setTimeout(describe, wait);
+      // In a task of its own, never the edit's: it casts rays at every shape (lib/describe.js).
+      timer = setTimeout(describe, Math.max(0, last + DESCRIBE_EVERY_MS - performance.now()));
     },
     /** The picture is traced: the rows can be read. */
     done() {

@@ -17,7 +17,7 @@ import { tableColumns, fieldText, formTypes } from '../scene-fields.js';
 import { shapeClass } from '../shapes/index.js';
 import { SceneEdits } from '../scene-edits.js';
 import { show, checkOptions } from '../check.js';
-import { useStyle, element } from './dom.js';
+import { useStyle, element, shownName, nameTitle } from './dom.js';
 import { valueBox } from './value-box.js';
 
 /** The point light's table (each shape's is its class's `form`). */
@@ -151,12 +151,12 @@ export class SceneForm {
 
   /** What a row is called in messages: "Sphere 3 (pink)". */
   #who({ what }, k, o) {
-    return `${what} ${k + 1}${o.name ? ` (${o.name})` : ''}`;
+    return `${what} ${k + 1}${o.name ? ` (${shownName(o.name)})` : ''}`; // a 100,000-character name is no label
   }
 
   #row(o, index, columns, who) {
     const isLight = o.type === 'pointLight' || o.material?.emission.some((c) => c > 0);
-    const name = element('th', { scope: 'row' }, isLight ? '☀ ' : '', o.name || who);
+    const name = element('th', { scope: 'row', ...nameTitle(o.name) }, isLight ? '☀ ' : '', o.name ? shownName(o.name) : who);
     const cells = columns.map((c) => {
       const id = `objects[${index}].${c.path.join('.')}`;
       const label = `${who} ${c.label}`;

@@ -53,6 +53,13 @@ test('the teacher\'s files are not served, however they are asked for', async ({
   }
 });
 
+test('a link too long for the server says so on the page (not Node\'s bare 431)', async ({ page }) => {
+  const answer = await page.goto(`${server.url}sketches/05-value-boxes.html?scene=${'A'.repeat(20_000)}`);
+  expect(answer.status()).toBe(431);
+  await expect(page.locator('h1')).toHaveText('This link is too long');
+  await expect(page.locator('[data-link-too-long]')).toContainText('#scene=');
+});
+
 test('the gallery shows every thumbnail, with a quiet console', async ({ page }) => {
   const errors = watchConsole(page);
   await page.goto(server.url);

@@ -4,11 +4,12 @@
 // as text.
 import { test, expect } from '@playwright/test';
 import { readdirSync } from 'node:fs';
-import { watchConsole } from './helpers.js';
+import { watchConsole, waitForDone, clickPixel } from './helpers.js';
 import { EVERY_PAGE, PAGE_PARAMETERS } from './link-parameters.js';
 import { sceneToJSON } from '../../lib/serialize.js';
 import { classScene } from '../../lib/scenes.js';
 import { encodeScene } from '../../lib/scene-codec.js';
+import { encodeSceneLink } from '../../lib/p5/scene-link.js';
 
 const PAGES = ['index.html', ...readdirSync('sketches').filter((f) => f.endsWith('.html')).map((f) => `sketches/${f}`)];
 const PAYLOADS = [
@@ -69,4 +70,43 @@ test('a shared scene whose names are HTML shows them as text', async ({ page }) 
   await page.locator('[data-tracer]').first().click({ position: { x: 240, y: 180 } });
   expect(await page.locator('[onerror], [onload]').count()).toBe(0);
   await expect(page.locator('#values')).toContainText('<img src=x');
+});
+
+test('a link too long for the dev server says so on the page (not Node\'s bare 431)', async ({ page }) => {
+  const answer = await page.goto(`/sketches/05-value-boxes.html?scene=${'A'.repeat(20_000)}`);
+  expect(answer.status()).toBe(431);
+  await expect(page.locator('h1')).toHaveText('This link is too long');
+  await expect(page.locator('[data-link-too-long]')).toContainText('#scene=');
+});
+
+test('a 100,000-character name is cut on page 05 (the whole name in its title), and kept whole in the link', async ({ page }) => {
+  const errors = watchConsole(page);
+  const long = `pink ${'x'.repeat(100_000)}`;
+  const json = sceneToJSON(classScene());
+  json.objects.find((o) => o.name === 'pink').name = long;
+  await page.goto(`/sketches/05-value-boxes.html#scene=${await encodeSceneLink(json)}`);
+  await waitForDone(page);
+  const width = () => page.evaluate(() => document.documentElement.scrollWidth);
+  expect(await width()).toBeLessThanOrEqual(1280); // the viewport: a million pixels wide before
+  const th = page.locator('[data-table="sphere"] tbody th[title]');
+  await expect(th).toHaveCount(1);
+  expect(await th.getAttribute('title')).toBe(long);
+  expect(await th.textContent()).toBe(`${long.slice(0, 39)}…`);
+  await expect(page.locator(`input[aria-label^="Sphere 2 (${long.slice(0, 39)}…) "]`).first()).toBeAttached(); // labels and messages name it cut
+
+  await clickPixel(page.locator('[data-tracer]'), 80, 60); // the pink sphere, in the middle
+  const hit = page.locator('[data-inspector] [data-field="hit-object"]');
+  await expect(hit).toHaveText(`${long.slice(0, 39)}…`);
+  expect(await hit.getAttribute('data-value')).toBe(long);
+  expect(await width()).toBeLessThanOrEqual(1280);
+
+  // An edit puts the scene in the link again: the name whole.
+  const before = await page.evaluate(() => location.hash);
+  const radius = page.locator('input[name="objects[2].radius"]');
+  await radius.fill('2.5');
+  await radius.press('Enter');
+  await expect.poll(() => page.evaluate(() => location.hash)).not.toBe(before);
+  const names = await page.evaluate(async () => (await import('/lib/p5/scene-link.js')).readSceneLink(location.href).then((scene) => scene.objects.map((o) => o.name)));
+  expect(names).toContain(long);
+  expect(errors).toEqual([]);
 });

@@ -61,6 +61,21 @@ describe('describeScene', () => {
     expect(text).toContain('and 22 more shapes');
   });
 
+  it('10,000 spheres: at most 500,000 hit tests (a ray toward each centre made 10⁸), and every sphere in view counted, none "out of view"', () => {
+    const scene = new Scene();
+    for (let i = 0; i < 10_000; i++) scene.add(new Sphere([((i % 100) - 49.5) * 0.3, (Math.floor(i / 100) - 49.5) * 0.3, -60], 0.12, { color: 'blue' }));
+    let tests = 0;
+    for (const o of scene.objects) {
+      const hit = o.hit.bind(o);
+      o.hit = (ray) => { tests++; return hit(ray); };
+    }
+    const text = describeScene(scene, new Camera({ width: 160, height: 120, fov: 30 }));
+    expect(tests).toBe((8 * 6 + 2) * 10_000); // an 8 × 6 grid of rays and two toward centres: the bound of 500,000
+    expect(text.match(/a blue sphere/gi)).toHaveLength(8);
+    expect(text).toContain('and 9,992 more shapes');
+    expect(text).not.toContain('out of view');
+  });
+
   it('says so when a scene is empty', () => {
     expect(describeScene(new Scene({ background: 'black' }), camera)).toBe('Nothing, on a black background. No lights.');
   });

@@ -1,6 +1,6 @@
 // The clipboard helper every Copy button uses: true when the browser took the text, false otherwise (never a throw).
 import { describe, it, expect, vi, afterEach } from 'vitest';
-import { copyText } from '../../lib/p5/dom.js';
+import { copyText, shownName, nameTitle, NAME_SHOWN } from '../../lib/p5/dom.js';
 
 afterEach(() => vi.unstubAllGlobals());
 
@@ -17,5 +17,16 @@ describe('copyText', () => {
     expect(await copyText('x')).toBe(false);
     vi.stubGlobal('navigator', {});
     expect(await copyText('x')).toBe(false);
+  });
+});
+
+describe('shownName', () => {
+  it('keeps a short name, cuts a long one to NAME_SHOWN characters with an ellipsis, never half of a character', () => {
+    expect(shownName('pink')).toBe('pink');
+    expect(shownName('x'.repeat(NAME_SHOWN))).toBe('x'.repeat(NAME_SHOWN));
+    expect(shownName('x'.repeat(100_000))).toBe(`${'x'.repeat(NAME_SHOWN - 1)}…`);
+    expect(shownName(`${'x'.repeat(NAME_SHOWN - 2)}😀😀`)).toBe(`${'x'.repeat(NAME_SHOWN - 2)}…`); // the emoji's first half alone is no character
+    expect(nameTitle('pink')).toEqual({});
+    expect(nameTitle('y'.repeat(50))).toEqual({ title: 'y'.repeat(50) });
   });
 });

@@ -393,6 +393,14 @@ describe('the time budget (a fake clock)', () => {
     }
   });
 
+  it('stays near its budget when the pixels get a hundred times dearer (a lit sphere among 10,000, after the background)', () => {
+    for (const mode of ['coarse', 'scanline']) {
+      const seen = steps(mode, 8, (x, y) => (y < 120 ? 0.001 : 0.1));
+      const longest = Math.max(...seen.map(({ ms }) => ms));
+      expect(longest).toBeLessThanOrEqual(4 * 8); // once, where they start; runs sized by the background's pace took 190 ms
+    }
+  });
+
   it('copes with a clock that moves only every 0.1 ms, as a browser\'s may', () => {
     const tick = 0.1;
     for (const mode of ['coarse', 'scanline']) {

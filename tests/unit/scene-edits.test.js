@@ -22,7 +22,17 @@ const MIXED = {
     { type: 'box', min: [2, -2, -14], max: [4, 0, -12], material: { color: [0, 1, 0] } },
   ],
 };
-const START = { class: sceneToJSON(classScene()), mixed: MIXED, empty: { objects: [] } };
+/** Colours as text, a centre as {x, y, z}, a plane's normal not of length 1: what the first check turns into numbers. */
+const WRITTEN = {
+  background: 'white',
+  objects: [
+    { type: 'sphere', name: 'p', center: { x: 1, y: 0, z: -10 }, radius: 2, material: { color: 'pink', emission: [0.1, 0.1, 0.1], reflection: 0.2 } },
+    { type: 'plane', point: [0, -2, 0], normal: [0.3, 2, 0.1] },
+    { type: 'pointLight', position: [5, 5, 0], color: 'yellow' },
+    { type: 'box', min: [2, -2, -14], max: [4, 0, -12], material: { color: '#3366ff' } },
+  ],
+};
+const START = { class: sceneToJSON(classScene()), mixed: MIXED, written: WRITTEN, empty: { objects: [] } };
 
 const number = fc.oneof(
   fc.double({ min: -20, max: 20, noNaN: true }),

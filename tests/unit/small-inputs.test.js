@@ -4,6 +4,7 @@
 import { describe, it, expect } from 'vitest';
 import { sceneFromJSON, toHex, colorName, Material, Sphere, Scene, Camera, PointLight, classScene } from '../../lib/index.js';
 import { ProgressiveRenderer } from '../../lib/progressive.js';
+import { WorkerProgressiveRenderer } from '../../lib/workers/progressive.js';
 import { cameraFromJSON } from '../../lib/serialize.js';
 import { checkOptions, OPTION_KEY_MAX } from '../../lib/check.js';
 
@@ -37,6 +38,19 @@ describe('slowRaysPerSecond', () => {
     expect(r.slowRaysPerSecond).toBe(0);
     r.slowRaysPerSecond = 4;
     expect(r.slowRaysPerSecond).toBe(4);
+  });
+
+  it('is checked and used through the worker renderer too (the tracer view\'s, which Shoot sets)', () => {
+    const r = new WorkerProgressiveRenderer({ scene: classScene(), camera: new Camera({ width: 8, height: 6 }), mode: 'slow', workers: false, now: () => 0 });
+    expect(() => { r.slowRaysPerSecond = Infinity; }).toThrow(new TypeError('slowRaysPerSecond must be a finite number, got Infinity'));
+    expect(() => { r.slowRaysPerSecond = -1; }).toThrow(RangeError);
+    expect(Object.hasOwn(r, 'slowRaysPerSecond')).toBe(false);
+    r.slowRaysPerSecond = 4;
+    expect(r.slowRaysPerSecond).toBe(4);
+    r.step();
+    const first = r.traced;
+    r.step(); // no time has passed on its clock: no ray is owed at 4 a second
+    expect(r.traced).toBe(first);
   });
 });
 
