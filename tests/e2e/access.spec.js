@@ -17,6 +17,9 @@ expectQuietConsole(test);
 async function settle(page) {
   await page.waitForLoadState('load');
   if (await page.locator('[data-tracer]').count()) await waitForDone(page);
+  // The pictures size themselves to their room a frame after it changes (tracer-layout.js's
+  // watchRoom): on a busy machine axe could audit the page mid-move, buttons overlapping.
+  await page.evaluate(() => document.fonts.ready.then(() => new Promise((done) => requestAnimationFrame(() => requestAnimationFrame(done)))));
 }
 
 /** The serious and critical violations, one line each: rule, impact, the first few elements. */
