@@ -389,10 +389,10 @@ function shapesSection(r) {
     const at = { 'data-shape': String(entry.index) };
     const lines = entry.rows.map(([label, n], i) => element('span', { class: 'rt-record-line' }, i ? '; ' : '', `${label} = `,
       value('record', n, { ...at, 'data-label': label })));
-    return element('tr', { class: entry.object === r.hit?.object ? 'rt-hit-row' : '' }, element('th', { scope: 'row' }, entry.name), element('td', {}, ...lines));
+    return element('tr', { class: entry.object === r.hit?.object ? 'rt-hit-row' : '' }, element('th', { scope: 'row' }, entry.name), element('td', { class: 'rt-wrap rt-record' }, ...lines));
   });
   const note = shown.length < others.length && element('p', { class: 'rt-note' }, `Showing ${shown.length} of the ${others.length.toLocaleString('en')} other shapes: ones the ray meets.`);
-  return section('Other shapes: each one\'s own test', table(['shape', 'its record (t: the nearest hit past 0)'], rows, 'Other shapes'), ...[note].filter(Boolean));
+  return section('Other shapes: each one\'s own test', table(['shape', 'its record (t: the nearest hit past 0)'], rows.length, (k) => rows[k], 'Other shapes'), ...[note].filter(Boolean));
 }
 
 /** Instead of a table with no rows: the scene has no sphere to test yet. */
