@@ -7,6 +7,8 @@
 import { toVec3, Vec3 } from '../vec3.js';
 import { finiteNumber, bool } from '../check.js';
 import { Material, shapeOptions } from '../material.js';
+import { vector, materialToJSON } from './json.js';
+import { axialTriangles } from './tessellate.js';
 
 /**
  * A discriminant this small, relative to the terms it is the difference of
@@ -115,4 +117,54 @@ export function withCapped(material, capped) {
 /** A Material's options, to build it again with more options beside them. */
 function materialOptions(m) {
   return { color: m.color, emission: m.emission, reflection: m.reflection, transparency: m.transparency, ior: m.ior, specular: m.specular, shininess: m.shininess };
+}
+
+/**
+ * What a Cylinder and a Cone share: their checked arguments, their box,
+ * their JSON and scene code, and their 3D view (a cone is a cylinder whose
+ * top radius is 0). Each gives its own `hit`, `intersect`, `normalAt`,
+ * `recordRows` and static `type`.
+ */
+export class AxialShape {
+  constructor(center, radius, height, options) {
+    const checked = axialArguments(center, radius, height, options);
+    this.center = checked.center;
+    this.radius = checked.radius;
+    this.height = checked.height;
+    this.capped = checked.capped;
+    this.name = checked.name;
+    this.material = checked.material;
+  }
+
+  /** The world-space box around it. */
+  bounds() {
+    return axialBounds(this.center, this.radius, this.height);
+  }
+
+  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view-mesh.js). */
+  drawIn3D(kit, into, rgb) {
+    kit.triangles(into, axialTriangles(this.center, this.radius, this.topRadius, this.height, this.capped), rgb);
+  }
+
+  /** The radius at its top: the cylinder's own, a cone's 0. */
+  get topRadius() { return this.radius; }
+
+  /** Its scene JSON (lib/serialize.js). */
+  toJSON() {
+    return { type: /** @type {any} */ (this.constructor).type, name: this.name ?? '', center: vector(this.center), radius: this.radius, height: this.height, capped: this.capped, material: materialToJSON(this.material) };
+  }
+
+  /** Its JSON fields. */
+  static get fields() { return ['center', 'radius', 'height', 'capped', 'material']; }
+
+  /** One from its fields (checked by the constructor). */
+  static build(o, material) {
+    return new this(o.center, o.radius, o.height, withCapped(material, o.capped));
+  }
+
+  /** Its constructor's arguments in scene code: `capped` goes with the material's options, and only when false. */
+  static codeArguments(o, material) {
+    const options = o.capped === false ? { ...material, capped: false } : material;
+    return [o.center, o.radius, o.height, options];
+  }
 }

@@ -8,14 +8,11 @@
  */
 import { Vec3, set } from '../vec3.js';
 import { EPSILON } from '../constants.js';
-import { axialArguments, solveQuadratic, recordSide, capCrossing, withinSpan, orNull, axialBounds } from './axial.js';
-import { vector, materialToJSON } from './json.js';
-import { axialTriangles } from './tessellate.js';
-import { withCapped } from './axial.js';
+import { AxialShape, solveQuadratic, recordSide, capCrossing, withinSpan, orNull } from './axial.js';
 
 const _roots = new Float64Array(2);
 
-export class Cone {
+export class Cone extends AxialShape {
   /**
    * @param {number[]|{x,y,z}} center the middle of the axis
    * @param {number} radius > 0, the base circle's
@@ -25,13 +22,7 @@ export class Cone {
    * const hat = new Cone([0, 2, -20], 3, 4, { color: 'orange' });
    */
   constructor(center, radius, height, options) {
-    const checked = axialArguments(center, radius, height, options);
-    this.center = checked.center;
-    this.radius = checked.radius;
-    this.height = checked.height;
-    this.capped = checked.capped;
-    this.name = checked.name;
-    this.material = checked.material;
+    super(center, radius, height, options);
   }
 
   /** Smallest t > tMin where the ray meets the cone, or Infinity. */
@@ -84,10 +75,6 @@ export class Cone {
     return set(out, x / length, (k * rho) / length, z / length);
   }
 
-  /** The world-space box around the cone. */
-  bounds() {
-    return axialBounds(this.center, this.radius, this.height);
-  }
   /** The record's lines for the inspector: the quadratic of the side, the caps' crossings, the nearest hit and the part it is on. */
   recordRows(record) {
     return [['A', record.A], ['B', record.B], ['C', record.C], ['B² − 4AC', record.discriminant], ['t0', record.t0], ['t1', record.t1],
@@ -95,33 +82,11 @@ export class Cone {
       [`t (${record.part ?? 'no hit'})`, record.t]];
   }
 
-  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view-mesh.js). */
-  drawIn3D(kit, into, rgb) {
-    kit.triangles(into, axialTriangles(this.center, this.radius, 0, this.height, this.capped), rgb);
-  }
-
-  /** Its scene JSON (lib/serialize.js). */
-  toJSON() {
-    return { type: 'cone', name: this.name ?? '', center: vector(this.center), radius: this.radius, height: this.height, capped: this.capped, material: materialToJSON(this.material) };
-  }
+  /** A cone's top is its apex: radius 0. */
+  get topRadius() { return 0; }
 
   /** Its type in scene JSON. */
   static get type() { return 'cone'; }
-
-  /** Its JSON fields. */
-  static get fields() { return ['center', 'radius', 'height', 'capped', 'material']; }
-
-  /** A cone from its fields (checked by the constructor). */
-  static build(o, material) {
-    return new Cone(o.center, o.radius, o.height, withCapped(material, o.capped));
-  }
-
-  /** Its constructor's arguments in scene code: `capped` goes with the material's options, and only when false. */
-  static codeArguments(o, material) {
-    const options = o.capped === false ? { ...material, capped: false } : material;
-    return [o.center, o.radius, o.height, options];
-  }
-
 }
 
 /**

@@ -6,14 +6,11 @@
  */
 import { Vec3, set } from '../vec3.js';
 import { EPSILON } from '../constants.js';
-import { axialArguments, solveQuadratic, recordSide, capCrossing, withinSpan, orNull, axialBounds } from './axial.js';
-import { vector, materialToJSON } from './json.js';
-import { axialTriangles } from './tessellate.js';
-import { withCapped } from './axial.js';
+import { AxialShape, solveQuadratic, recordSide, capCrossing, withinSpan, orNull } from './axial.js';
 
 const _roots = new Float64Array(2);
 
-export class Cylinder {
+export class Cylinder extends AxialShape {
   /**
    * @param {number[]|{x,y,z}} center the middle of the axis
    * @param {number} radius > 0
@@ -24,13 +21,7 @@ export class Cylinder {
    * const pipe = new Cylinder([4, 0, -20], 1, 6, { capped: false });
    */
   constructor(center, radius, height, options) {
-    const checked = axialArguments(center, radius, height, options);
-    this.center = checked.center;
-    this.radius = checked.radius;
-    this.height = checked.height;
-    this.capped = checked.capped;
-    this.name = checked.name;
-    this.material = checked.material;
+    super(center, radius, height, options);
   }
 
   /** Smallest t > tMin where the ray meets the cylinder, or Infinity. */
@@ -79,10 +70,6 @@ export class Cylinder {
     return rho > 0 ? set(out, x / rho, 0, z / rho) : set(out, 1, 0, 0);
   }
 
-  /** The world-space box around the cylinder. */
-  bounds() {
-    return axialBounds(this.center, this.radius, this.height);
-  }
   /** The record's lines for the inspector: the quadratic of the side, the caps' crossings, the nearest hit and the part it is on. */
   recordRows(record) {
     return [['A', record.A], ['B', record.B], ['C', record.C], ['B² − 4AC', record.discriminant], ['t0', record.t0], ['t1', record.t1],
@@ -90,33 +77,8 @@ export class Cylinder {
       [`t (${record.part ?? 'no hit'})`, record.t]];
   }
 
-  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view-mesh.js). */
-  drawIn3D(kit, into, rgb) {
-    kit.triangles(into, axialTriangles(this.center, this.radius, this.radius, this.height, this.capped), rgb);
-  }
-
-  /** Its scene JSON (lib/serialize.js). */
-  toJSON() {
-    return { type: 'cylinder', name: this.name ?? '', center: vector(this.center), radius: this.radius, height: this.height, capped: this.capped, material: materialToJSON(this.material) };
-  }
-
   /** Its type in scene JSON. */
   static get type() { return 'cylinder'; }
-
-  /** Its JSON fields. */
-  static get fields() { return ['center', 'radius', 'height', 'capped', 'material']; }
-
-  /** A cylinder from its fields (checked by the constructor). */
-  static build(o, material) {
-    return new Cylinder(o.center, o.radius, o.height, withCapped(material, o.capped));
-  }
-
-  /** Its constructor's arguments in scene code: `capped` goes with the material's options, and only when false. */
-  static codeArguments(o, material) {
-    const options = o.capped === false ? { ...material, capped: false } : material;
-    return [o.center, o.radius, o.height, options];
-  }
-
 }
 
 /**
