@@ -7,17 +7,8 @@
  * No quadratic, no discriminant: nothing shared with the code under test.
  */
 
-/** A seeded PRNG (mulberry32): the same "random" rays every run. */
-export function seeded(seed) {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+/** The kit's seeded PRNG (mulberry32, lib/photons.js): the same "random" rays every run. It is not under test here. */
+export { seededRandom as seeded } from '../../lib/photons.js';
 
 /** The t where a convex `g` first and last is ≤ 0 along the ray, within ±span, or null when it never is. */
 export function convexInterval(g, ray, span = 1e4) {
