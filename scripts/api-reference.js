@@ -78,8 +78,14 @@ export function collectAPI(root = process.cwd()) {
         target = symbol?.valueDeclaration ?? target;
         doc = doc ?? ownDoc(target);
       }
-      methods.push({ name, kind: 'p5 method', doc: doc ?? emptyDoc(), file: rel(target), factory: true });
+      methods.push({ name, kind: 'p5 method', doc: doc ?? emptyDoc(), file: rel(target), factory: true, target });
     }
+  }
+  // A factory alone in its module: the module's opening comment (what the panel shows, how a sketch uses it) goes first.
+  for (const method of methods) {
+    const header = methods.filter((m) => m.file === method.file).length === 1 ? moduleDoc(method.target) : null;
+    if (header?.text) method.doc = { ...method.doc, text: [header.text, method.doc.text].filter(Boolean).join('\n\n') };
+    delete method.target;
   }
   for (const item of entries.flatMap((e) => e.items)) delete item.node;
   return { entries, methods };
@@ -91,7 +97,7 @@ function describe(name, symbol, declaration, checker, rel) {
   if (ts.isClassDeclaration(declaration)) {
     item.kind = 'class';
     const constructor = declaration.members.find(ts.isConstructorDeclaration);
-    const classDoc = ownDoc(declaration);
+    const classDoc = ownDoc(declaration) ?? moduleDoc(declaration);
     const constructorDoc = constructor ? ownDoc(constructor) : null;
     item.doc = mergeDocs(classDoc, constructorDoc);
     item.params = constructor ? constructor.parameters.map((p) => paramName(p)) : [];
@@ -143,6 +149,16 @@ function ownDoc(node) {
   const docs = ts.getJSDocCommentsAndTags(node).filter((d) => d.kind === ts.SyntaxKind.JSDoc);
   if (docs.length === 0) return null;
   return parseJSDoc(docs[docs.length - 1].getText());
+}
+
+/**
+ * A module's opening comment, the one above its imports: where a file of one
+ * class (or one panel) says what it is in the lesson. Null when the module
+ * opens with no import, since its first comment then belongs to its first declaration.
+ */
+function moduleDoc(node) {
+  const first = node.getSourceFile().statements[0];
+  return first && ts.isImportDeclaration(first) ? ownDoc(first) : null;
 }
 
 function emptyDoc() {
@@ -265,10 +281,19 @@ function callNames(params, docParams) {
   });
 }
 
-/** Turns the text of a JSDoc into paragraphs; `code` stays code. */
-function prose(text) {
+/**
+ * Turns the text of a JSDoc into paragraphs; `code` stays code, and a
+ * paragraph indented as a whole (a comment's code sample or table) stays as written.
+ */
+function prose(text, name) {
   if (!text) return '';
-  return text.split(/\n\s*\n/).map((paragraph) => `<p>${inlineCode(esc(oneLine(paragraph)))}</p>`).join('\n');
+  return text.split(/\n\s*\n/).map((paragraph) => {
+    const lines = paragraph.split('\n').filter((line) => line.trim());
+    if (lines.every((line) => /^ {2}/.test(line))) {
+      return `<pre class="aside" tabindex="0" role="region" aria-label="${esc(`Code in the description of ${name}`)}"><code>${esc(dedent(lines))}</code></pre>`;
+    }
+    return `<p>${inlineCode(esc(oneLine(paragraph)))}</p>`;
+  }).join('\n');
 }
 
 const inlineCode = (html) => html.replace(/`([^`]+)`/g, '<code>$1</code>');
@@ -294,7 +319,7 @@ function itemHTML(item, known, where) {
   const parts = [`<section class="item" id="${esc(item.name)}">`,
     `<h3><code>${esc(item.name)}</code> <span class="kind">${esc(item.kind)}</span></h3>`,
     `<pre class="signature"><code>${esc(signature(item))}</code></pre>`,
-    prose(item.doc.text), paramsTable(item, known)];
+    prose(item.doc.text, item.name), paramsTable(item, known)];
   if (item.doc.returns) parts.push(`<p class="returns">Returns <code>${typeHTML(item.doc.returns.type, known)}</code>${item.doc.returns.text ? `: ${inlineCode(esc(item.doc.returns.text))}` : ''}</p>`);
   if (item.members?.length) {
     parts.push('<dl class="members">');
