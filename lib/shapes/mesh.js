@@ -22,6 +22,8 @@ export class Mesh {
    * @example
    * // the Stanford bunny (npm package bunny): new Mesh(bunny, { color: [0.9, 0.8, 0.7] }), bunny being { positions, cells }
    * const tetra = new Mesh({ positions: [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], cells: [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]] });
+   * // from an OBJ file's text: its v lines are the positions, each f line a face (a square becomes 2 triangles)
+   * const square = Mesh.fromOBJ('v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n', { color: 'teal' });
    */
   constructor(data, options) {
     const { positions, cells } = checkData(data);
@@ -41,7 +43,11 @@ export class Mesh {
   }
 
   /**
-   * A Mesh from Wavefront OBJ text (its v and f lines; see lib/shapes/obj.js).
+   * A Mesh from Wavefront OBJ text: its `v x y z` lines are the positions and
+   * each `f` line a face (indices from 1, or from the end when negative;
+   * `f 1/4/2 …` keeps the first number of each), a face of n corners fanned
+   * into n − 2 triangles; other statements are passed over, and a malformed
+   * `v` or `f` line is a RangeError naming its line (lib/shapes/obj.js).
    * @param {string} text
    * @param {import('../material.js').Material|object} [options]
    */

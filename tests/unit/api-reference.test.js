@@ -61,6 +61,22 @@ describe('the API reference', () => {
     }
   });
 
+  it('says what each of the course\'s later names is in the lesson, from its module\'s opening comment when it has none of its own', () => {
+    const library = api.entries.find((e) => e.id === 'library').items;
+    const text = (name) => (library.find((i) => i.name === name) ?? api.methods.find((m) => m.name === name)).doc.text;
+    expect(text('Cylinder')).toContain('A = Xd² + Zd², not 1');
+    expect(text('Cone')).toContain('A = Xd² + Zd² − k²·Yd²');
+    expect(text('Triangle')).toContain('Möller and Trumbore');
+    expect(text('Mesh')).toContain('bounding');
+    expect(text('AreaLight')).toContain('penumbra');
+    expect(text('SpotLight')).toContain('cone');
+    expect(text('createSampleRays')).toMatch(/^The selected pixel's rays/);
+    expect(library.find((i) => i.name === 'Camera').doc.params.map((p) => p.name)).toContain('options.samples');
+    expect(library.find((i) => i.name === 'Mesh').members.find((m) => m.name === 'fromOBJ').doc.text).toContain('OBJ');
+    // a comment's indented code sample is shown as code, not run together into a paragraph
+    expect(html).toContain('<pre class="aside" tabindex="0" role="region" aria-label="Code in the description of createSampleRays"><code>const view = p.createTracerView(');
+  });
+
   it("links each lesson page's names: its API line names only what the reference documents", () => {
     const documented = new Set([...api.entries.flatMap((e) => e.items.map((i) => i.name)), ...api.methods.map((m) => m.name)]);
     const sketches = readdirSync('sketches').filter((f) => /^\d\d-.*\.js$/.test(f));
