@@ -85,6 +85,14 @@ describe('the book\'s scenarios (ch. 13)', () => {
   });
 });
 
+describe('the book\'s bounding boxes (the bonus chapter "Bounding boxes and hierarchies")', () => {
+  it('"A bounded cone has a bounding box", minimum −5, maximum 3: its lower half from y = −5 to the apex at 0', () => {
+    // The book's double cone has radius |y|: (−5, −5, −5) to (5, 3, 5), the upper half
+    // (radius 3 at y = 3) inside the lower's width. Ours is the lower half alone, so its top is the apex, y = 0.
+    expect(new Cone([0, -2.5, 0], 5, 5).bounds()).toEqual({ min: { x: -5, y: -5, z: -5 }, max: { x: 5, y: 0, z: 5 } });
+  });
+});
+
 describe('the record names the part hit', () => {
   const hat = new Cone([0, 0, -10], 2, 4); // base y = −2, apex y = 2
   it('from below, the base', () => {

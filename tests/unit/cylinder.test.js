@@ -112,6 +112,13 @@ describe('the book\'s scenarios (ch. 13)', () => {
   });
 });
 
+describe('the book\'s bounding boxes (the bonus chapter "Bounding boxes and hierarchies")', () => {
+  it('"A bounded cylinder has a bounding box": minimum −5, maximum 3 → (−1, −5, −1) to (1, 3, 1)', () => {
+    // ours: center y = (−5 + 3) / 2 = −1, height 8
+    expect(new Cylinder([0, -1, 0], 1, 8).bounds()).toEqual({ min: { x: -1, y: -5, z: -1 }, max: { x: 1, y: 3, z: 1 } });
+  });
+});
+
 describe('the record names the part hit', () => {
   const can = new Cylinder([0, 0, -10], 2, 4); // y from −2 to 2
   it('straight down onto the top: the top cap at t = 8 − 2 = 6; the bottom at 10', () => {

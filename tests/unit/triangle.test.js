@@ -67,6 +67,12 @@ describe('the book\'s scenarios (ch. 15)', () => {
   });
 });
 
+describe('the book\'s bounding box (the bonus chapter "Bounding boxes and hierarchies")', () => {
+  it('"A triangle has a bounding box": (−3, 7, 2), (6, 2, −4), (2, −1, −1) → (−3, −1, −4) to (6, 7, 2)', () => {
+    expect(new Triangle([-3, 7, 2], [6, 2, -4], [2, -1, -1]).bounds()).toEqual({ min: { x: -3, y: -1, z: -4 }, max: { x: 6, y: 7, z: 2 } });
+  });
+});
+
 describe('bad values are refused, naming the field', () => {
   it.each([
     [() => new Triangle([0, 0, 0], [1, 1, 1], [2, 2, 2]), RangeError, /a, b, c must not lie on one line: the triangle has zero area/],
