@@ -2,7 +2,9 @@
  * The eye and the image plane. The camera sits at `position` looking toward −z,
  * turned right by `yaw` (H) and up by `pitch` (V), all angles in degrees;
  * `fov` is the vertical field of view. Pixel (0, 0) is the top-left one, and
- * each ray passes through its pixel's centre.
+ * its ray passes through its pixel's centre; with `samples` of 4, 9 or 16 a
+ * pixel gets an n × n grid of rays, one through the centre of each cell, and
+ * their average colour (`sampleOffsets`).
  */
 import { toVec3, Vec3, normalize } from './vec3.js';
 import { finiteNumber, numberInRange, positiveInteger, checkOptions, show } from './check.js';
