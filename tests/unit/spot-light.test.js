@@ -58,9 +58,9 @@ describe('SpotLight: a cone of light with a smooth edge', () => {
     }
   });
 
-  it('renders through trace.js (no packed form yet), as the inspector says', () => {
+  it('renders through the kernel (its cone packed with the light), as the inspector says', () => {
     const scene = floorScene(new SpotLight([0, 10, -20], [0, -4, -20], { angle: 25 }));
-    expect(packScene(scene)).toBe(null);
+    expect(packScene(scene)).not.toBe(null);
     const picture = render(scene, camera);
     for (const [x, y] of [[24, 18], [5, 30], [40, 10]]) {
       const i = (y * camera.width + x) * 4;
