@@ -69,6 +69,30 @@ describe('SpotLight: a cone of light with a smooth edge', () => {
   });
 });
 
+describe('a spot light through the kernel', () => {
+  it('gives trace.js\'s bytes with its cone, fading or not, shadows on or off', () => {
+    for (const attenuation of [0, 0.02]) for (const shadows of [true, false]) {
+      const scene = floorScene(new SpotLight([3, 10, -16], [0, -4, -20], { angle: 20, attenuation }), new PointLight([-8, 6, 0], [0.3, 0.3, 0.6]));
+      scene.shadows = shadows;
+      expect(packScene(scene)).not.toBe(null);
+      const picture = render(scene, camera);
+      for (let y = 0; y < camera.height; y++) for (let x = 0; x < camera.width; x++) {
+        const i = (y * camera.width + x) * 4;
+        expect([picture[i], picture[i + 1], picture[i + 2]]).toEqual(inspectPixel(scene, camera, x, y).color);
+      }
+    }
+  });
+
+  it('fades the circle of light with distance: the factor is the record\'s, and farther is dimmer', () => {
+    const records = floorHits(floorScene(new SpotLight([0, 10, -20], [0, -4, -20], { angle: 25, attenuation: 0.05 })))
+      .map((r) => r.hit.lights[0]).filter((l) => l.beam === 1);
+    expect(records.length).toBeGreaterThan(1);
+    for (const l of records) expect(l.falloff).toBe(1 / (1 + 0.05 * l.distance * l.distance));
+    const [near, far] = [...records].sort((a, b) => a.distance - b.distance).filter((_, i, all) => i === 0 || i === all.length - 1);
+    expect(far.falloff).toBeLessThan(near.falloff);
+  });
+});
+
 describe('spot and area lights in scene JSON and code', () => {
   const scene = () => floorScene(new SpotLight([0, 10, -20], [0, -4, -20], { angle: 25, color: [1, 0.9, 0.7] }),
     new AreaLight([-6, 14, -14], 3, { samples: 9, intensity: 0.6 }), new PointLight([10, 10, 0], [1, 1, 1], 0.3));
