@@ -10,11 +10,12 @@
 import { toVec3, Vec3, normalize, cross } from './vec3.js';
 import { toColor, MAX_COLOR } from './color.js';
 import { finiteNumber, checkOptions, show } from './check.js';
+import { checkAttenuation } from './lights.js';
 
 /** Shadow rays per hit an area light may ask for: an n × n grid, n from 1 to 8. */
 export const AREA_SAMPLES = [1, 4, 9, 16, 25, 36, 49, 64];
 
-const OPTIONS = ['color', 'intensity', 'samples', 'normal', 'name'];
+const OPTIONS = ['color', 'intensity', 'samples', 'normal', 'attenuation', 'name'];
 
 export class AreaLight {
   /**
@@ -25,13 +26,14 @@ export class AreaLight {
    * @param {number} [options.intensity=1] the whole disc's, shared among its points
    * @param {number} [options.samples=16] points on the disc, one shadow ray each: 1, 4, 9, …, 64 (an n × n grid)
    * @param {number[]|{x,y,z}} [options.normal=[0,-1,0]] the way the disc faces (down, for a ceiling light)
+   * @param {number} [options.attenuation=0] how it fades with distance d: by 1 / (1 + attenuation·d²), d from each sample point; 0, not at all
    * @param {string} [options.name]
    * @example
    * const scene = new Scene().add(new Plane([0, -4, 0], [0, 1, 0])).add(new Sphere([0, 0, -20], 3));
    * scene.add(new AreaLight([0, 20, -20], 4, { samples: 16 })); // soft shadows under a disc of radius 4, 16 shadow rays per hit
    */
   constructor(center, radius, options = {}) {
-    const { color = [1, 1, 1], intensity = 1, samples = 16, normal = [0, -1, 0], name = '' } = checkOptions(options, OPTIONS, 'area light');
+    const { color = [1, 1, 1], intensity = 1, samples = 16, normal = [0, -1, 0], attenuation = 0, name = '' } = checkOptions(options, OPTIONS, 'area light');
     this.center = toVec3(center, 'center');
     finiteNumber(radius, 'radius');
     if (!(radius > 0)) throw new RangeError(`radius must be greater than 0, got ${radius}`);
@@ -45,6 +47,7 @@ export class AreaLight {
     this.normal = toVec3(normal, 'normal');
     if (this.normal.x === 0 && this.normal.y === 0 && this.normal.z === 0) throw new RangeError('normal must not be (0, 0, 0): it says which way the disc faces');
     normalize(this.normal, this.normal);
+    this.attenuation = checkAttenuation(attenuation);
     if (typeof name !== 'string') throw new TypeError(`name must be text, got ${show(name)}`);
     this.name = name;
   }
@@ -77,11 +80,11 @@ export class AreaLight {
    * The scene's light sources for this light: one per sample point, each a
    * point light with 1/samples of the emission (Scene.add keeps them in
    * `scene.lights`, each with `source` this light and its `sample` number).
-   * @returns {{ position: Vec3, emission: number[], object: null, source: AreaLight, sample: number }[]}
+   * @returns {{ position: Vec3, emission: number[], object: null, source: AreaLight, sample: number, attenuation: number }[]}
    */
   sources() {
-    const emission = this.emission.map((e) => e / this.samples);
-    return this.points().map((position, sample) => ({ position, emission, object: null, source: this, sample }));
+    const emission = this.emission.map((e) => e / this.samples), attenuation = this.attenuation;
+    return this.points().map((position, sample) => ({ position, emission, object: null, source: this, sample, attenuation }));
   }
 }
 

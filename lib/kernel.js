@@ -17,14 +17,18 @@
 import { plainClassOf, ballOf } from './shapes/index.js';
 import { SHAPE, KIND, P, N, scratchNumbers } from './shapes/packed.js';
 import { reflectInto } from './vec3.js';
-import { lambert, specular, lightShare, refract, fresnel as fresnelShare, mix } from './optics.js';
+import { lambert, specular, lightShare, spotShare, falloff, refract, fresnel as fresnelShare, mix } from './optics.js';
 
 /** Numbers per material, and where each lies among them: r g b, emission r g b, reflection, transparency, ior, specular, shininess. */
 const MATERIAL = 11;
 const EMISSION = 3, REFLECTION = 6, TRANSPARENCY = 7, IOR = 8, SPECULAR = 9, SHININESS = 10;
-/** Numbers per light: x y z, emission r g b (at EMISSION), the index of its shape (−1 for a point light). */
-const LIGHT = 7;
-const LIGHT_SHAPE = 6;
+/**
+ * Numbers per light: x y z, emission r g b (at EMISSION), the index of its
+ * shape (−1 for a point light), its attenuation, then for a spot light 1, its
+ * axis x y z, cosOuter and cosInner (0 and unused for any other light).
+ */
+const LIGHT = 14;
+const LIGHT_SHAPE = 6, ATTENUATION = 7, IS_SPOT = 8, AXIS = 9, COS_OUTER = 12, COS_INNER = 13;
 
 /** The deepest bounce a scene allows (Scene's maxDepth is 0–16), plus the primary ray. */
 const LEVELS = 17;
@@ -69,8 +73,9 @@ export class PackedScene {
     this.lightCount = lights.length;
     this.lights = new Float64Array(lights.length * LIGHT);
     lights.forEach((light, i) => {
-      const { position: p, emission: e } = light;
-      this.lights.set([p.x, p.y, p.z, e[0], e[1], e[2], light.object ? this.index.get(light.object) ?? -1 : -1], i * LIGHT);
+      const { position: p, emission: e, spot } = light;
+      const cone = spot ? [1, spot.axis.x, spot.axis.y, spot.axis.z, spot.cosOuter, spot.cosInner] : [0, 0, 0, 0, 0, 0];
+      this.lights.set([p.x, p.y, p.z, e[0], e[1], e[2], light.object ? this.index.get(light.object) ?? -1 : -1, light.attenuation, ...cone], i * LIGHT);
     });
     this.apart = this.#apart(objects, lights);
     this.background = Float64Array.from(scene.background);
@@ -139,8 +144,8 @@ function plain(shape) {
  */
 export function packScene(scene) {
   const { objects } = scene;
-  const packs = objects.every(plain) && new Set(objects).size === objects.length && scene.lights.every((light) => !light.spot);
-  return packs ? new PackedScene(scene) : null; // (a spot light's cone is traced by trace.js alone, for now)
+  const packs = objects.every(plain) && new Set(objects).size === objects.length;
+  return packs ? new PackedScene(scene) : null;
 }
 
 /**
@@ -242,13 +247,16 @@ function lightPoint(k, object, out) {
     const Lx = x * inverse, Ly = y * inverse, Lz = z * inverse;
     const cos = lambert(Nx, Ny, Nz, Lx, Ly, Lz);
     if (cos <= 0) continue;
-    const transmission = k.shadows
+    const beam = lights[l + IS_SPOT] === 1 ? spotShare(lights[l + AXIS], lights[l + AXIS + 1], lights[l + AXIS + 2], lights[l + COS_OUTER], lights[l + COS_INNER], Lx, Ly, Lz) : 1;
+    if (beam === 0) continue; // outside a spot light's cone
+    const transmission = (k.shadows
       ? shadowRay(k, Px + Nx * bias, Py + Ny * bias, Pz + Nz * bias, Lx, Ly, Lz, distance - bias, l / LIGHT)
-      : 1;
+      : 1) * beam;
     if (transmission === 0) continue;
-    const diffuse = cos * transmission;
+    const reach = transmission * falloff(lights[l + ATTENUATION], distance);
+    const diffuse = cos * reach;
     const highlight = k.specular
-      ? specular(mat[m + SPECULAR], mat[m + SHININESS], cos, Lx, Ly, Lz, Nx, Ny, Nz, surface[D], surface[D + 1], surface[D + 2]) * transmission
+      ? specular(mat[m + SPECULAR], mat[m + SHININESS], cos, Lx, Ly, Lz, Nx, Ny, Nz, surface[D], surface[D + 1], surface[D + 2]) * reach
       : 0;
     const glow = l + EMISSION; // the light's colour
     cr += lightShare(lights[glow], red, diffuse, highlight);

@@ -1,6 +1,7 @@
 /**
  * The leaf formulas of the lesson's shading, written once: Lambert's cos term,
- * Phong's highlight, one light's share of the colour, the mirror direction,
+ * Phong's highlight, a spot light's cone, the fall of light with distance,
+ * one light's share of the colour, the mirror direction,
  * Snell's law, Schlick's Fresnel share and the mirror/glass mix. trace.js (the
  * readable tracer) and kernel.js (render()'s fast path) both call them, so the
  * two cannot tell the story apart.
@@ -28,6 +29,31 @@ export function specular(strength, shininess, cos, Lx, Ly, Lz, Nx, Ny, Nz, Dx, D
   const twice = 2 * cos;
   const rv = (Lx - twice * Nx) * Dx + (Ly - twice * Ny) * Dy + (Lz - twice * Nz) * Dz;
   return rv > 0 ? strength * Math.pow(rv, shininess) : 0;
+}
+
+/**
+ * How much of a spot light reaches a point, 0–1, from the unit direction L
+ * from the point toward the light: with cos = −L·axis (the angle off the
+ * axis), 1 inside cosInner, 0 outside cosOuter, smoothstep between.
+ */
+export function spotShare(axisX, axisY, axisZ, cosOuter, cosInner, Lx, Ly, Lz) {
+  const cos = -(Lx * axisX + Ly * axisY + Lz * axisZ);
+  if (cos >= cosInner) return 1;
+  if (cos <= cosOuter) return 0;
+  const s = (cos - cosOuter) / (cosInner - cosOuter);
+  return s * s * (3 - 2 * s);
+}
+
+/**
+ * The fall of a light's strength with distance d: 1 / (1 + k·d²), k the
+ * light's `attenuation`. One number, not OpenGL's three (constant, linear,
+ * quadratic): the d² is the lesson (light spreads over a sphere's surface,
+ * 4πd²), the 1 + keeps a light up close from blowing up to infinity, and k
+ * says at what distance the light is half as strong (d = 1/√k). k = 0 gives
+ * exactly 1: no falloff, the same picture as before.
+ */
+export function falloff(attenuation, distance) {
+  return 1 / (1 + attenuation * distance * distance);
 }
 
 /**

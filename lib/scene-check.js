@@ -26,7 +26,7 @@ export function checkScene(scene) {
   scene.background = asColor(scene.background, 'scene.background');
   scene.objects.forEach((o, i) => checkShape(o, `objects[${i}]`));
   scene.lights.forEach(({ source: s }, i) => {
-    if (s instanceof PointLight) withPath(() => new PointLight(s.position, s.color, s.intensity), `lights[${i}].`);
+    if (s instanceof PointLight) withPath(() => new PointLight(s.position, { color: s.color, intensity: s.intensity, attenuation: s.attenuation }), `lights[${i}].`);
   });
 }
 

@@ -27,21 +27,28 @@ const MATERIAL_FIELDS = ['color', 'emission', 'reflection', 'transparency', 'ior
 const CAMERA_FIELDS = ['width', 'height', 'fov', 'position', 'yaw', 'pitch', 'samples'];
 
 /** The point light's JSON fields, and how to build it from them (each shape class says its own). */
-const POINT_LIGHT = { type: 'pointLight', fields: ['position', 'color', 'intensity'], build: (o) => new PointLight(o.position, o.color, o.intensity) };
+const POINT_LIGHT = {
+  type: 'pointLight', fields: ['position', 'color', 'intensity', 'attenuation'],
+  build: (o) => (o.attenuation === undefined ? new PointLight(o.position, o.color, o.intensity)
+    : new PointLight(o.position, definedOnly({ color: o.color, intensity: o.intensity, attenuation: o.attenuation }))),
+};
+
+/** `{ attenuation }` when a light fades with distance, else nothing: a light that does not is written as before. */
+const fading = (attenuation) => (attenuation ? { attenuation } : {});
 
 /** The other lights, as JSON: their fields (options among them), how to build them and their JSON. */
 const LIGHTS = [
   {
-    type: 'areaLight', Light: AreaLight, fields: ['center', 'radius', 'color', 'intensity', 'samples', 'normal'],
-    build: (o) => new AreaLight(o.center, o.radius, definedOnly({ color: o.color, intensity: o.intensity, samples: o.samples, normal: o.normal })),
-    toJSON: (l) => ({ type: 'areaLight', name: l.name, center: vector(l.center), radius: l.radius, color: [...l.color], intensity: l.intensity, samples: l.samples, normal: vector(l.normal) }),
-    codeArguments: (o) => [o.center, o.radius, { color: o.color, intensity: o.intensity, samples: o.samples, normal: o.normal }],
+    type: 'areaLight', Light: AreaLight, fields: ['center', 'radius', 'color', 'intensity', 'samples', 'normal', 'attenuation'],
+    build: (o) => new AreaLight(o.center, o.radius, definedOnly({ color: o.color, intensity: o.intensity, samples: o.samples, normal: o.normal, attenuation: o.attenuation })),
+    toJSON: (l) => ({ type: 'areaLight', name: l.name, center: vector(l.center), radius: l.radius, color: [...l.color], intensity: l.intensity, samples: l.samples, normal: vector(l.normal), ...fading(l.attenuation) }),
+    codeArguments: (o) => [o.center, o.radius, { color: o.color, intensity: o.intensity, samples: o.samples, normal: o.normal, ...fading(o.attenuation) }],
   },
   {
-    type: 'spotLight', Light: SpotLight, fields: ['position', 'target', 'angle', 'color', 'intensity'],
-    build: (o) => new SpotLight(o.position, o.target, definedOnly({ angle: o.angle, color: o.color, intensity: o.intensity })),
-    toJSON: (l) => ({ type: 'spotLight', name: l.name, position: vector(l.position), target: vector(l.target), angle: l.angle, color: [...l.color], intensity: l.intensity }),
-    codeArguments: (o) => [o.position, o.target, { angle: o.angle, color: o.color, intensity: o.intensity }],
+    type: 'spotLight', Light: SpotLight, fields: ['position', 'target', 'angle', 'color', 'intensity', 'attenuation'],
+    build: (o) => new SpotLight(o.position, o.target, definedOnly({ angle: o.angle, color: o.color, intensity: o.intensity, attenuation: o.attenuation })),
+    toJSON: (l) => ({ type: 'spotLight', name: l.name, position: vector(l.position), target: vector(l.target), angle: l.angle, color: [...l.color], intensity: l.intensity, ...fading(l.attenuation) }),
+    codeArguments: (o) => [o.position, o.target, { angle: o.angle, color: o.color, intensity: o.intensity, ...fading(o.attenuation) }],
   },
 ];
 
@@ -194,7 +201,7 @@ export function addOrder(scene) {
 
 /** One shape's or point light's JSON, as sceneToJSON writes it. */
 export function objectToJSON(item) {
-  if (item instanceof PointLight) return { type: 'pointLight', name: item.name ?? '', position: vector(item.position), color: [...item.color], intensity: item.intensity };
+  if (item instanceof PointLight) return { type: 'pointLight', name: item.name ?? '', position: vector(item.position), color: [...item.color], intensity: item.intensity, ...fading(item.attenuation) };
   const light = LIGHTS.find((l) => item instanceof l.Light);
   if (light) return light.toJSON(item);
   const json = typeof item?.toJSON === 'function' ? item.toJSON() : null;
@@ -302,11 +309,17 @@ function sceneOptions(data) {
 
 /** `new Sphere(…)` for one object's JSON: its class's fields in the order the constructor takes them, defaults left out. */
 function constructorCall(o) {
+  if (o.type === POINT_LIGHT.type && o.attenuation) return `new PointLight(${literal(o.position)}, ${literal(fadingPointLight(o))})`;
   const args = o.type === POINT_LIGHT.type
     ? [o.position, isWhite(o.color) && o.intensity === 1 ? undefined : o.color, o.intensity === 1 ? undefined : o.intensity]
     : shapeArguments(kindOfType(o.type), o);
   while (args.length && args.at(-1) === undefined) args.pop();
   return `new ${className(o.type)}(${args.map((a, i) => literal(a, o.type === POINT_LIGHT.type && i === 1)).join(', ')})`;
+}
+
+/** A fading point light's options, `{ color, intensity, attenuation }`, defaults left out (only the options form takes attenuation). */
+function fadingPointLight(o) {
+  return { ...(isWhite(o.color) ? {} : { color: o.color }), ...(o.intensity === 1 ? {} : { intensity: o.intensity }), attenuation: o.attenuation };
 }
 
 /** A shape's constructor arguments: its class's own `codeArguments`, else its fields in order. */

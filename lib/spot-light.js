@@ -8,8 +8,9 @@ import { toVec3, Vec3, normalize } from './vec3.js';
 import { toColor, MAX_COLOR } from './color.js';
 import { finiteNumber, checkOptions, show } from './check.js';
 import { RAD_PER_DEG } from './constants.js';
+import { checkAttenuation } from './lights.js';
 
-const OPTIONS = ['angle', 'color', 'intensity', 'name'];
+const OPTIONS = ['angle', 'color', 'intensity', 'attenuation', 'name'];
 
 /** The share of the angle, from the rim inward, over which the light fades. */
 export const SPOT_EDGE = 0.2;
@@ -22,13 +23,14 @@ export class SpotLight {
    * @param {number} [options.angle=30] the cone's half-angle, degrees, between 0 and 90 (not included)
    * @param {number[]|string} [options.color=[1,1,1]]
    * @param {number} [options.intensity=1]
+   * @param {number} [options.attenuation=0] how it fades with distance d: by 1 / (1 + attenuation·d²); 0, not at all
    * @param {string} [options.name]
    * @example
    * const scene = new Scene().add(new Plane([0, -4, 0], [0, 1, 0])).add(new Sphere([0, 0, -20], 3));
    * scene.add(new SpotLight([0, 15, -20], [0, -4, -20], { angle: 25 })); // a circle of light on the floor, around the sphere
    */
   constructor(position, target, options = {}) {
-    const { angle = 30, color = [1, 1, 1], intensity = 1, name = '' } = checkOptions(options, OPTIONS, 'spot light');
+    const { angle = 30, color = [1, 1, 1], intensity = 1, attenuation = 0, name = '' } = checkOptions(options, OPTIONS, 'spot light');
     this.position = toVec3(position, 'position');
     this.target = toVec3(target, 'target');
     const axis = new Vec3(this.target.x - this.position.x, this.target.y - this.position.y, this.target.z - this.position.z);
@@ -47,28 +49,19 @@ export class SpotLight {
     this.intensity = intensity;
     /** What it gives off at full strength: colour × intensity. */
     this.emission = this.color.map((c) => c * intensity);
+    this.attenuation = checkAttenuation(attenuation);
     if (typeof name !== 'string') throw new TypeError(`name must be text, got ${show(name)}`);
     this.name = name;
   }
 
   /**
    * The scene's light source for it: a point light that knows its cone (Scene.add keeps it in `scene.lights`).
-   * @returns {{ position: Vec3, emission: number[], object: null, source: SpotLight, spot: SpotLight }}
+   * @returns {{ position: Vec3, emission: number[], object: null, source: SpotLight, spot: SpotLight, attenuation: number }}
    */
   source() {
-    return { position: this.position, emission: this.emission, object: null, source: this, spot: this };
+    return { position: this.position, emission: this.emission, object: null, source: this, spot: this, attenuation: this.attenuation };
   }
 }
 
-/**
- * How much of a spot light reaches a point, 0–1, from the unit direction L
- * from the point toward the light: with cos = −L·axis (the angle off the
- * axis), 1 inside cosInner, 0 outside cosOuter, smoothstep between.
- */
-export function spotShare(axisX, axisY, axisZ, cosOuter, cosInner, Lx, Ly, Lz) {
-  const cos = -(Lx * axisX + Ly * axisY + Lz * axisZ);
-  if (cos >= cosInner) return 1;
-  if (cos <= cosOuter) return 0;
-  const s = (cos - cosOuter) / (cosInner - cosOuter);
-  return s * s * (3 - 2 * s);
-}
+/** How much of a spot light's cone reaches a point: lib/optics.js, where trace.js and kernel.js both find it. */
+export { spotShare } from './optics.js';

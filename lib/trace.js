@@ -13,10 +13,9 @@
  * calls too (tests/unit/same-bytes.test.js proves the two give the same bytes).
  */
 import { Vec3, dot, copy, set, scaleAndAdd, reflect } from './vec3.js';
-import { lambert, specular as phong, lightShare, refract, fresnel as fresnelShare, mix } from './optics.js';
+import { lambert, specular as phong, lightShare, spotShare, falloff, refract, fresnel as fresnelShare, mix } from './optics.js';
 import { Ray } from './ray.js';
 import { EPSILON, DEG_PER_RAD } from './constants.js';
-import { spotShare } from './spot-light.js';
 
 /**
  * Traces `ray` through `scene`; writes its colour into `color` and returns it.
@@ -88,8 +87,9 @@ function lightPoint(frame, color) {
     if (beam === 0) continue; // outside it
     const transmission = (scene.shadows ? shadowRay(frame, distance, light.object) : 1) * beam;
     if (transmission === 0) continue; // in shadow
-    const diffuse = cos * transmission;
-    const highlight = scene.specular ? specular(frame, cos) * transmission : 0;
+    const reach = transmission * falloff(light.attenuation, distance); // what arrives, less the fall with distance
+    const diffuse = cos * reach;
+    const highlight = scene.specular ? specular(frame, cos) * reach : 0;
     const lightColor = light.emission;
     color[0] += lightShare(lightColor[0], surface[0], diffuse, highlight);
     color[1] += lightShare(lightColor[1], surface[1], diffuse, highlight);
@@ -97,7 +97,7 @@ function lightPoint(frame, color) {
   }
 }
 
-/** How much of a spot light's cone reaches along the unit direction `toLight` (spot-light.js). */
+/** How much of a spot light's cone reaches along the unit direction `toLight` (optics.js). */
 function beamShare(spot, toLight) {
   return spotShare(spot.axis.x, spot.axis.y, spot.axis.z, spot.cosOuter, spot.cosInner, toLight.x, toLight.y, toLight.z);
 }
@@ -223,11 +223,13 @@ function recordLight(frame, light) {
   const cos = cosToLight(frame);
   const beam = light.spot ? beamShare(light.spot, frame.toLight) : 1;
   const transmission = cos <= 0 || beam === 0 ? 0 : (scene.shadows ? shadowRay(frame, distance, light.object) : 1) * beam;
-  const diffuse = transmission > 0 ? cos * transmission : 0;
-  const highlight = transmission > 0 && scene.specular ? specular(frame, cos) * transmission : 0;
+  const fall = falloff(light.attenuation, distance), reach = transmission * fall;
+  const diffuse = transmission > 0 ? cos * reach : 0;
+  const highlight = transmission > 0 && scene.specular ? specular(frame, cos) * reach : 0;
   return {
     light: light.source, position: copy(new Vec3(), light.position), distance,
     cos, facing: cos > 0, inShadow: cos > 0 && beam > 0 && transmission < beam, transmission, beam,
+    attenuation: light.attenuation, falloff: fall,
     contribution: [0, 1, 2].map((i) => lightShare(lightColor[i], surface[i], diffuse, highlight)),
     specular: highlight,
   };

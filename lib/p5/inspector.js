@@ -299,7 +299,8 @@ function lightsSection(r) {
     return element('tr', { class: `rt-light-${status.replace(' ', '-')}` },
       element('td', {}, nameValue('light', nameOf(l.light, `light ${i + 1}`), at)),
       element('td', {}, value('cos', l.cos, at)),
-      element('td', {}, element('span', { class: 'rt-value', 'data-field': 'in-shadow', 'data-value': String(l.inShadow), ...at }, status)),
+      element('td', {}, element('span', { class: 'rt-value', 'data-field': 'in-shadow', 'data-value': String(l.inShadow), ...at }, status),
+        ...(l.attenuation > 0 ? [' ', element('span', { class: 'rt-value', 'data-field': 'falloff', 'data-value': String(l.falloff), ...at }, `falloff ×${formatNumber(l.falloff)} at distance ${formatNumber(l.distance)}`)] : [])),
       element('td', {},
         element('span', { class: 'rt-swatch rt-swatch-small', style: `background: ${toHex(added.map((c) => Math.min(1, c) * 255))}` }),
         element('span', { class: 'rt-value rt-wrap', 'data-field': 'contribution', 'data-value': added.join(','), ...at }, `(${added.map(formatNumber).join(', ')})`)));

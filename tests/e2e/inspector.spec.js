@@ -186,6 +186,28 @@ test('a new scene restarts the render without a reload, ends done, and the panel
   expect(await page.evaluate(() => window.view.selected)).toEqual({ x: 15, y: 11 });
 });
 
+test('a light that fades with distance says by how much on its row; one that does not, nothing', async ({ page }) => {
+  await open(page, '?scale=6');
+  const expected = await page.evaluate(() => {
+    const { Scene, Sphere, PointLight, inspectPixel } = window.lib;
+    const scene = new Scene().add(new Sphere([0, 0, -10], 3, { color: [1, 0.5, 0.5] }))
+      .add(new PointLight([2, 3, 0], { attenuation: 0.04 })).add(new PointLight([-2, 3, 0]));
+    window.view.setScene(scene);
+    const light = inspectPixel(scene, window.view.camera, 32, 24).hit.lights[0];
+    return { falloff: String(light.falloff), factor: light.falloff };
+  });
+  await waitForDone(page);
+  await clickPixel(page.locator('[data-tracer]'), 32, 24);
+  const panel = page.locator('[data-inspector]');
+  const fading = panel.locator('[data-field="falloff"]');
+  await expect(fading).toHaveCount(1); // the second light does not fade: no words for it
+  await expect(fading).toHaveAttribute('data-light', '0');
+  await expect(fading).toHaveAttribute('data-value', expected.falloff);
+  await expect(fading).toHaveText(/^falloff ×0\.\d+ at distance \d+(\.\d+)?$/);
+  expect(expected.factor).toBeGreaterThan(0);
+  expect(expected.factor).toBeLessThan(1);
+});
+
 test('the traced canvas is render()\'s picture exactly, and exports as a PNG at traced size', async ({ page }) => {
   await open(page, '?scale=6&grid=1');
   await clickPixel(page.locator('[data-tracer]'), 5, 5); // a crosshair and the grid are drawn: not into the picture

@@ -51,6 +51,19 @@ describe('AreaLight: a disc of light, sampled at fixed points', () => {
     expect(area).toEqual(point);
   });
 
+  it('fades each of its points by that point\'s own distance', () => {
+    const scene = floorScene(new AreaLight([-6, 14, -14], 4, { samples: 9, attenuation: 0.01 }));
+    const fading = inspectPixel(scene, camera, 24, 30), { hit } = fading;
+    expect(hit.object).toBe(scene.objects[0]); // the floor
+    expect(hit.lights).toHaveLength(9);
+    const distances = new Set(hit.lights.map((l) => l.distance));
+    expect(distances.size).toBeGreaterThan(1);
+    for (const l of hit.lights) expect(l.falloff).toBe(1 / (1 + 0.01 * l.distance * l.distance));
+    const plain = inspectPixel(floorScene(new AreaLight([-6, 14, -14], 4, { samples: 9 })), camera, 24, 30);
+    expect(fading.color.every((c, i) => c <= plain.color[i])).toBe(true);
+    expect(fading.color).not.toEqual(plain.color);
+  });
+
   it('casts a shadow with a penumbra: floor points that reach some of its shadow rays, not all', () => {
     const scene = floorScene(new AreaLight([-6, 14, -14], 4, { samples: 16 }));
     const reached = new Set();

@@ -61,6 +61,9 @@ describe('restart() after the scene changed in place', () => {
     scene.objects[1].max = [1, 1, -4];
     scene.lights[0].source.intensity = -1;
     expect(() => r.restart()).toThrow('lights[0].intensity must not be negative, got -1');
+    scene.lights[0].source.intensity = 1;
+    scene.lights[0].source.attenuation = '0.1';
+    expect(() => r.restart()).toThrow('lights[0].attenuation must be a finite number, got "0.1"');
   });
 });
 

@@ -8,7 +8,7 @@
 // inspector, which records every step of the same trace, gives render()'s colour.
 import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
-import { Camera, Scene, Sphere, Plane, Box, PointLight, render, inspectPixel } from '../../lib/index.js';
+import { Camera, Scene, Sphere, Plane, Box, PointLight, SpotLight, AreaLight, render, inspectPixel } from '../../lib/index.js';
 import { renderPixel, prepareFrame } from '../../lib/render.js';
 import { packScene, tracePrimary, outOfReach } from '../../lib/kernel.js';
 import { trace } from '../../lib/trace.js';
@@ -58,8 +58,16 @@ const size = between(0.1, 4);
 const box = fc.tuple(place, size, size, size, material)
   .map(([[x, y, z], dx, dy, dz, m]) => new Box([x, y, z], [x + dx, y + dy, z + dz], m));
 
-const light = fc.tuple(point(20), color, between(0, 2))
-  .map(([position, c, intensity]) => new PointLight(position, c, intensity));
+/** Lights fade with distance now and then (attenuation 0: not at all). */
+const attenuation = fc.oneof({ weight: 2, arbitrary: fc.constant(0) }, { weight: 1, arbitrary: between(0, 0.5) });
+const pointLight = fc.tuple(point(20), color, between(0, 2), attenuation)
+  .map(([position, c, intensity, k]) => (k === 0 ? new PointLight(position, c, intensity) : new PointLight(position, { color: c, intensity, attenuation: k })));
+const spotLight = fc.tuple(point(20), point(10), between(1, 89), color, between(0, 2), attenuation)
+  .filter(([p, t]) => p.some((v, i) => v !== t[i]))
+  .map(([position, target, angle, c, intensity, k]) => new SpotLight(position, target, { angle, color: c, intensity, attenuation: k }));
+const areaLight = fc.tuple(point(20), between(0.1, 4), fc.constantFrom(1, 4, 9), direction, color, between(0, 2), attenuation)
+  .map(([center, radius, samples, normal, c, intensity, k]) => new AreaLight(center, radius, { samples, normal, color: c, intensity, attenuation: k }));
+const light = fc.oneof({ weight: 3, arbitrary: pointLight }, { weight: 1, arbitrary: spotLight }, { weight: 1, arbitrary: areaLight });
 
 /** A scene's switches, and its items drawn from `item`. */
 const sceneOf = (item) => fc.record({

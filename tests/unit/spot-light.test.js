@@ -58,14 +58,38 @@ describe('SpotLight: a cone of light with a smooth edge', () => {
     }
   });
 
-  it('renders through trace.js (no packed form yet), as the inspector says', () => {
+  it('renders through the kernel (its cone packed with the light), as the inspector says', () => {
     const scene = floorScene(new SpotLight([0, 10, -20], [0, -4, -20], { angle: 25 }));
-    expect(packScene(scene)).toBe(null);
+    expect(packScene(scene)).not.toBe(null);
     const picture = render(scene, camera);
     for (const [x, y] of [[24, 18], [5, 30], [40, 10]]) {
       const i = (y * camera.width + x) * 4;
       expect(inspectPixel(scene, camera, x, y).color).toEqual([picture[i], picture[i + 1], picture[i + 2]]);
     }
+  });
+});
+
+describe('a spot light through the kernel', () => {
+  it('gives trace.js\'s bytes with its cone, fading or not, shadows on or off', () => {
+    for (const attenuation of [0, 0.02]) for (const shadows of [true, false]) {
+      const scene = floorScene(new SpotLight([3, 10, -16], [0, -4, -20], { angle: 20, attenuation }), new PointLight([-8, 6, 0], [0.3, 0.3, 0.6]));
+      scene.shadows = shadows;
+      expect(packScene(scene)).not.toBe(null);
+      const picture = render(scene, camera);
+      for (let y = 0; y < camera.height; y++) for (let x = 0; x < camera.width; x++) {
+        const i = (y * camera.width + x) * 4;
+        expect([picture[i], picture[i + 1], picture[i + 2]]).toEqual(inspectPixel(scene, camera, x, y).color);
+      }
+    }
+  });
+
+  it('fades the circle of light with distance: the factor is the record\'s, and farther is dimmer', () => {
+    const records = floorHits(floorScene(new SpotLight([0, 10, -20], [0, -4, -20], { angle: 25, attenuation: 0.05 })))
+      .map((r) => r.hit.lights[0]).filter((l) => l.beam === 1);
+    expect(records.length).toBeGreaterThan(1);
+    for (const l of records) expect(l.falloff).toBe(1 / (1 + 0.05 * l.distance * l.distance));
+    const [near, far] = [...records].sort((a, b) => a.distance - b.distance).filter((_, i, all) => i === 0 || i === all.length - 1);
+    expect(far.falloff).toBeLessThan(near.falloff);
   });
 });
 
