@@ -58,10 +58,15 @@ export class BVH {
    * to the lowest item index, as in a loop over every item.
    */
   nearest(ray, tMin, corners, stats = null) {
-    const o = ray.origin, d = ray.direction, ox = o.x, oy = o.y, oz = o.z;
-    const ix = 1 / d.x, iy = 1 / d.y, iz = 1 / d.z;
+    const o = ray.origin, d = ray.direction;
+    return this.nearestAlong(o.x, o.y, o.z, d.x, d.y, d.z, tMin, corners, stats);
+  }
+
+  /** `nearest` for the ray from (ox, oy, oz) along (dx, dy, dz), in numbers (render()'s kernel calls it so). */
+  nearestAlong(ox, oy, oz, dx, dy, dz, tMin, corners, stats = null) {
+    const ix = 1 / dx, iy = 1 / dy, iz = 1 / dz;
     const { boxes, nodes, order, stack, stackT, state } = this;
-    state[0] = ox; state[1] = oy; state[2] = oz; state[3] = d.x; state[4] = d.y; state[5] = d.z; state[6] = tMin;
+    state[0] = ox; state[1] = oy; state[2] = oz; state[3] = dx; state[4] = dy; state[5] = dz; state[6] = tMin;
     state[7] = Infinity; state[8] = -1;
     const tLo = state[6]; // tMin as a float64 from here on (a tagged argument mixed into the slab tests' numbers would box them)
     let top = 0;
