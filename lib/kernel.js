@@ -5,7 +5,8 @@
  * variables, so no step reads through a chain of objects.
  *
  * Same bytes as trace.js, proven by tests/unit/same-bytes.test.js over random
- * scenes (spheres, planes, boxes, lights, mirrors, glass). trace.js stays the
+ * scenes (spheres, planes, boxes, cylinders, cones, triangles, meshes, lights,
+ * mirrors, glass). trace.js stays the
  * lesson's readable version and the one the inspector runs; a formula changed
  * in lib/optics.js changes both. Full shading of the class scene is 1.17–1.2× faster
  * this way (docs/performance.md). A shape with a `hit` or `normalAt` of its

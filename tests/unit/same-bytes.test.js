@@ -1,5 +1,5 @@
 // The renderer's shortcuts must never show: over random scenes (spheres,
-// planes, boxes, point lights and emissive shapes, mirrors, glass, shadows and
+// planes, boxes, cylinders, cones, triangles, meshes, point lights and emissive shapes, mirrors, glass, shadows and
 // highlights on or off) and random cameras, render() — which tests each
 // primary ray only against its tile's candidate shapes (lib/bounds.js) — gives
 // the very bytes of the plain reference, every pixel traced against every
@@ -8,7 +8,7 @@
 // inspector, which records every step of the same trace, gives render()'s colour.
 import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
-import { Camera, Scene, Sphere, Plane, Box, PointLight, render, inspectPixel } from '../../lib/index.js';
+import { Camera, Scene, Sphere, Plane, Box, Cylinder, Cone, Triangle, Mesh, PointLight, render, inspectPixel } from '../../lib/index.js';
 import { renderPixel, prepareFrame } from '../../lib/render.js';
 import { packScene, tracePrimary, outOfReach } from '../../lib/kernel.js';
 import { trace } from '../../lib/trace.js';
@@ -58,6 +58,27 @@ const size = between(0.1, 4);
 const box = fc.tuple(place, size, size, size, material)
   .map(([[x, y, z], dx, dy, dz, m]) => new Box([x, y, z], [x + dx, y + dy, z + dz], m));
 
+/** Cylinders and cones, capped and open. */
+const axial = (Shape) => fc.tuple(place, between(0.1, 3), between(0.1, 4), fc.boolean(), material)
+  .map(([center, radius, height, capped, m]) => new Shape(center, radius, height, { ...m, capped }));
+const cylinder = axial(Cylinder), cone = axial(Cone);
+
+/** Three corners near a place, kept only when they span an area (a Triangle refuses a flat one). */
+const corners = fc.tuple(place, point(3), point(3)).filter(([, u, v]) => {
+  const cx = u[1] * v[2] - u[2] * v[1], cy = u[2] * v[0] - u[0] * v[2], cz = u[0] * v[1] - u[1] * v[0];
+  return Math.hypot(cx, cy, cz) > 1e-3 * Math.hypot(...u) * Math.hypot(...v) && Math.hypot(...u) > 0.05 && Math.hypot(...v) > 0.05;
+}).map(([[x, y, z], u, v]) => [[x, y, z], [x + u[0], y + u[1], z + u[2]], [x + v[0], y + v[1], z + v[2]]]);
+const triangle = fc.tuple(corners, material).map(([[a, b, c], m]) => new Triangle(a, b, c, m));
+
+/** A small mesh: a tetrahedron scaled and placed, or a few separate triangles (enough for the tree to split). */
+const tetrahedron = fc.tuple(place, between(0.2, 3), material).map(([[x, y, z], r, m]) => new Mesh({
+  positions: [[x, y, z], [x + r, y, z], [x, y + r, z], [x, y, z + r]], cells: [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
+}, m));
+const soup = fc.tuple(fc.array(corners, { minLength: 1, maxLength: 12 }), material).map(([list, m]) => new Mesh({
+  positions: list.flat(), cells: list.map((_, i) => [3 * i, 3 * i + 1, 3 * i + 2]),
+}, m));
+const mesh = fc.oneof(tetrahedron, soup);
+
 const light = fc.tuple(point(20), color, between(0, 2))
   .map(([position, c, intensity]) => new PointLight(position, c, intensity));
 
@@ -76,6 +97,11 @@ const sceneOf = (item) => fc.record({
   .reduce((s, it) => s.add(it), new Scene(options)));
 
 const scene = sceneOf(fc.oneof({ weight: 5, arbitrary: sphere }, { weight: 1, arbitrary: plane }, { weight: 3, arbitrary: box }, { weight: 2, arbitrary: light }));
+/** The course's other shapes among spheres, planes and boxes: cylinders, cones, triangles and small meshes. */
+const shapeScene = sceneOf(fc.oneof(
+  { weight: 2, arbitrary: sphere }, { weight: 1, arbitrary: plane }, { weight: 1, arbitrary: box }, { weight: 2, arbitrary: light },
+  { weight: 2, arbitrary: cylinder }, { weight: 2, arbitrary: cone }, { weight: 2, arbitrary: triangle }, { weight: 2, arbitrary: mesh },
+));
 /** The lesson's scenes: spheres only (the fast path then skips asking each shape its kind), lit by their glow and point lights. */
 const sphereScene = sceneOf(fc.oneof({ weight: 3, arbitrary: sphere }, { weight: 1, arbitrary: light }));
 
@@ -189,6 +215,14 @@ describe('the same bytes as the plain reference, for random scenes and cameras (
     assertBoth(fc.property(sphereScene, camera, (s, cam) => {
       expect(firstDifference(render(s, cam), pixelByPixel(s, cam))).toBe(-1);
     }), RUNS);
+  });
+
+  it('render() of scenes with cylinders, cones, triangles and meshes: the fast path, and the same bytes', () => {
+    assertBoth(fc.property(shapeScene, camera, (s, cam) => {
+      const twice = new Set(s.objects).size !== s.objects.length;
+      expect(prepareFrame(s, cam).packed === null).toBe(twice);
+      expect(firstDifference(render(s, cam), pixelByPixel(s, cam))).toBe(-1);
+    }), { ...RUNS, numRuns: 200 });
   });
 
   it("a ProgressiveRenderer's finished buffer is render()'s, in every order", () => {
