@@ -335,6 +335,24 @@ describe('the fast path at the deepest bounce a scene allows', () => {
   });
 });
 
+describe('a mesh that mirrors and shades itself', () => {
+  it("a corner of a room as one mesh: its mirror and shadow rays meet its own triangles, yet every normal is trace.js's", () => {
+    // A floor and two walls, two triangles each; the mesh remembers the triangle its last ray hit.
+    const room = new Mesh({
+      positions: [[-4, -2, -4], [4, -2, -4], [4, -2, -14], [-4, -2, -14], [-4, 5, -14], [4, 5, -14], [-4, 5, -4]],
+      cells: [[0, 1, 2], [0, 2, 3], [3, 2, 5], [3, 5, 4], [0, 3, 4], [0, 4, 6]],
+    }, { color: [0.8, 0.7, 0.6], reflection: 0.6, specular: 0.3 });
+    const scene = new Scene({ background: [0.1, 0.2, 0.4], ambient: 0.05, maxDepth: 4 })
+      .add(room)
+      .add(new Cylinder([1, -1, -9], 1, 2, { color: [0.2, 0.6, 0.9], reflection: 0.3 }))
+      .add(new PointLight([-6, 3, -2])) // outside the room's open side: many shadow rays cross its walls
+      .add(new PointLight([2, 4, -6]));
+    const cam = new Camera({ width: 40, height: 30, fov: 70 });
+    expect(prepareFrame(scene, cam).packed).not.toBeNull();
+    expect(firstDifference(render(scene, cam), pixelByPixel(scene, cam))).toBe(-1);
+  });
+});
+
 describe('a scene with the same shape added twice (a slip in a sketch)', () => {
   it('gives trace.js\'s bytes: a glowing ball added twice still does not light itself', () => {
     const lamp = new Sphere([0, 2, -10], 1.5, { color: [0.5, 0.5, 0.5], emission: [1, 0.9, 0.6] });
