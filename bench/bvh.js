@@ -6,7 +6,10 @@
  *     follow log(n), not n (goal ≤ 4×).
  * (2) A 320×240 frame of the Stanford bunny (the `bunny` package, 3674
  *     triangles) on one thread: primary rays, nearest hit, Lambert shading
- *     from one direction (goal ≤ 250 ms).
+ *     from one direction (goal ≤ 250 ms); then the same view as a Scene
+ *     through render(), the kernel (lib/kernel.js) against trace.js (the
+ *     mesh's `hit` replaced by itself, which packScene refuses): full
+ *     shading with one point light and shadow rays.
  *
  * Timing figures are printed, never asserted: they depend on the machine.
  * The load average printed beside them says how busy it was.
@@ -20,6 +23,10 @@ import { Camera } from '../lib/camera.js';
 import { Ray } from '../lib/ray.js';
 import { Vec3 } from '../lib/vec3.js';
 import { Mesh } from '../lib/shapes/mesh.js';
+import { Scene } from '../lib/scene.js';
+import { PointLight } from '../lib/lights.js';
+import { render } from '../lib/render.js';
+import { packScene } from '../lib/kernel.js';
 
 const ROUNDS = 15;
 const WARMUP = 3;
@@ -136,9 +143,27 @@ export function runBvhBench() {
   for (let i = 0; i < target.length; i += 4) if (target[i] !== 30) covered++;
   console.log(`  bunny, ${mesh.triangleCount} triangles, 320×240, primary rays + Lambert: ${median(times).toFixed(1)} ms/frame median` +
     ` (min ${Math.min(...times).toFixed(1)}, max ${Math.max(...times).toFixed(1)}; goal ≤ 250 ms), the bunny on ${covered} pixels`);
+  bunnyRender(view);
   const bytes = [1, 2, 3, 4, 5].map(() => Number(execFileSync(process.execPath, [fileURLToPath(new URL('./bvh-allocation.js', import.meta.url))]).toString()));
   console.log(`  heap bytes per ray, Mesh#hit on the bunny, 5 fresh processes: ${bytes.map((b) => b.toFixed(1)).join(', ')} (goal: 0; median ${median(bytes).toFixed(1)})`);
   console.log(`  load average ${startLoad.toFixed(1)} at the start, ${loadavg()[0].toFixed(1)} at the end`);
+}
+
+/** The bunny's frame through render(): the kernel, and trace.js for the same scene, timed in turns; the same bytes checked. */
+function bunnyRender(view) {
+  const scene = (fast) => {
+    const mesh = new Mesh(bunny, { color: [0.9, 0.8, 0.7] });
+    if (!fast) mesh.hit = Mesh.prototype.hit.bind(mesh); // the same test, but the kernel's no longer to know: trace.js
+    return new Scene({ background: [0.12, 0.12, 0.12], ambient: 0.1 }).add(mesh).add(new PointLight([10, 20, 30]));
+  };
+  const kernel = scene(true), plain = scene(false);
+  if (!packScene(kernel) || packScene(plain)) throw new Error('bench/bvh.js: the kernel should pack the one scene and not the other');
+  const fast = new Uint8ClampedArray(320 * 240 * 4), slow = new Uint8ClampedArray(320 * 240 * 4);
+  const cases = [{ run: () => render(kernel, view, fast) }, { run: () => render(plain, view, slow) }];
+  const [kernelMs, traceMs] = timeInTurns(cases, ROUNDS).map(median);
+  const same = fast.every((v, i) => v === slow[i]);
+  console.log(`  bunny through render(), 320×240, one light with shadows: kernel ${kernelMs.toFixed(1)} ms/frame median,` +
+    ` trace.js ${traceMs.toFixed(1)} ms (${(traceMs / kernelMs).toFixed(2)}×), ${same ? 'the same bytes' : 'DIFFERENT BYTES'}`);
 }
 
 if (import.meta.url === pathToFileURL(process.argv[1]).href) runBvhBench();

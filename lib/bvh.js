@@ -58,10 +58,22 @@ export class BVH {
    * to the lowest item index, as in a loop over every item.
    */
   nearest(ray, tMin, corners, stats = null) {
-    const o = ray.origin, d = ray.direction, ox = o.x, oy = o.y, oz = o.z;
-    const ix = 1 / d.x, iy = 1 / d.y, iz = 1 / d.z;
+    const o = ray.origin, d = ray.direction, state = this.state;
+    state[0] = o.x; state[1] = o.y; state[2] = o.z; state[3] = d.x; state[4] = d.y; state[5] = d.z; state[6] = tMin;
+    return this.walk(corners, stats);
+  }
+
+  /** `nearest` for the ray from (ox, oy, oz) along (dx, dy, dz), in numbers (render()'s kernel calls it so). */
+  nearestAlong(ox, oy, oz, dx, dy, dz, tMin, corners) {
+    const state = this.state;
+    state[0] = ox; state[1] = oy; state[2] = oz; state[3] = dx; state[4] = dy; state[5] = dz; state[6] = tMin;
+    return this.walk(corners, null);
+  }
+
+  /** `nearest` for the ray in state[0…6]: its numbers pass in a Float64Array, never boxed. */
+  walk(corners, stats) {
     const { boxes, nodes, order, stack, stackT, state } = this;
-    state[0] = ox; state[1] = oy; state[2] = oz; state[3] = d.x; state[4] = d.y; state[5] = d.z; state[6] = tMin;
+    const ox = state[0], oy = state[1], oz = state[2], ix = 1 / state[3], iy = 1 / state[4], iz = 1 / state[5];
     state[7] = Infinity; state[8] = -1;
     const tLo = state[6]; // tMin as a float64 from here on (a tagged argument mixed into the slab tests' numbers would box them)
     let top = 0;

@@ -5,7 +5,8 @@
  * variables, so no step reads through a chain of objects.
  *
  * Same bytes as trace.js, proven by tests/unit/same-bytes.test.js over random
- * scenes (spheres, planes, boxes, lights, mirrors, glass). trace.js stays the
+ * scenes (spheres, planes, boxes, cylinders, cones, triangles, meshes, lights,
+ * mirrors, glass). trace.js stays the
  * lesson's readable version and the one the inspector runs; a formula changed
  * in lib/optics.js changes both. Full shading of the class scene is 1.17–1.2× faster
  * this way (docs/performance.md). A shape with a `hit` or `normalAt` of its
@@ -15,7 +16,7 @@
  * and normal in numbers (its static `packed`, layout in lib/shapes/packed.js).
  */
 import { plainClassOf, ballOf } from './shapes/index.js';
-import { SHAPE, KIND, P, N, scratchNumbers } from './shapes/packed.js';
+import { SHAPE, KIND, P, N, scratchNumbers, sideTables } from './shapes/packed.js';
 import { reflectInto } from './vec3.js';
 import { lambert, specular, lightShare, spotShare, falloff, refract, fresnel as fresnelShare, mix } from './optics.js';
 
@@ -69,6 +70,8 @@ export class PackedScene {
     this.shapes = new Float64Array(objects.length * SHAPE);
     this.materials = new Float64Array(objects.length * MATERIAL);
     this.index = new Map(objects.map((object, i) => [object, i]));
+    /** What shapes of more than six numbers keep beside them (lib/shapes/packed.js): a triangle's, a mesh's. */
+    this.tables = [];
     objects.forEach((object, i) => this.#packShape(object, i));
     this.lightCount = lights.length;
     this.lights = new Float64Array(lights.length * LIGHT);
@@ -114,7 +117,7 @@ export class PackedScene {
   /** Shape i's numbers (its class packs them) and its material's into `shapes` and `materials`. */
   #packShape(object, i) {
     const s = i * SHAPE, m = object.material, kind = kindIndex(object.constructor);
-    KINDS[kind].pack(object, this.shapes, s);
+    KINDS[kind].pack(object, this.shapes, s, this.tables);
     this.shapes[s + KIND] = kind;
     this.materials.set([...m.color, ...m.emission, m.reflection, m.transparency, m.ior, m.specular, m.shininess], i * MATERIAL);
   }
@@ -156,6 +159,7 @@ export function packScene(scene) {
  * @returns {Float64Array} [r, g, b] in its first three entries (reused: read it before the next call)
  */
 export function tracePrimary(k, origin, direction, candidates, from, to) {
+  sideTables.current = k.tables;
   rays[0] = origin.x; rays[1] = origin.y; rays[2] = origin.z;
   rays[3] = direction.x; rays[4] = direction.y; rays[5] = direction.z;
   traceRay(k, 0, 0, candidates, from, to);

@@ -8,9 +8,11 @@
  */
 import { Vec3, set } from '../vec3.js';
 import { EPSILON } from '../constants.js';
+import { P, N } from './packed.js';
 import { AxialShape, solveQuadratic, recordSide, capCrossing, withinSpan, orNull } from './axial.js';
 
 const _roots = new Float64Array(2);
+const _normal = new Float64Array(3);
 
 export class Cone extends AxialShape {
   /**
@@ -66,13 +68,9 @@ export class Cone extends AxialShape {
    * where ρ is the distance from the axis; straight up at the apex.
    */
   normalAt(point, out = new Vec3()) {
-    const c = this.center, k = this.radius / this.height, x = point.x - c.x, z = point.z - c.z;
-    const rho = Math.sqrt(x * x + z * z);
-    const toSide = Math.abs(rho - k * (c.y + this.height / 2 - point.y)) / Math.sqrt(1 + k * k);
-    if (this.capped && Math.abs(point.y - (c.y - this.height / 2)) < toSide) return set(out, 0, -1, 0);
-    if (rho === 0) return set(out, 0, 1, 0);
-    const length = rho * Math.sqrt(1 + k * k); // |(x, kρ, z)|
-    return set(out, x / length, (k * rho) / length, z / length);
+    const c = this.center;
+    coneNormal(c.x, c.y, c.z, this.radius, this.height, this.capped, point.x, point.y, point.z, _normal, 0);
+    return set(out, _normal[0], _normal[1], _normal[2]);
   }
 
   /** The record's lines for the inspector: the quadratic of the side, the caps' crossings, the nearest hit and the part it is on. */
@@ -87,6 +85,36 @@ export class Cone extends AxialShape {
 
   /** Its type in scene JSON. */
   static get type() { return 'cone'; }
+
+  /** Its packed form for render()'s kernel (lib/shapes/packed.js): cx cy cz radius height capped (1 or 0). */
+  static get packed() { return PACKED; }
+}
+
+const PACKED = Object.freeze({
+  pack(cone, shapes, at) {
+    const c = cone.center;
+    shapes.set([c.x, c.y, c.z, cone.radius, cone.height, cone.capped ? 1 : 0], at);
+  },
+  hit(s, b, ox, oy, oz, dx, dy, dz, tMin) {
+    return coneHit(s[b], s[b + 1], s[b + 2], s[b + 3], s[b + 4], s[b + 5] === 1, ox, oy, oz, dx, dy, dz, tMin);
+  },
+  normal(s, b, surface) {
+    coneNormal(s[b], s[b + 1], s[b + 2], s[b + 3], s[b + 4], s[b + 5] === 1, surface[P], surface[P + 1], surface[P + 2], surface, N);
+  },
+});
+
+/**
+ * Cone#normalAt in numbers only (and the kernel's): the outward unit normal
+ * at point (px, py, pz) into out[at…at+2].
+ */
+export function coneNormal(cx, cy, cz, radius, height, capped, px, py, pz, out, at) {
+  const k = radius / height, x = px - cx, z = pz - cz;
+  const rho = Math.sqrt(x * x + z * z);
+  const toSide = Math.abs(rho - k * (cy + height / 2 - py)) / Math.sqrt(1 + k * k);
+  if (capped && Math.abs(py - (cy - height / 2)) < toSide) { out[at] = 0; out[at + 1] = -1; out[at + 2] = 0; return; }
+  if (rho === 0) { out[at] = 0; out[at + 1] = 1; out[at + 2] = 0; return; }
+  const length = rho * Math.sqrt(1 + k * k); // |(x, kρ, z)|
+  out[at] = x / length; out[at + 1] = (k * rho) / length; out[at + 2] = z / length;
 }
 
 /**

@@ -6,9 +6,11 @@
  */
 import { Vec3, set } from '../vec3.js';
 import { EPSILON } from '../constants.js';
+import { P, N } from './packed.js';
 import { AxialShape, solveQuadratic, recordSide, capCrossing, withinSpan, orNull } from './axial.js';
 
 const _roots = new Float64Array(2);
+const _normal = new Float64Array(3);
 
 export class Cylinder extends AxialShape {
   /**
@@ -61,13 +63,9 @@ export class Cylinder extends AxialShape {
 
   /** The outward unit normal at a surface point: up or down on a cap, straight out from the axis on the side. */
   normalAt(point, out = new Vec3()) {
-    const c = this.center, x = point.x - c.x, z = point.z - c.z;
-    const rho = Math.sqrt(x * x + z * z);
-    const toSide = Math.abs(rho - this.radius);
-    const toTop = Math.abs(point.y - (c.y + this.height / 2)), toBottom = Math.abs(point.y - (c.y - this.height / 2));
-    if (this.capped && toTop < toSide && toTop <= toBottom) return set(out, 0, 1, 0);
-    if (this.capped && toBottom < toSide) return set(out, 0, -1, 0);
-    return rho > 0 ? set(out, x / rho, 0, z / rho) : set(out, 1, 0, 0);
+    const c = this.center;
+    cylinderNormal(c.x, c.y, c.z, this.radius, this.height, this.capped, point.x, point.y, point.z, _normal, 0);
+    return set(out, _normal[0], _normal[1], _normal[2]);
   }
 
   /** The record's lines for the inspector: the quadratic of the side, the caps' crossings, the nearest hit and the part it is on. */
@@ -79,6 +77,37 @@ export class Cylinder extends AxialShape {
 
   /** Its type in scene JSON. */
   static get type() { return 'cylinder'; }
+
+  /** Its packed form for render()'s kernel (lib/shapes/packed.js): cx cy cz radius height capped (1 or 0). */
+  static get packed() { return PACKED; }
+}
+
+const PACKED = Object.freeze({
+  pack(cylinder, shapes, at) {
+    const c = cylinder.center;
+    shapes.set([c.x, c.y, c.z, cylinder.radius, cylinder.height, cylinder.capped ? 1 : 0], at);
+  },
+  hit(s, b, ox, oy, oz, dx, dy, dz, tMin) {
+    return cylinderHit(s[b], s[b + 1], s[b + 2], s[b + 3], s[b + 4], s[b + 5] === 1, ox, oy, oz, dx, dy, dz, tMin);
+  },
+  normal(s, b, surface) {
+    cylinderNormal(s[b], s[b + 1], s[b + 2], s[b + 3], s[b + 4], s[b + 5] === 1, surface[P], surface[P + 1], surface[P + 2], surface, N);
+  },
+});
+
+/**
+ * Cylinder#normalAt in numbers only (and the kernel's): the outward unit
+ * normal at point (px, py, pz) into out[at…at+2].
+ */
+export function cylinderNormal(cx, cy, cz, radius, height, capped, px, py, pz, out, at) {
+  const x = px - cx, z = pz - cz;
+  const rho = Math.sqrt(x * x + z * z);
+  const toSide = Math.abs(rho - radius);
+  const toTop = Math.abs(py - (cy + height / 2)), toBottom = Math.abs(py - (cy - height / 2));
+  if (capped && toTop < toSide && toTop <= toBottom) { out[at] = 0; out[at + 1] = 1; out[at + 2] = 0; return; }
+  if (capped && toBottom < toSide) { out[at] = 0; out[at + 1] = -1; out[at + 2] = 0; return; }
+  if (rho > 0) { out[at] = x / rho; out[at + 1] = 0; out[at + 2] = z / rho; return; }
+  out[at] = 1; out[at + 1] = 0; out[at + 2] = 0;
 }
 
 /**

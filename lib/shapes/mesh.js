@@ -13,6 +13,7 @@ import { intersectTriangle, FLAT } from './triangle.js';
 import { parseOBJ } from './obj.js';
 import { materialToJSON } from './json.js';
 import { meshTriangles } from './tessellate.js';
+import { P, N, sideTables } from './packed.js';
 
 export class Mesh {
   /**
@@ -169,7 +170,29 @@ export class Mesh {
     return [{ positions: o.positions, cells: o.cells }, material];
   }
 
+  /** Its packed form for render()'s kernel (lib/shapes/packed.js): its side table's index (the mesh itself, for its tree). */
+  static get packed() { return PACKED; }
 }
+
+/** normalAt's point and normal for the packed form (no allocation per ray). */
+const _point = new Vec3(), _normal = new Vec3();
+
+const PACKED = Object.freeze({
+  pack(mesh, shapes, at, tables) {
+    shapes[at] = tables.push(mesh) - 1;
+  },
+  /** Mesh#hit in numbers: the same walk of its tree, remembering the triangle as hit does. */
+  hit(s, b, ox, oy, oz, dx, dy, dz, tMin) {
+    const mesh = sideTables.current[s[b]], bvh = mesh.bvh;
+    mesh.lastTriangle = bvh.nearestAlong(ox, oy, oz, dx, dy, dz, tMin, mesh.corners);
+    return bvh.t;
+  },
+  /** Mesh#normalAt itself, at the point in `surface` (the last hit's triangle, as in trace.js). */
+  normal(s, b, surface) {
+    const n = sideTables.current[s[b]].normalAt(set(_point, surface[P], surface[P + 1], surface[P + 2]), _normal);
+    surface[N] = n.x; surface[N + 1] = n.y; surface[N + 2] = n.z;
+  },
+});
 
 /** `data`'s positions and cells, checked and copied as plain lists; an error names the field. */
 function checkData(data) {

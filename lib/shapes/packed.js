@@ -5,10 +5,18 @@
  * and neither imports the other.
  *
  * A shape class that the kernel can run has a static `packed`:
- * `{ pack(shape, shapes, at), hit(shapes, at, ox, oy, oz, dx, dy, dz, tMin), normal(shapes, at, surface) }`:
+ * `{ pack(shape, shapes, at, tables), hit(shapes, at, ox, oy, oz, dx, dy, dz, tMin), normal(shapes, at, surface) }`:
  * `pack` writes at most KIND numbers from `shapes[at]`; `hit` is its `hit`
  * in numbers (the same t, bit for bit); `normal` reads the point at
  * `surface[P…]` and writes its `normalAt` into `surface[N…]`.
+ *
+ * A shape that needs more than six numbers (a triangle's corner, edges and
+ * normal; a mesh's tree) pushes what it needs onto the scene's side `tables`
+ * (a list, one per packed scene) and writes its index among its own numbers.
+ * Its `hit` and `normal` find that list in `sideTables.current`: the kernel
+ * sets it once per primary ray (one store; the hit tests of spheres, planes
+ * and boxes never read it), rather than pass one more argument to every hit
+ * test of every shape.
  */
 
 /** Numbers per shape in the kernel's `shapes` array: up to six of the shape's own, then its kind. */
@@ -16,6 +24,9 @@ export const SHAPE = 7;
 
 /** Where among a shape's numbers its kind lies: the kernel's index of its class's `packed`. */
 export const KIND = 6;
+
+/** The side tables of the scene the kernel is tracing now (see above). */
+export const sideTables = { current: [] };
 
 /** Where the hit point P and the unit normal N lie in the kernel's `surface` record. */
 export const P = 0, N = 3;

@@ -11,6 +11,7 @@ import { toVec3, Vec3, sub, cross, dot, length, normalize } from '../vec3.js';
 import { shapeOptions } from '../material.js';
 import { EPSILON } from '../constants.js';
 import { vector, materialToJSON } from './json.js';
+import { N, sideTables } from './packed.js';
 
 /**
  * A determinant this small, relative to |e1|·|e2|·|Rd| (its size when the
@@ -99,7 +100,24 @@ export class Triangle {
     return new Triangle(o.a, o.b, o.c, material);
   }
 
+  /** Its packed form for render()'s kernel (lib/shapes/packed.js): its side table's index (corner a, edges e1 e2, its normal). */
+  static get packed() { return PACKED; }
 }
+
+const PACKED = Object.freeze({
+  pack(triangle, shapes, at, tables) {
+    const { a, b, c } = triangle, n = triangle.normalAt(a); // the same normal everywhere, normalAt's to the last bit
+    shapes[at] = tables.push(Float64Array.of(a.x, a.y, a.z, b.x - a.x, b.y - a.y, b.z - a.z, c.x - a.x, c.y - a.y, c.z - a.z, n.x, n.y, n.z)) - 1;
+  },
+  hit(s, b, ox, oy, oz, dx, dy, dz, tMin) {
+    const t = sideTables.current[s[b]];
+    return triangleHit(t[0], t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8], ox, oy, oz, dx, dy, dz, tMin);
+  },
+  normal(s, b, surface) {
+    const t = sideTables.current[s[b]];
+    surface[N] = t[9]; surface[N + 1] = t[10]; surface[N + 2] = t[11];
+  },
+});
 
 /** A RangeError when a, b, c have (next to) no area; `where` says which triangle ("cells[3] " or ""). */
 export function checkArea(a, b, c, where) {

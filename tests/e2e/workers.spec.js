@@ -3,14 +3,14 @@
 import { test, expect } from '@playwright/test';
 import { watchConsole, waitForDone } from './helpers.js';
 
-test('workers render the class scene exactly as the main thread does', async ({ page }) => {
+test('workers render the class scene, and cylinders, cones, triangles and a mesh, exactly as the main thread does', async ({ page }) => {
   const errors = watchConsole(page);
   await page.goto('/tests/e2e/pages/workers.html');
   await waitForDone(page);
   expect(await page.evaluate(() => window.workersAvailable)).toBe(true);
   const results = await page.evaluate(() => window.results);
   expect(results.error).toBeUndefined();
-  expect(results).toHaveLength(6);
+  expect(results).toHaveLength(9);
   for (const r of results) {
     expect(r.length, `${r.name}, ${r.workers} worker(s)`).toBe(r.expectedLength);
     expect(r.differing, `${r.name}, ${r.workers} worker(s): bytes that differ`).toBe(0);

@@ -1,5 +1,5 @@
 // The renderer's shortcuts must never show: over random scenes (spheres,
-// planes, boxes, point lights and emissive shapes, mirrors, glass, shadows and
+// planes, boxes, cylinders, cones, triangles, meshes, point lights and emissive shapes, mirrors, glass, shadows and
 // highlights on or off) and random cameras, render() — which tests each
 // primary ray only against its tile's candidate shapes (lib/bounds.js) — gives
 // the very bytes of the plain reference, every pixel traced against every
@@ -8,7 +8,7 @@
 // inspector, which records every step of the same trace, gives render()'s colour.
 import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
-import { Camera, Scene, Sphere, Plane, Box, PointLight, SpotLight, AreaLight, render, inspectPixel } from '../../lib/index.js';
+import { Camera, Scene, Sphere, Plane, Box, Cylinder, Cone, Triangle, Mesh, PointLight, SpotLight, AreaLight, render, inspectPixel } from '../../lib/index.js';
 import { renderPixel, prepareFrame } from '../../lib/render.js';
 import { packScene, tracePrimary, outOfReach } from '../../lib/kernel.js';
 import { trace } from '../../lib/trace.js';
@@ -69,6 +69,27 @@ const areaLight = fc.tuple(point(20), between(0.1, 4), fc.constantFrom(1, 4, 9),
   .map(([center, radius, samples, normal, c, intensity, k]) => new AreaLight(center, radius, { samples, normal, color: c, intensity, attenuation: k }));
 const light = fc.oneof({ weight: 3, arbitrary: pointLight }, { weight: 1, arbitrary: spotLight }, { weight: 1, arbitrary: areaLight });
 
+/** Cylinders and cones, capped and open. */
+const axial = (Shape) => fc.tuple(place, between(0.1, 3), between(0.1, 4), fc.boolean(), material)
+  .map(([center, radius, height, capped, m]) => new Shape(center, radius, height, { ...m, capped }));
+const cylinder = axial(Cylinder), cone = axial(Cone);
+
+/** Three corners near a place, kept only when they span an area (a Triangle refuses a flat one). */
+const corners = fc.tuple(place, point(3), point(3)).filter(([, u, v]) => {
+  const cx = u[1] * v[2] - u[2] * v[1], cy = u[2] * v[0] - u[0] * v[2], cz = u[0] * v[1] - u[1] * v[0];
+  return Math.hypot(cx, cy, cz) > 1e-3 * Math.hypot(...u) * Math.hypot(...v) && Math.hypot(...u) > 0.05 && Math.hypot(...v) > 0.05;
+}).map(([[x, y, z], u, v]) => [[x, y, z], [x + u[0], y + u[1], z + u[2]], [x + v[0], y + v[1], z + v[2]]]);
+const triangle = fc.tuple(corners, material).map(([[a, b, c], m]) => new Triangle(a, b, c, m));
+
+/** A small mesh: a tetrahedron scaled and placed, or a few separate triangles (enough for the tree to split). */
+const tetrahedron = fc.tuple(place, between(0.2, 3), material).map(([[x, y, z], r, m]) => new Mesh({
+  positions: [[x, y, z], [x + r, y, z], [x, y + r, z], [x, y, z + r]], cells: [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
+}, m));
+const soup = fc.tuple(fc.array(corners, { minLength: 1, maxLength: 12 }), material).map(([list, m]) => new Mesh({
+  positions: list.flat(), cells: list.map((_, i) => [3 * i, 3 * i + 1, 3 * i + 2]),
+}, m));
+const mesh = fc.oneof(tetrahedron, soup);
+
 /** A scene's switches, and its items drawn from `item`. */
 const sceneOf = (item) => fc.record({
   background: color,
@@ -84,6 +105,11 @@ const sceneOf = (item) => fc.record({
   .reduce((s, it) => s.add(it), new Scene(options)));
 
 const scene = sceneOf(fc.oneof({ weight: 5, arbitrary: sphere }, { weight: 1, arbitrary: plane }, { weight: 3, arbitrary: box }, { weight: 2, arbitrary: light }));
+/** The course's other shapes among spheres, planes and boxes: cylinders, cones, triangles and small meshes. */
+const shapeScene = sceneOf(fc.oneof(
+  { weight: 2, arbitrary: sphere }, { weight: 1, arbitrary: plane }, { weight: 1, arbitrary: box }, { weight: 2, arbitrary: light },
+  { weight: 2, arbitrary: cylinder }, { weight: 2, arbitrary: cone }, { weight: 2, arbitrary: triangle }, { weight: 2, arbitrary: mesh },
+));
 /** The lesson's scenes: spheres only (the fast path then skips asking each shape its kind), lit by their glow and point lights. */
 const sphereScene = sceneOf(fc.oneof({ weight: 3, arbitrary: sphere }, { weight: 1, arbitrary: light }));
 
@@ -199,6 +225,14 @@ describe('the same bytes as the plain reference, for random scenes and cameras (
     }), RUNS);
   });
 
+  it('render() of scenes with cylinders, cones, triangles and meshes: the fast path, and the same bytes', () => {
+    assertBoth(fc.property(shapeScene, camera, (s, cam) => {
+      const twice = new Set(s.objects).size !== s.objects.length;
+      expect(prepareFrame(s, cam).packed === null).toBe(twice);
+      expect(firstDifference(render(s, cam), pixelByPixel(s, cam))).toBe(-1);
+    }), { ...RUNS, numRuns: 200 });
+  });
+
   it("a ProgressiveRenderer's finished buffer is render()'s, in every order", () => {
     assertBoth(fc.property(scene, camera, (s, cam) => {
       const expected = render(s, cam);
@@ -304,6 +338,24 @@ describe('the fast path at the deepest bounce a scene allows', () => {
       .add(new Sphere([0, 0, -4], 1.5, { color: [1, 0.4, 0.4], transparency: 0.8, reflection: 0.2, ior: 1.5 }))
       .add(new PointLight([2, 5, 0]));
     const cam = new Camera({ width: 24, height: 18, fov: 50 });
+    expect(prepareFrame(scene, cam).packed).not.toBeNull();
+    expect(firstDifference(render(scene, cam), pixelByPixel(scene, cam))).toBe(-1);
+  });
+});
+
+describe('a mesh that mirrors and shades itself', () => {
+  it("a corner of a room as one mesh: its mirror and shadow rays meet its own triangles, yet every normal is trace.js's", () => {
+    // A floor and two walls, two triangles each; the mesh remembers the triangle its last ray hit.
+    const room = new Mesh({
+      positions: [[-4, -2, -4], [4, -2, -4], [4, -2, -14], [-4, -2, -14], [-4, 5, -14], [4, 5, -14], [-4, 5, -4]],
+      cells: [[0, 1, 2], [0, 2, 3], [3, 2, 5], [3, 5, 4], [0, 3, 4], [0, 4, 6]],
+    }, { color: [0.8, 0.7, 0.6], reflection: 0.6, specular: 0.3 });
+    const scene = new Scene({ background: [0.1, 0.2, 0.4], ambient: 0.05, maxDepth: 4 })
+      .add(room)
+      .add(new Cylinder([1, -1, -9], 1, 2, { color: [0.2, 0.6, 0.9], reflection: 0.3 }))
+      .add(new PointLight([-6, 3, -2])) // outside the room's open side: many shadow rays cross its walls
+      .add(new PointLight([2, 4, -6]));
+    const cam = new Camera({ width: 40, height: 30, fov: 70 });
     expect(prepareFrame(scene, cam).packed).not.toBeNull();
     expect(firstDifference(render(scene, cam), pixelByPixel(scene, cam))).toBe(-1);
   });
