@@ -87,7 +87,8 @@ function addSamples(record, scene, camera) {
  * the light (some light through), `transmission` their sum (the share of the
  * disc seen, × samples), `contribution` the sum of what they added, `rays` the
  * per-point entries themselves (still in `hit.lights` too), and `indices`
- * where they sit in `hit.lights`. The same for every bounce's hit.
+ * where they sit in `hit.lights`; each of those entries gets its point's
+ * `sample` number. The same for every bounce's hit.
  */
 export function groupAreaLights(hit) {
   if (!hit) return;
@@ -96,7 +97,7 @@ export function groupAreaLights(hit) {
     if (!(l.light instanceof AreaLight)) return; // a point or spot light: its own row
     let g = groups.get(l.light);
     if (!g) groups.set(l.light, g = { light: l.light, samples: 0, reached: 0, transmission: 0, contribution: [0, 0, 0], rays: [], indices: [] });
-    g.samples++;
+    l.sample = g.samples++; // its point's number: scene.lights holds them in the disc's order
     if (l.transmission > 0) g.reached++;
     g.transmission += l.transmission;
     for (let c = 0; c < 3; c++) g.contribution[c] += l.contribution[c];
