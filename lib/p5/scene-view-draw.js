@@ -11,7 +11,7 @@ import { buildMeshes, shapesKey } from './scene-view-mesh.js';
 import { INK, MUTED, RAY, NORMAL, LIT, SHADOW, CONSTRUCT } from './diagrams/style.js';
 
 /** Colours of the kinds of ray (shadow rays as in the 2D diagrams). */
-export const RAY_COLORS = { primary: RAY, normal: NORMAL, lit: LIT, shadow: SHADOW, away: MUTED, reflection: CONSTRUCT, refraction: '#0f8b8d', photon: '#e07b00', sample: RAY, area: '#d99a00' };
+export const RAY_COLORS = { primary: RAY, normal: NORMAL, lit: LIT, shadow: SHADOW, away: MUTED, reflection: CONSTRUCT, refraction: '#0f8b8d', photon: '#e07b00', sample: '#7b3fbf', area: '#b7791f' };
 /** Texels per traced pixel on the image plane's texture, at most. */
 const MAX_TEXTURE = 512;
 
@@ -131,7 +131,7 @@ export function drawSegment(g, s, radius) {
     return;
   }
   const color = RAY_COLORS[s.kind];
-  if (s.kind === 'sample') { // a sub-pixel ray: thin, so the centre ray stays the one that stands out
+  if (s.kind === 'sample') { // a sub-pixel ray: thin and violet, so the centre ray stays the one that stands out
     line3(g, s.from, s.to, color, 1);
     if (s.hit) dot3(g, s.to, color, radius * 0.007);
     return;
