@@ -10,6 +10,7 @@ import { pixelCoordinate } from './check.js';
 import { shapeName, shapeNames } from './scene.js';
 import { sampleOffsets } from './camera.js';
 import { clamp } from './numbers.js';
+import { AreaLight } from './area-light.js';
 
 const _bytes = new Uint8ClampedArray(4);
 
@@ -51,6 +52,7 @@ export function inspectPixel(scene, camera, x, y) {
   const color = trace(scene, ray, [0, 0, 0], steps);
   writePixel(_bytes, 0, color);
   if (steps.hit) steps.hit.name = shapeName(steps.hit.object, scene.objects);
+  groupAreaLights(steps.hit);
   const record = { x, y, h, v, ray, tests, records, hit: steps.hit, tracedColor: color, light: color, color: [_bytes[0], _bytes[1], _bytes[2]] };
   if (camera.samples > 1) addSamples(record, scene, camera);
   return record;
@@ -58,8 +60,8 @@ export function inspectPixel(scene, camera, x, y) {
 
 /**
  * Several rays per pixel: `record.samples`, one entry per sub-pixel ray
- * `{ dx, dy, ray, h, v, hit, color }` (its offset from the pixel's centre, what
- * it hit, its colour as bytes), and `record.color` becomes their average, the
+ * `{ dx, dy, ray, h, v, hit, t, color }` (its offset from the pixel's centre, what
+ * it hit and how far along (null for a miss), its colour as bytes), and `record.color` becomes their average, the
  * very bytes render() gives the pixel. The rest of the record (the tests, the
  * hit) stays the ray through the pixel's centre.
  */
@@ -71,10 +73,40 @@ function addSamples(record, scene, camera) {
     const steps = {}, light = trace(scene, ray, [0, 0, 0], steps);
     for (let c = 0; c < 3; c++) sum[c] += clamp(light[c], 0, 1);
     writePixel(_bytes, 0, light);
-    record.samples.push({ dx, dy, ray, h, v, hit: steps.hit ? shapeName(steps.hit.object, scene.objects) : null, color: [_bytes[0], _bytes[1], _bytes[2]] });
+    record.samples.push({ dx, dy, ray, h, v, hit: steps.hit ? shapeName(steps.hit.object, scene.objects) : null, t: steps.hit ? steps.hit.t : null, color: [_bytes[0], _bytes[1], _bytes[2]] });
   }
   writePixel(_bytes, 0, sum.map((c) => c / camera.samples));
   record.color = [_bytes[0], _bytes[1], _bytes[2]];
+}
+
+/**
+ * An area light casts one shadow ray per sample point, so the hit record has
+ * one `lights` entry per point. `hit.areaLights` gathers them, one entry per
+ * AreaLight, in the order it first appears: `{ light, samples, reached,
+ * transmission, contribution, rays }` — `reached` the shadow rays that got to
+ * the light (some light through), `transmission` their sum (the share of the
+ * disc seen, × samples), `contribution` the sum of what they added, `rays` the
+ * per-point entries themselves (still in `hit.lights` too), and `indices`
+ * where they sit in `hit.lights`; each of those entries gets its point's
+ * `sample` number. The same for every bounce's hit.
+ */
+export function groupAreaLights(hit) {
+  if (!hit) return;
+  const groups = new Map();
+  hit.lights.forEach((l, index) => {
+    if (!(l.light instanceof AreaLight)) return; // a point or spot light: its own row
+    let g = groups.get(l.light);
+    if (!g) groups.set(l.light, g = { light: l.light, samples: 0, reached: 0, transmission: 0, contribution: [0, 0, 0], rays: [], indices: [] });
+    l.sample = g.samples++; // its point's number: scene.lights holds them in the disc's order
+    if (l.transmission > 0) g.reached++;
+    g.transmission += l.transmission;
+    for (let c = 0; c < 3; c++) g.contribution[c] += l.contribution[c];
+    g.rays.push(l);
+    g.indices.push(index);
+  });
+  hit.areaLights = [...groups.values()];
+  groupAreaLights(hit.reflection?.hit);
+  groupAreaLights(hit.refraction?.hit);
 }
 
 /** A shape's record as `[label, value]` lines: the shape's own `recordRows`, else the record's numbers by name. */

@@ -292,20 +292,54 @@ function hitSection(r) {
 function lightsSection(r) {
   const hit = r.hit;
   if (!hit || hit.lights.length === 0) return element('div', { hidden: '' });
-  const rows = hit.lights.map((l, i) => {
-    const at = { 'data-light': String(i) };
-    const status = !l.facing ? 'faces away' : l.beam === 0 ? 'outside its cone' : l.inShadow ? (l.transmission > 0 ? 'partly shadowed' : 'in shadow') : 'lit';
-    const added = l.contribution;
-    return element('tr', { class: `rt-light-${status.replace(' ', '-')}` },
-      element('td', {}, nameValue('light', nameOf(l.light, `light ${i + 1}`), at)),
-      element('td', {}, value('cos', l.cos, at)),
-      element('td', {}, element('span', { class: 'rt-value', 'data-field': 'in-shadow', 'data-value': String(l.inShadow), ...at }, status),
-        ...(l.attenuation > 0 ? [' ', element('span', { class: 'rt-value', 'data-field': 'falloff', 'data-value': String(l.falloff), ...at }, `falloff ×${formatNumber(l.falloff)} at distance ${formatNumber(l.distance)}`)] : [])),
-      element('td', {},
-        element('span', { class: 'rt-swatch rt-swatch-small', style: `background: ${toHex(added.map((c) => Math.min(1, c) * 255))}` }),
-        element('span', { class: 'rt-value rt-wrap', 'data-field': 'contribution', 'data-value': added.join(','), ...at }, `(${added.map(formatNumber).join(', ')})`)));
-  });
-  return section('Lights (one shadow ray each)', table(['light', 'cos θ', 'shadow ray', 'adds (r, g, b)'], rows.length, (k) => rows[k], 'Lights'));
+  const grouped = new Set((hit.areaLights ?? []).flatMap((g) => g.indices));
+  const own = hit.lights.map((l, i) => i).filter((i) => !grouped.has(i));
+  const parts = [];
+  if (own.length) parts.push(table(['light', 'cos θ', 'shadow ray', 'adds (r, g, b)'], own.length, (k) => lightRow(hit.lights[own[k]], own[k]), 'Lights'));
+  (hit.areaLights ?? []).forEach((g, a) => parts.push(areaLightBlock(hit, g, a)));
+  return section(hit.areaLights?.length ? 'Lights (one shadow ray each; an area light, one per point of its disc)' : 'Lights (one shadow ray each)', ...parts);
+}
+
+/** One light's row: its name, cos θ, what its shadow ray met, what it added. */
+function lightRow(l, i) {
+  const at = { 'data-light': String(i) };
+  const status = !l.facing ? 'faces away' : l.beam === 0 ? 'outside its cone' : l.inShadow ? (l.transmission > 0 ? 'partly shadowed' : 'in shadow') : 'lit';
+  return element('tr', { class: `rt-light-${status.replace(' ', '-')}` },
+    element('td', {}, nameValue('light', nameOf(l.light, `light ${i + 1}`), at)),
+    element('td', {}, value('cos', l.cos, at)),
+    element('td', {}, element('span', { class: 'rt-value', 'data-field': 'in-shadow', 'data-value': String(l.inShadow), ...at }, status), ...falloffText(l, at)),
+    element('td', {}, ...addedCell(l.contribution, at)));
+}
+
+/** A fading light's factor where the point is, "falloff ×0.2 at distance 10"; nothing for a light that does not fade. */
+function falloffText(l, at) {
+  if (!(l.attenuation > 0)) return [];
+  return [' ', element('span', { class: 'rt-value', 'data-field': 'falloff', 'data-value': String(l.falloff), ...at }, `falloff ×${formatNumber(l.falloff)} at distance ${formatNumber(l.distance)}`)];
+}
+
+function addedCell(added, at) {
+  return [element('span', { class: 'rt-swatch rt-swatch-small', style: `background: ${toHex(added.map((c) => Math.min(1, c) * 255))}` }),
+    element('span', { class: 'rt-value rt-wrap', 'data-field': 'contribution', 'data-value': added.join(','), ...at }, `(${added.map(formatNumber).join(', ')})`)];
+}
+
+/**
+ * An area light as one line, "area light 'lamp': 11 of 16 shadow rays reached
+ * it (69 %)", what all its points added, and its shadow rays one by one in a
+ * closed <details> (a point per row, as the point lights' table).
+ */
+function areaLightBlock(hit, g, a) {
+  const at = { 'data-area-light': String(a) };
+  const name = g.light.name ? `area light '${g.light.name}'` : `area light ${a + 1}`;
+  const percent = Math.round((100 * g.reached) / g.samples);
+  const rows = g.indices;
+  return element('div', { class: 'rt-area-light', ...at },
+    element('p', {},
+      element('span', { class: 'rt-value', 'data-field': 'area-reached', 'data-value': `${g.reached}/${g.samples}`, ...at },
+        `${name}: ${g.reached} of ${g.samples} shadow rays reached it (${percent} %)`),
+      '; adds ', ...addedCell(g.contribution, at)),
+    element('details', { class: 'rt-area-rays' },
+      element('summary', {}, `its ${g.samples} shadow rays, one per point of the disc`),
+      table(['point', 'cos θ', 'shadow ray', 'adds (r, g, b)'], rows.length, (k) => lightRow({ ...hit.lights[rows[k]], light: { name: `point ${k + 1}` } }, rows[k]), `Shadow rays of ${name}`)));
 }
 
 function sphereCell(test) {

@@ -6,12 +6,12 @@
  */
 import p5 from 'p5';
 import { Vec3, sub, dot } from '../vec3.js';
-import { imagePlane } from '../rays3d.js';
+import { imagePlane, areaLightsOf, discOutline } from '../rays3d.js';
 import { buildMeshes, shapesKey } from './scene-view-mesh.js';
 import { INK, MUTED, RAY, NORMAL, LIT, SHADOW, CONSTRUCT } from './diagrams/style.js';
 
 /** Colours of the kinds of ray (shadow rays as in the 2D diagrams). */
-export const RAY_COLORS = { primary: RAY, normal: NORMAL, lit: LIT, shadow: SHADOW, away: MUTED, reflection: CONSTRUCT, refraction: '#0f8b8d', photon: '#e07b00' };
+export const RAY_COLORS = { primary: RAY, normal: NORMAL, lit: LIT, shadow: SHADOW, away: MUTED, reflection: CONSTRUCT, refraction: '#0f8b8d', photon: '#e07b00', sample: '#7b3fbf', area: '#b7791f' };
 /** Texels per traced pixel on the image plane's texture, at most. */
 const MAX_TEXTURE = 512;
 
@@ -131,8 +131,23 @@ export function drawSegment(g, s, radius) {
     return;
   }
   const color = RAY_COLORS[s.kind];
+  if (s.kind === 'sample') { // a sub-pixel ray: thin and violet, so the centre ray stays the one that stands out
+    line3(g, s.from, s.to, color, 1);
+    if (s.hit) dot3(g, s.to, color, radius * 0.007);
+    return;
+  }
   line3(g, s.from, s.to, color, s.kind === 'normal' ? 2.5 : s.depth === 0 ? 3 : 2);
   if (s.hit) dot3(g, s.to, color, radius * 0.012);
+}
+
+const _rims = new WeakMap();
+
+/** Each area light of the scene as the outline of its disc (its rim, worked out once per light). */
+export function drawAreaLights(g, scene) {
+  for (const light of areaLightsOf(scene)) {
+    if (!_rims.has(light)) _rims.set(light, discOutline(light));
+    outline(g, _rims.get(light), RAY_COLORS.area, 2);
+  }
 }
 
 /** The image plane at `planeDistance`, textured with `picture` (a p5.Graphics), and its outline. */

@@ -6,11 +6,17 @@
  * with the scene's radius `r`: a missing ray goes 2.5 r out, a normal is short.
  */
 import { inspectPixel } from '../explain.js';
-import { raySegments } from '../rays3d.js';
+import { raySegments, sampleSegments } from '../rays3d.js';
 
-/** The story of a pixel (its inspectPixel record) as segments: primary ray, normal, shadow rays, bounces. */
+/**
+ * The story of a pixel (its inspectPixel record) as segments: primary ray,
+ * normal, shadow rays (one per point of an area light), bounces, and last,
+ * with several rays per pixel, its n × n sub-pixel rays (kind 'sample').
+ */
 export function pixelStory(scene, record, r) {
-  return raySegments(scene, record, { missLength: r * 2.5, normalLength: r * 0.08 });
+  const story = raySegments(scene, record, { missLength: r * 2.5, normalLength: r * 0.08 });
+  for (const s of sampleSegments(record, { missLength: r * 2.5 })) story.push(s);
+  return story;
 }
 
 /** The story of a pixel in Shoot's flight (a shorter normal: many fly at once). */

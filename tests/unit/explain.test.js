@@ -1,6 +1,7 @@
 import { describe, it, expect } from 'vitest';
 import { Scene, Sphere, Plane, Box, PointLight, Camera, classScene, inspectPixel, colorName, render } from '../../lib/index.js';
 import { angles } from '../../lib/camera.js';
+import { penumbraScene, penumbraCamera, pointsSeen, penumbraPixel } from './penumbra-scene.js';
 
 describe('inspectPixel: the full record of one pixel', () => {
   // Odd size: the centre pixel's ray is exactly (0, 0, −1), the worksheet's ray.
@@ -164,5 +165,45 @@ describe('inspectPixel: every shape by its own test', () => {
     expect(box.rows.at(-1)).toEqual(['t', 10]);
     expect(sphere.record).toMatchObject({ discriminant: 64, t: 16 });
     expect(hit.object).toBe(box.object); // the nearest of the three records' t
+  });
+});
+
+describe('inspectPixel: an area light\'s shadow rays, grouped', () => {
+  const { scene, lamp } = penumbraScene();
+  const camera = penumbraCamera();
+
+  it('counts the shadow rays that reach the disc, as our own shadow rays do', () => {
+    let penumbra = 0;
+    for (let y = 0; y < camera.height; y += 3) {
+      for (let x = 0; x < camera.width; x += 2) {
+        const { hit } = inspectPixel(scene, camera, x, y);
+        if (hit?.object !== scene.objects[0]) continue;
+        expect(hit.areaLights).toHaveLength(1);
+        const [g] = hit.areaLights;
+        const seen = pointsSeen(hit.point, hit.normal, lamp, scene.bias);
+        expect(g.light).toBe(lamp);
+        expect(g.samples).toBe(16);
+        expect(g.reached).toBe(seen);
+        if (seen > 0 && seen < 16) penumbra++;
+      }
+    }
+    expect(penumbra).toBeGreaterThan(0); // the scene does have a penumbra
+  });
+
+  it('sums its points\' transmission and what they added, and keeps them in hit.lights', () => {
+    const { record } = penumbraPixel(scene, camera, lamp);
+    const [g] = record.hit.areaLights;
+    expect(g.rays).toHaveLength(16);
+    expect(g.indices.map((i) => record.hit.lights[i])).toEqual(g.rays);
+    expect(record.hit.lights).toHaveLength(16); // the per-point entries stay for their readers
+    expect(g.transmission).toBeCloseTo(g.rays.reduce((sum, l) => sum + l.transmission, 0), 12);
+    for (let c = 0; c < 3; c++) expect(g.contribution[c]).toBeCloseTo(g.rays.reduce((sum, l) => sum + l.contribution[c], 0), 12);
+    expect(g.reached).toBeGreaterThan(0);
+    expect(g.reached).toBeLessThan(16);
+  });
+
+  it('point lights are not grouped', () => {
+    const { hit } = inspectPixel(classScene(), new Camera({ width: 64, height: 48 }), 32, 24);
+    expect(hit.areaLights).toEqual([]);
   });
 });

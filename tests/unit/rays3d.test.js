@@ -9,7 +9,9 @@ import { Vec3, sub, normalize, length, dot, distance } from '../../lib/vec3.js';
 import {
   imagePoint, pixelCenter, imagePlane, pixelGrid, frustum, pickImagePlane, raySegments,
   geometricConstruction, orbitCamera, screenRay, projectToScreen, sceneBounds,
+  sampleSegments, areaLightsOf, discOutline,
 } from '../../lib/rays3d.js';
+import { penumbraScene, penumbraCamera, pointsSeen, penumbraPixel, BALL } from './penumbra-scene.js';
 
 const close = (a, b, digits = 9) => {
   expect(a.x).toBeCloseTo(b.x, digits); expect(a.y).toBeCloseTo(b.y, digits); expect(a.z).toBeCloseTo(b.z, digits);
@@ -154,6 +156,63 @@ describe('ray segments of a pixel, from inspectPixel', () => {
 
   it('refuses anything that is not a record', () => {
     expect(() => raySegments(classScene(), null)).toThrow(TypeError);
+  });
+});
+
+describe('an area light in 3D: its disc and a pixel\'s shadow rays to each of its points', () => {
+  const { scene, lamp } = penumbraScene();
+  const camera = penumbraCamera();
+
+  it('a penumbra pixel: primary, normal, then one shadow ray per point, lit as our own shadow rays say', () => {
+    const { record, seen } = penumbraPixel(scene, camera, lamp);
+    const segs = raySegments(scene, record);
+    expect(segs.map((s) => s.kind)).toEqual(['primary', 'normal', ...Array(16).fill('shadow')]);
+    const shadows = segs.slice(2), points = lamp.points();
+    expect(shadows.map((s) => s.sample)).toEqual([...Array(16).keys()]);
+    shadows.forEach((s, i) => { close(s.to, points[i]); expect(s.light).toBe(lamp); });
+    expect(shadows.filter((s) => s.lit)).toHaveLength(seen);
+    const blocked = shadows.filter((s) => !s.lit);
+    expect(blocked).toHaveLength(16 - seen);
+    for (const s of blocked) { // stopped on the ball, between the floor and the disc
+      expect(distance(s.blockedAt, new Vec3(...BALL.center))).toBeCloseTo(BALL.radius, 6);
+      expect(distance(s.from, s.blockedAt)).toBeLessThan(distance(s.from, s.to));
+    }
+    expect(pointsSeen(record.hit.point, record.hit.normal, lamp, scene.bias)).toBe(seen);
+  });
+
+  it('the disc\'s outline: on its rim, in its plane; the scene\'s area lights each once', () => {
+    expect(areaLightsOf(scene)).toEqual([lamp]);
+    expect(areaLightsOf(classScene())).toEqual([]);
+    const rim = discOutline(lamp, 32);
+    expect(rim).toHaveLength(32);
+    for (const p of rim) {
+      const d = sub(new Vec3(), p, lamp.center);
+      expect(length(d)).toBeCloseTo(lamp.radius, 9);
+      expect(dot(d, lamp.normal)).toBeCloseTo(0, 9);
+    }
+  });
+});
+
+describe('several rays per pixel in 3D: the sub-pixel rays', () => {
+  it('one segment per sub-pixel ray, from the eye to its hit (or missLength out)', () => {
+    const scene = classScene(), camera = new Camera({ width: 32, height: 24, samples: 9 });
+    const record = inspectPixel(scene, camera, 16, 12);
+    const segs = sampleSegments(record, { missLength: 25 });
+    expect(segs).toHaveLength(9);
+    segs.forEach((s, i) => {
+      const sample = record.samples[i];
+      expect(s).toMatchObject({ kind: 'sample', dx: sample.dx, dy: sample.dy, hit: sample.hit !== null });
+      close(s.from, camera.position);
+      close(dir(s.from, s.to), sample.ray.direction, 9);
+      expect(distance(s.from, s.to)).toBeCloseTo(sample.t ?? 25, 9);
+    });
+    expect(new Set(segs.map((s) => `${s.to.x},${s.to.y}`)).size).toBe(9); // nine rays, nine ends
+    const miss = sampleSegments(inspectPixel(new Scene(), camera, 0, 0), { missLength: 25 });
+    expect(miss.every((s) => !s.hit && Math.abs(distance(s.from, s.to) - 25) < 1e-9)).toBe(true);
+  });
+
+  it('none with one ray per pixel', () => {
+    expect(sampleSegments(inspectPixel(classScene(), new Camera({ width: 32, height: 24 }), 16, 12))).toEqual([]);
   });
 });
 

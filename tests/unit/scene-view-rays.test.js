@@ -5,6 +5,7 @@ import { classScene } from '../../lib/scenes.js';
 import { Camera } from '../../lib/camera.js';
 import { inspectPixel } from '../../lib/explain.js';
 import { pixelStory, shotStory, fanRays } from '../../lib/p5/scene-view-rays.js';
+import { penumbraScene, penumbraCamera, penumbraPixel } from './penumbra-scene.js';
 
 const scene = classScene(), camera = new Camera({ width: 16, height: 12 }), R = 10;
 
@@ -24,6 +25,25 @@ describe('pixelStory and shotStory', () => {
     const record = inspectPixel(scene, camera, 8, 7);
     expect(length(normal(pixelStory(scene, record, R)))).toBeCloseTo(R * 0.08, 9);
     expect(length(normal(shotStory(scene, camera, 8, 7, R)))).toBeCloseTo(R * 0.06, 9);
+  });
+});
+
+describe('pixelStory: an area light and several rays per pixel', () => {
+  it('one shadow ray per point of the disc, then the n × n sub-pixel rays last', () => {
+    const { scene: lit, lamp } = penumbraScene();
+    const camera4 = penumbraCamera(4);
+    const { x, y, seen } = penumbraPixel(lit, penumbraCamera(), lamp);
+    const story = pixelStory(lit, inspectPixel(lit, camera4, x, y), R);
+    const kinds = story.map((s) => s.kind);
+    expect(kinds.filter((k) => k === 'shadow')).toHaveLength(16);
+    expect(kinds.slice(-4)).toEqual(['sample', 'sample', 'sample', 'sample']);
+    expect(kinds.filter((k) => k === 'sample')).toHaveLength(4);
+    // the centre ray's point is the one-ray pixel's: the same shadow rays reach the disc
+    expect(story.filter((s) => s.kind === 'shadow' && s.lit)).toHaveLength(seen);
+  });
+
+  it('no sub-pixel rays with one ray per pixel', () => {
+    expect(pixelStory(scene, inspectPixel(scene, camera, 8, 7), R).some((s) => s.kind === 'sample')).toBe(false);
   });
 });
 
