@@ -66,6 +66,8 @@ export class SceneForm {
   #tables = new Map();
   /** The scene and its JSON, one change at a time. */
   #edits;
+  /** A call of onChange waiting for its task (see remove), else 0. */
+  #pending = 0;
 
   constructor({ json, parent, onChange }) {
     if (typeof onChange !== 'function') throw new TypeError(`onChange must be a function, got ${show(onChange)}`);
@@ -103,11 +105,21 @@ export class SceneForm {
     table.showUpTo(showsAll ? table.rows.length : table.body.children.length);
   }
 
-  /** Removes the object at `index` of `json.objects`. */
+  /**
+   * Removes the object at `index` of `json.objects`. The boxes are built again
+   * now (the later rows' indices moved); the new scene goes to `onChange` in a
+   * task of its own: at 10,000 spheres the two took one task of 200–270 ms.
+   */
   remove(index) {
     this.#edits.remove(index);
-    this.#changed();
-    this.build(); // the later rows' indices moved
+    this.build();
+    this.#changeSoon();
+  }
+
+  /** Calls onChange in a task of its own, once for any changes until then, with the scene as it is then. */
+  #changeSoon() {
+    if (this.#pending) return;
+    this.#pending = setTimeout(() => this.#changed(), 0);
   }
 
   #addButtons() {
@@ -232,6 +244,8 @@ export class SceneForm {
   }
 
   #changed() {
+    clearTimeout(this.#pending); // a change made now hands on the scene a pending one would have
+    this.#pending = 0;
     this.onChange(this.scene, this.json);
   }
 }
