@@ -33,8 +33,7 @@ export default defineConfig(({ command, mode }) => ({
   // A link too long for the server gets a page saying so (scripts/long-links.js).
   plugins: [teachersAnswers({ served: command === 'serve' ? mode !== 'class' : withSolutions }), ...(mode === 'class' ? [classroom()] : []), longLinks(),
     p5OfflineI18n(), reloadItsPagesOnly(), swapSketchesInPlace(), syntaxErrorsWhereTheyAre(), includeText(), oneFileInDev(), apiReference(), apiLine(), fromFileNotice()],
-  // bunny (sketch 13's mesh, CommonJS) is bundled when the server starts, not found late by a first page, which would reload it.
-  optimizeDeps: { include: ['bunny'], rolldownOptions: { plugins: [p5OfflineI18n()] } },
+  optimizeDeps: { rolldownOptions: { plugins: [p5OfflineI18n()] } },
   build: {
     target: 'es2022',
     outDir: withSolutions ? 'dist-teacher' : 'dist',

@@ -8,17 +8,25 @@
  * The picture is traced on Web Workers (the mesh goes to them as scene JSON).
  */
 import p5 from 'p5';
-import bunny from 'bunny'; // { positions, cells }
+// The npm package bunny is one CommonJS file, exports.positions=[…]; exports.cells=[…]: read as
+// text, its two arrays are JSON (no bundling step between the package and the page).
+import bunnyFile from 'bunny/index.js?raw';
 import { Scene, Plane, Mesh, PointLight, Camera } from '../lib/index.js';
 import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
 import { BvhView } from '../lib/p5/bvh-view.js';
 
 const WIDTH = 384, HEIGHT = 288; // 110,592 pixels: enough for the render workers
 
+/** The bunny's { positions, cells } from its package's file. */
+function readBunny(text) {
+  const [, positions, cells] = /exports\.positions\s*=\s*(\[[^;]*\])\s*;?\s*exports\.cells\s*=\s*(\[[^;]*\])/.exec(text);
+  return { positions: JSON.parse(positions), cells: JSON.parse(cells) };
+}
+
 new p5((p) => {
   p.setup = () => {
     p.noCanvas(); // the tracer view brings its own canvas
-    const mesh = new Mesh(bunny, { color: [0.92, 0.84, 0.72], name: 'bunny' });
+    const mesh = new Mesh(readBunny(bunnyFile), { color: [0.92, 0.84, 0.72], name: 'bunny' });
     const scene = new Scene({ background: [0.85, 0.92, 1], ambient: 0.15 })
       .add(new Plane([0, 0, 0], [0, 1, 0], { color: [0.6, 0.65, 0.7], name: 'floor' }))
       .add(mesh)
