@@ -64,7 +64,8 @@ export class BvhView {
     const dpr = globalThis.devicePixelRatio || 1;
     this.canvas = element('canvas', { 'data-bvh-view': '', role: 'img', tabindex: 0, width: Math.round(size * dpr), height: Math.round(0.75 * size * dpr) });
     this.canvas.style.width = `${size}px`;
-    this.canvas.style.height = `${0.75 * size}px`;
+    this.canvas.style.maxWidth = '100%'; // a phone's narrow window: smaller, not wider than the page
+    this.canvas.style.height = 'auto';
     this.canvas.addEventListener('keydown', (e) => this.#key(e));
     this.counts = element('p', { 'data-bvh-counts': '', role: 'status' });
     this.slider = element('input', { type: 'range', min: 0, max: this.levels.length - 1, value: this.depth, id: 'rt-bvh-depth' });
