@@ -86,6 +86,20 @@ export class Mesh {
   }
 
   /**
+   * One ray's walk down the BVH, for a view of the tree: `boxTests` (slab
+   * tests), `boxesEntered` (the node numbers of the boxes it went into, in
+   * order; `bvh.box(i)` is each one's box), `triangleTests`, `triangle` (the
+   * index into cells of the nearest hit, −1 when none), `t` (Infinity when
+   * none) and `loopCost`, what a loop over every triangle would test.
+   * @param {import('../ray.js').Ray} ray
+   */
+  walk(ray) {
+    const stats = { boxTests: 0, boxesEntered: 0, entered: [], itemTests: 0 };
+    const triangle = this.bvh.nearest(ray, EPSILON, this.corners, stats);
+    return { boxTests: stats.boxTests, boxesEntered: stats.entered, triangleTests: stats.itemTests, triangle, t: this.bvh.t, loopCost: this.triangleCount };
+  }
+
+  /**
    * The unit normal (front side, e1 × e2) of the triangle `point` lies on:
    * the last hit's when the point is on it (as after hit or intersect),
    * else the nearest triangle's (a loop over all of them).
