@@ -13,7 +13,6 @@ import p5 from 'p5';
 import bunnyFile from 'bunny/index.js?raw';
 import { Scene, Plane, Mesh, PointLight, Camera } from '../lib/index.js';
 import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
-import { BvhView } from '../lib/p5/bvh-view.js';
 
 const WIDTH = 384, HEIGHT = 288; // 110,592 pixels: enough for the render workers
 
@@ -34,7 +33,7 @@ new p5((p) => {
     const eye = new Camera({ width: WIDTH, height: HEIGHT, fov: 30, position: [0, 6, 26], pitch: -6 });
     const view = p.createTracerView({ scene, camera: eye });
     p.createInspector({ view });
-    new BvhView({ view, mesh, parent: 'sketch' });
+    p.createBvhView({ view, mesh, parent: 'sketch' });
     view.select(200, 150); // on the bunny's side
   };
 }, 'sketch');

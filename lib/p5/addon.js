@@ -23,6 +23,7 @@ import { createSceneForm } from './scene-form.js';
 import { createHomeworkCheck } from './homework-check.js';
 import { createTaskList } from './task-list.js';
 import { createSampleRays } from './sample-rays.js';
+import { createBvhView } from './bvh-view.js';
 import { drawSideView, drawTopView } from './diagrams/plane-views.js';
 import { drawGeometricConstruction } from './diagrams/construction.js';
 import { drawParabola } from './diagrams/parabola.js';
@@ -49,6 +50,7 @@ export const FACTORIES = {
   createHomeworkCheck,
   createTaskList,
   createSampleRays,
+  createBvhView,
   // Diagrams draw into the sketch's own canvas, inside the box { x, y, w, h }.
   drawSideView,
   drawTopView,

@@ -7,9 +7,27 @@
  * buttons turn it; the slider chooses the depth.
  */
 import { element, useStyle } from './dom.js';
+import { checkOptions, show } from '../check.js';
+import { Mesh } from '../shapes/mesh.js';
 
 const STEP = Math.PI / 12; // one key press or button: 15°
 const COLORS = { level: 'rgba(40, 90, 170, 0.55)', entered: '#d9480f', hit: '#c2255c', ray: '#212529', ground: '#868e96' };
+
+/**
+ * `p.createBvhView({ view, mesh, parent?, size?, depth? })`: the panel of
+ * the mesh's tree beside the view (the options as BvhView's below).
+ * @param {import('p5').default} _p the sketch (unused: the panel is plain DOM)
+ * @param {object} options
+ * @example
+ * const view = p.createTracerView({ scene, camera });
+ * p.createBvhView({ view, mesh }); // mesh: the Mesh in the view's scene
+ */
+export function createBvhView(_p, options) {
+  const checked = checkOptions(options, ['view', 'mesh', 'parent', 'size', 'depth'], 'createBvhView');
+  if (!checked.view || typeof checked.view.onSelect !== 'function') throw new TypeError(`view must be a tracer view (createTracerView), got ${show(checked.view)}`);
+  if (!(checked.mesh instanceof Mesh)) throw new TypeError(`mesh must be a Mesh (new Mesh(…) or Mesh.fromOBJ(…)), got ${show(checked.mesh)}`);
+  return new BvhView(checked);
+}
 
 export class BvhView {
   /**

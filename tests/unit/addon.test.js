@@ -31,6 +31,14 @@ describe('sketchbookAddon', () => {
     expect(() => sketch.drawParabola([1, 2])).toThrow(/drawParabola takes one options object/);
   });
 
+  it('createBvhView names what is wrong: a view that is not a tracer view, a mesh that is not a Mesh, an option it does not know', () => {
+    const { fn } = register();
+    const sketch = Object.create(fn), view = { onSelect: () => () => {} };
+    expect(() => sketch.createBvhView({ mesh: {} })).toThrow(/view must be a tracer view/);
+    expect(() => sketch.createBvhView({ view, mesh: { bvh: {} } })).toThrow(/mesh must be a Mesh/);
+    expect(() => sketch.createBvhView({ view, mesh: null, dept: 2 })).toThrow(/dept.*depth/);
+  });
+
   it('passes the sketch and the options to the factory, and p.remove() destroys what it made', () => {
     const made = [];
     const saved = FACTORIES.createSwitches;
