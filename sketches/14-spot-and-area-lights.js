@@ -58,7 +58,7 @@ new p5((p) => {
     addChoices('samples', SAMPLES, state, retrace, (n) => ` ${n}`);
     addChoices('angle', ANGLES, state, retrace, (n) => ` ${n}°`);
     p.createInspector({ view: soft, parent: 'sketch' });
-    p.createSceneView({ view: soft, parent: 'sketch', orbit: { yaw: -60, pitch: 25, distance: 40 } });
+    p.createSceneView({ view: soft, parent: 'sketch', orbit: { yaw: 55, pitch: 22, distance: 30 }, planeDistance: 3 }); // from the side: the disc, the ball and the pixel's shadow rays
     soft.select(73, 33); // on the floor at the rim of the ball's shadow: half the disc's points hidden
   };
 
