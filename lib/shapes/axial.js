@@ -9,12 +9,33 @@ import { finiteNumber, bool } from '../check.js';
 import { Material, shapeOptions } from '../material.js';
 import { vector, materialToJSON } from './json.js';
 import { axialTriangles } from './tessellate.js';
+import { P, N } from './packed.js';
 
 /**
  * A discriminant this small, relative to the terms it is the difference of
  * (B² and 4AC), counts as zero: the ray grazes the surface (as for the sphere).
  */
 export const TANGENT = 1e-12;
+
+/**
+ * The packed form (lib/shapes/packed.js) of a Cylinder or a Cone, six numbers:
+ * cx cy cz radius height capped (1 or 0); `hit` and `normal` are its
+ * numbers-only test and normal (cylinderHit/cylinderNormal, coneHit/coneNormal).
+ */
+export function axialPacked(hit, normal) {
+  return Object.freeze({
+    pack(shape, shapes, at) {
+      const c = shape.center;
+      shapes.set([c.x, c.y, c.z, shape.radius, shape.height, shape.capped ? 1 : 0], at);
+    },
+    hit(s, b, ox, oy, oz, dx, dy, dz, tMin) {
+      return hit(s[b], s[b + 1], s[b + 2], s[b + 3], s[b + 4], s[b + 5] === 1, ox, oy, oz, dx, dy, dz, tMin);
+    },
+    normal(s, b, surface) {
+      normal(s[b], s[b + 1], s[b + 2], s[b + 3], s[b + 4], s[b + 5] === 1, surface[P], surface[P + 1], surface[P + 2], surface, N);
+    },
+  });
+}
 
 /**
  * The checked arguments of a Cylinder or a Cone: `center`, `radius` > 0,

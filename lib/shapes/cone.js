@@ -8,8 +8,7 @@
  */
 import { Vec3, set } from '../vec3.js';
 import { EPSILON } from '../constants.js';
-import { P, N } from './packed.js';
-import { AxialShape, solveQuadratic, recordSide, capCrossing, withinSpan, orNull } from './axial.js';
+import { AxialShape, axialPacked, solveQuadratic, recordSide, capCrossing, withinSpan, orNull } from './axial.js';
 
 const _roots = new Float64Array(2);
 const _normal = new Float64Array(3);
@@ -90,18 +89,7 @@ export class Cone extends AxialShape {
   static get packed() { return PACKED; }
 }
 
-const PACKED = Object.freeze({
-  pack(cone, shapes, at) {
-    const c = cone.center;
-    shapes.set([c.x, c.y, c.z, cone.radius, cone.height, cone.capped ? 1 : 0], at);
-  },
-  hit(s, b, ox, oy, oz, dx, dy, dz, tMin) {
-    return coneHit(s[b], s[b + 1], s[b + 2], s[b + 3], s[b + 4], s[b + 5] === 1, ox, oy, oz, dx, dy, dz, tMin);
-  },
-  normal(s, b, surface) {
-    coneNormal(s[b], s[b + 1], s[b + 2], s[b + 3], s[b + 4], s[b + 5] === 1, surface[P], surface[P + 1], surface[P + 2], surface, N);
-  },
-});
+const PACKED = axialPacked(coneHit, coneNormal);
 
 /**
  * Cone#normalAt in numbers only (and the kernel's): the outward unit normal

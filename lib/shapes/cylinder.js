@@ -6,8 +6,7 @@
  */
 import { Vec3, set } from '../vec3.js';
 import { EPSILON } from '../constants.js';
-import { P, N } from './packed.js';
-import { AxialShape, solveQuadratic, recordSide, capCrossing, withinSpan, orNull } from './axial.js';
+import { AxialShape, axialPacked, solveQuadratic, recordSide, capCrossing, withinSpan, orNull } from './axial.js';
 
 const _roots = new Float64Array(2);
 const _normal = new Float64Array(3);
@@ -82,18 +81,7 @@ export class Cylinder extends AxialShape {
   static get packed() { return PACKED; }
 }
 
-const PACKED = Object.freeze({
-  pack(cylinder, shapes, at) {
-    const c = cylinder.center;
-    shapes.set([c.x, c.y, c.z, cylinder.radius, cylinder.height, cylinder.capped ? 1 : 0], at);
-  },
-  hit(s, b, ox, oy, oz, dx, dy, dz, tMin) {
-    return cylinderHit(s[b], s[b + 1], s[b + 2], s[b + 3], s[b + 4], s[b + 5] === 1, ox, oy, oz, dx, dy, dz, tMin);
-  },
-  normal(s, b, surface) {
-    cylinderNormal(s[b], s[b + 1], s[b + 2], s[b + 3], s[b + 4], s[b + 5] === 1, surface[P], surface[P + 1], surface[P + 2], surface, N);
-  },
-});
+const PACKED = axialPacked(cylinderHit, cylinderNormal);
 
 /**
  * Cylinder#normalAt in numbers only (and the kernel's): the outward unit
