@@ -31,7 +31,7 @@ export default defineConfig(({ command, mode }) => ({
   // "API:" line, and the notice a lesson page shows when opened from a file: scripts/site-plugins.js.
   // The answers and the class server's ways (compressed, revalidated, p5 minified): scripts/classroom.js.
   // A link too long for the server gets a page saying so (scripts/long-links.js).
-  plugins: [teachersAnswers({ served: command === 'serve' ? mode !== 'class' : withSolutions }), ...(mode === 'class' ? [classroom()] : []), longLinks(),
+  plugins: [teachersAnswers({ served: command === 'serve' ? mode !== 'class' : withSolutions }), ...(mode === 'class' ? [classroom({ isolation })] : []), longLinks(),
     p5OfflineI18n(), reloadItsPagesOnly(), swapSketchesInPlace(), syntaxErrorsWhereTheyAre(), includeText(), oneFileInDev(), apiReference(), apiLine(), fromFileNotice()],
   optimizeDeps: { rolldownOptions: { plugins: [p5OfflineI18n()] } },
   build: {
@@ -43,7 +43,9 @@ export default defineConfig(({ command, mode }) => ({
   worker: { format: 'es' },
   preview: { headers: isolation },
   server: {
-    headers: isolation,
+    // The class server sends them itself, to loopback only (scripts/class-gate.js): browsers
+    // ignore them on a student's plain-http address and say so in red on every page.
+    headers: mode === 'class' ? {} : isolation,
     // Test output must not reload pages under test.
     watch: { ignored: ['**/test-results/**', '**/playwright-report/**', '**/__screenshots__/**', '**/tests/pictures/**'] },
   },

@@ -4,16 +4,19 @@
  * Vite with --host (every network interface) and prints the address to
  * type, big, with a QR code for phones and tablets.
  *
- *   npm run class                 port 5173
- *   npm run class -- --port 8080  another port
+ *   npm run class                          port 5173
+ *   npm run class -- --port 8080           another port
+ *   npm run class -- --allow-host NAME     a name of this computer students may type
+ *                                          (its own host name and NAME.local are always let in)
  *
  * Students' laptops must be on the same network (Wi-Fi) as the teacher's, and
  * the teacher's firewall must let the port in. Ctrl+C stops the server.
  */
 import { spawn } from 'node:child_process';
-import { networkInterfaces } from 'node:os';
+import { networkInterfaces, hostname } from 'node:os';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
+import { allowedHostsFrom, computerNames } from './class-gate.js';
 
 const ROOT = resolve(import.meta.dirname, '..');
 
@@ -49,20 +52,28 @@ export function portFrom(argv) {
 }
 
 async function main() {
-  const port = portFrom(process.argv);
-  const vite = spawn(join(ROOT, 'node_modules/.bin/vite'), ['--host', '--mode', 'class', '--port', String(port), '--strictPort'], { cwd: ROOT, stdio: ['inherit', 'pipe', 'inherit'] });
+  let port, names;
+  try {
+    port = portFrom(process.argv);
+    names = computerNames(hostname(), allowedHostsFrom(process.argv));
+  } catch (error) {
+    console.error(error.message);
+    process.exit(2);
+  }
+  const env = { ...process.env, SKETCHBOOK_CLASS_HOSTS: JSON.stringify(names) };
+  const vite = spawn(join(ROOT, 'node_modules/.bin/vite'), ['--host', '--mode', 'class', '--port', String(port), '--strictPort'], { cwd: ROOT, env, stdio: ['inherit', 'pipe', 'inherit'] });
   let said = false;
   vite.stdout.on('data', async (chunk) => {
     process.stdout.write(chunk);
     if (said || !/ready in/i.test(String(chunk))) return;
     said = true;
-    setTimeout(() => sayWhereToGo(port), 200); // after Vite's own list of addresses
+    setTimeout(() => sayWhereToGo(port, names), 200); // after Vite's own list of addresses
   });
   for (const signal of ['SIGINT', 'SIGTERM']) process.on(signal, () => vite.kill(signal));
   vite.on('exit', (code) => process.exit(code ?? 0));
 }
 
-async function sayWhereToGo(port) {
+async function sayWhereToGo(port, names) {
   const addresses = classroomAddresses(networkInterfaces(), port);
   if (addresses.length === 0) {
     console.log('\nNo network found: connect this computer to the classroom\'s Wi-Fi, then run npm run class again.\n');
@@ -71,6 +82,8 @@ async function sayWhereToGo(port) {
   console.log('\n  Students type this address in their browser (same Wi-Fi as this computer):\n');
   console.log(`      ${addresses[0]}\n`);
   if (addresses.length > 1) console.log(`  (or, on another network of this computer: ${addresses.slice(1).join('  ')})\n`);
+  console.log(`  By name it answers to: ${names.map((name) => `http://${name}:${port}/`).join('  ')}`);
+  console.log('  (another name: npm run class -- --allow-host NAME)\n');
   try {
     const { renderUnicodeCompact } = await import('uqr');
     console.log(renderUnicodeCompact(addresses[0]).split('\n').map((row) => `      ${row}`).join('\n'));

@@ -18,6 +18,8 @@ import { createHash } from 'node:crypto';
 import { posix, resolve, sep } from 'node:path';
 import { promisify } from 'node:util';
 import { brotliCompress, gzip, constants } from 'node:zlib';
+import { hostname } from 'node:os';
+import { classGate, foldName, STUDENT_ROUTES } from './class-gate.js';
 
 /** The folders only the teacher's own server (`npm start`) serves, from the project's root. */
 export const TEACHER_ONLY = ['sketches/solutions', 'tests'];
@@ -61,8 +63,8 @@ export function teachersAnswers({ served }) {
 export function isTeacherOnly(url, root) {
   let path = url.split(/[?#]/)[0];
   try { path = decodeURIComponent(path); } catch { /* a malformed escape: the path as it is */ }
-  path = posix.normalize(path.replaceAll('\\', '/')).toLowerCase();
-  const base = root.split(sep).join('/').toLowerCase().replace(/\/?$/, '/');
+  path = foldName(posix.normalize(path.replaceAll('\\', '/')));
+  const base = foldName(root.split(sep).join('/')).replace(/\/?$/, '/');
   path = path.replace(/^\/@id\//, '/').replace(/^\/@fs\//, '/').replace(/^\/+/, '/');
   if (path.startsWith(base)) path = `/${path.slice(base.length)}`;
   if (path.startsWith(`/${GALLERY_THUMBNAILS}`) && /^[\w-]+\.png$/.test(path.slice(GALLERY_THUMBNAILS.length + 1))) return false;
@@ -232,8 +234,30 @@ function teacherOnlyIsNotFound(root) {
 /** Vite's own server.fs.deny, which a list of ours replaces. */
 const VITE_DENIES = ['.env', '.env.*', '*.{crt,pem}', '**/.git/**'];
 
-/** `npm run class`: the dev server, made light enough for a class on one laptop. */
-export function classroom() {
+/** What no student may read, by the file it is (scripts/class-gate.js): the solutions and the project's secrets. */
+const GUARDED = ['sketches/solutions', '.git', '.env', '.env.local', '.ci'];
+
+/**
+ * The computer's names a student may type: set by scripts/class.js (its host
+ * name, NAME.local, --allow-host), else this machine's own.
+ */
+function classNames() {
+  try {
+    const names = JSON.parse(process.env.SKETCHBOOK_CLASS_HOSTS ?? 'null');
+    if (Array.isArray(names)) return names.map(String);
+  } catch { /* not set by class.js: the machine's own names */ }
+  const own = hostname().toLowerCase();
+  return [own, `${own.split('.')[0]}.local`];
+}
+
+/**
+ * `npm run class`: the dev server, made light enough for a class on one
+ * laptop, and no more than the students' pages need (scripts/class-gate.js).
+ * @param {{ isolation?: Record<string, string>, routes?: typeof STUDENT_ROUTES }} [options]
+ *   isolation: the cross-origin isolation headers, sent to loopback only;
+ *   routes: more routes students may ask for (a plugin's)
+ */
+export function classroom({ isolation = {}, routes = [] } = {}) {
   return {
     name: 'classroom',
     apply: 'serve',
@@ -244,11 +268,14 @@ export function classroom() {
         cacheDir: 'node_modules/.vite-class',
         optimizeDeps: { rolldownOptions: { output: { minify: true } } },
         // Vite's own refusal too (a 403), but for the gallery's thumbnails, which are in tests/.
-        server: { fs: { deny: [...VITE_DENIES, '**/sketches/solutions/**', '**/tests/**/*.js', '**/tests/**/*solution*'] } },
+        // The gate checks the host names itself, with a message that says how to add one.
+        server: { allowedHosts: true, fs: { deny: [...VITE_DENIES, '**/sketches/solutions/**', '**/tests/**/*.js', '**/tests/**/*solution*'] } },
       };
     },
     configureServer(server) {
-      server.middlewares.use(teacherOnlyIsNotFound(server.config.root));
+      const root = server.config.root;
+      server.middlewares.use(classGate({ root, names: classNames(), routes: [...STUDENT_ROUTES, ...routes], guarded: GUARDED, isolation }));
+      server.middlewares.use(teacherOnlyIsNotFound(root));
       server.middlewares.use(compressAndRevalidate());
     },
   };

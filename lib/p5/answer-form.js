@@ -57,9 +57,13 @@ export function createAnswerForm(p, options) {
   const result = element('span', { class: 'result', 'data-result': '', role: 'status' });
   const detail = element('p', { class: 'detail', 'data-answer-detail': '' });
   const copyButton = element('button', { type: 'button', class: 'rt-button' }, 'Copy answer');
-  copyButton.addEventListener('click', () => copyText(answer.textContent));
+  const copied = element('span', { class: 'copied', 'data-copied': '', role: 'status' });
+  copyButton.addEventListener('click', async () => {
+    if (!answer.textContent) { copied.textContent = 'Check an answer first.'; return; }
+    copied.textContent = (await copyText(answer.textContent)) ? 'Copied: paste it in the class chat.' : 'Select the answer and press Ctrl+C (⌘C).';
+  });
   const section = element('section', { class: 'task' },
-    element('h2', {}, title), form, element('div', { class: 'answer-row' }, answer, result, copyButton), detail,
+    element('h2', {}, title), form, element('div', { class: 'answer-row' }, answer, result, copyButton, copied), detail,
     note && (note instanceof Node ? note : element('p', { class: 'note' }, note)));
   resolveParent(parent, sketchNode(p)).append(section);
 
@@ -94,6 +98,7 @@ export function createAnswerForm(p, options) {
       result.replaceChildren(...[swatch, (ok ? '✔ ' : '✘ ') + message].filter(Boolean));
       Object.assign(result.dataset, data);
       if (line !== undefined) answer.textContent = line;
+      copied.textContent = '';
       if (more !== undefined) detail.textContent = more;
       // The page's tasks (task-list.js) hear of each verdict.
       section.dispatchEvent(new CustomEvent('rt-answer', { bubbles: true, detail: { ok: Boolean(ok), answer: answer.textContent } }));

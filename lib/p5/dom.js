@@ -100,8 +100,10 @@ export function sketchNode(p) {
 
 /**
  * Puts `text` on the clipboard: true when the browser took it, false when it
- * would not (no permission, the page not focused or not secure, no clipboard
- * at all), and the person has to select the text and copy it themselves.
+ * would not, and the person has to select the text and copy it themselves.
+ * A student's page on the teacher's plain-http address is not a secure
+ * context and has no `navigator.clipboard`: there the text is copied as a
+ * selection is (`execCommand('copy')`, still honoured within a click).
  * @example
  * if (!(await copyText(line))) status.textContent = 'Select the text and press Ctrl+C (⌘C).';
  */
@@ -110,6 +112,20 @@ export async function copyText(text) {
     await navigator.clipboard.writeText(text);
     return true;
   } catch {
-    return false;
+    return copyBySelection(text);
   }
+}
+
+/** Copies `text` through a hidden text box, as Ctrl+C copies a selection; the focus goes back where it was. */
+function copyBySelection(text) {
+  const box = element('textarea', { readonly: '', 'aria-hidden': 'true', tabindex: '-1', style: 'position:fixed;top:0;left:0;width:1px;height:1px;opacity:0' });
+  box.value = text;
+  const before = document.activeElement;
+  document.body.append(box);
+  box.select();
+  let copied = false;
+  try { copied = document.execCommand('copy'); } catch { /* refused: the caller says how to copy */ }
+  box.remove();
+  if (before instanceof HTMLElement) before.focus({ preventScroll: true });
+  return copied;
 }

@@ -14,10 +14,14 @@ export function freePort() {
   });
 }
 
-/** Starts the class server; resolves with { url, close } once Vite is ready. */
-export async function startClassServer(port = Number(process.env.CLASS_PORT) || undefined) {
+/**
+ * Starts the class server; resolves with { url, close } once Vite is ready.
+ * @param {number} [port]
+ * @param {string[]} [args] more of `npm run class`'s arguments (`--allow-host NAME`)
+ */
+export async function startClassServer(port = Number(process.env.CLASS_PORT) || undefined, args = []) {
   port ??= await freePort();
-  const child = spawn(process.execPath, ['scripts/class.js', '--port', String(port)], { stdio: ['ignore', 'pipe', 'pipe'] });
+  const child = spawn(process.execPath, ['scripts/class.js', '--port', String(port), ...args], { stdio: ['ignore', 'pipe', 'pipe'] });
   let output = '';
   await new Promise((ready, fail) => {
     const timer = setTimeout(() => fail(new Error(`the class server was not ready in 60 s:\n${output}`)), 60_000);
@@ -31,6 +35,7 @@ export async function startClassServer(port = Number(process.env.CLASS_PORT) || 
   });
   return {
     url: `http://127.0.0.1:${port}/`,
+    port,
     output: () => output,
     close: () => new Promise((done) => {
       if (child.exitCode !== null) return done();
