@@ -10,6 +10,9 @@ import { readProgressLine, pageProgress, progressText, achievements } from './li
 /** More than this is not read: a class, not a file dump. */
 const MAX_LINES = 200;
 const MAX_NAME = 40;
+/** Cards built in one task: 200 students' cards are about 11,000 elements, a task of their own per batch. */
+const CARDS_PER_TASK = 25;
+let shown = 0; // which show() is drawing: a new one stops the batches of the last
 
 const form = document.getElementById('codes-form');
 const box = /** @type {HTMLTextAreaElement} */ (document.getElementById('codes'));
@@ -29,7 +32,14 @@ form.addEventListener('submit', (event) => {
 function show() {
   const lines = box.value.slice(0, 20_000).split('\n').map((l) => l.trim()).filter(Boolean);
   const read = lines.slice(0, MAX_LINES).map((line, i) => ({ line: i + 1, ...readProgressLine(line, LESSONS, MAX_NAME) }));
-  students.replaceChildren(...read.map(card));
+  const drawing = ++shown;
+  students.replaceChildren();
+  const batch = (from) => {
+    if (drawing !== shown) return;
+    students.append(...read.slice(from, from + CARDS_PER_TASK).map(card));
+    if (from + CARDS_PER_TASK < read.length) setTimeout(batch, 0, from + CARDS_PER_TASK);
+  };
+  batch(0);
   const good = read.filter((r) => r.progress).length;
   summary.textContent = lines.length === 0 ? 'Paste at least one code.'
     : `${good} of ${read.length} ${read.length === 1 ? 'code' : 'codes'} read${lines.length > MAX_LINES ? ` (only the first ${MAX_LINES} lines)` : ''}.`;
