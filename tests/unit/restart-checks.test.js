@@ -3,7 +3,7 @@
 // restart leaves the last picture as it was.
 import { describe, it, expect } from 'vitest';
 import { ProgressiveRenderer } from '../../lib/progressive.js';
-import { render, Camera, Scene, Sphere, Plane, Box, PointLight, classScene } from '../../lib/index.js';
+import { render, Camera, Scene, Sphere, Plane, Box, PointLight, SpotLight, AreaLight, classScene } from '../../lib/index.js';
 import * as sceneCheck from '../../lib/scene-check.js';
 
 const camera = () => new Camera({ width: 16, height: 12 });
@@ -64,6 +64,30 @@ describe('restart() after the scene changed in place', () => {
     scene.lights[0].source.intensity = 1;
     scene.lights[0].source.attenuation = '0.1';
     expect(() => r.restart()).toThrow('lights[0].attenuation must be a finite number, got "0.1"');
+  });
+});
+
+describe('restart() after a spot or area light changed in place', () => {
+  it('checks them as it checks point lights, naming the light and the field', () => {
+    const scene = new Scene().add(new Sphere([0, 0, -5], 1)).add(new SpotLight([0, 5, -5], [0, 0, -5], { angle: 20 })).add(new AreaLight([0, 5, -5], 1));
+    const r = finished(scene);
+    const spot = scene.lights[0].source, area = scene.lights[1].source;
+    spot.angle = 120;
+    expect(() => r.restart()).toThrow('lights[0].angle must be between 0 and 90 degrees (not included), got 120');
+    spot.angle = 20;
+    spot.target = [0, 5, -5];
+    expect(() => r.restart()).toThrow(/^lights\[0\]\.target must not be the light's own position/);
+    spot.target = [0, 0, -5];
+    spot.intensity = -1;
+    expect(() => r.restart()).toThrow('lights[0].intensity must be between 0 and 1000000, got -1');
+    spot.intensity = 1;
+    area.samples = 1e6;
+    expect(() => r.restart()).toThrow(/^lights\[1\]\.samples must be a square number of shadow rays/);
+    area.samples = 16;
+    area.radius = null;
+    expect(() => r.restart()).toThrow('lights[1].radius must be a finite number, got null');
+    area.radius = 1;
+    expect(() => r.restart()).not.toThrow();
   });
 });
 
