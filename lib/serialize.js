@@ -291,7 +291,8 @@ export function objectFromJSON(given, path) {
     if (o.material === null || typeof o.material !== 'object' || Array.isArray(o.material)) {
       throw new TypeError(`${path}.material must be an object, got ${show(o.material)}`);
     }
-    material = named(() => new Material(onlyFields(o.material, MATERIAL_FIELDS, `${path}.material`)), `${path}.material.`);
+    const fields = onlyFields(o.material, MATERIAL_FIELDS, `${path}.material`); // its message has the path already
+    material = named(() => new Material(fields), `${path}.material.`);
   }
   const item = named(() => kind.build(o, material), `${path}.`);
   item.name = o.name ?? '';
