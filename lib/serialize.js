@@ -15,6 +15,7 @@
 import { Scene } from './scene.js';
 import { Camera } from './camera.js';
 import { Material } from './material.js';
+import { tooDeepAt } from './json-depth.js';
 import { PointLight } from './lights.js';
 import { AreaLight } from './area-light.js';
 import { SpotLight } from './spot-light.js';
@@ -217,6 +218,8 @@ export const MAX_JSON_DEPTH = 32;
 function parse(json, what) {
   let data = json;
   if (typeof json === 'string') {
+    const deep = tooDeepAt(json, MAX_JSON_DEPTH); // before JSON.parse builds every level
+    if (deep !== null) throw new RangeError(`${what} is nested more than ${MAX_JSON_DEPTH} levels deep, at ${deep}`);
     try {
       data = JSON.parse(json);
     } catch (error) {
