@@ -16,6 +16,7 @@ import { Scene } from './scene.js';
 import { Camera } from './camera.js';
 import { Material } from './material.js';
 import { tooDeepAt } from './json-depth.js';
+import { checkWork } from './scene-work.js';
 import { PointLight } from './lights.js';
 import { AreaLight } from './area-light.js';
 import { SpotLight } from './spot-light.js';
@@ -84,15 +85,17 @@ export function sceneToJSON(scene) {
  * @param {object} [options]
  * @param {number} [options.maxObjects=Infinity] more objects than this is a RangeError naming the limit
  *   (scenes from a link or a paste: MAX_SCENE_OBJECTS, lib/scene-codec.js)
+ * @param {boolean} [options.limitWork=false] refuse more work than lib/scene-work.js allows (shadow rays, rays a pixel, triangles)
  */
 export function sceneFromJSON(json, options) {
-  const { maxObjects = Infinity } = checkOptions(options, ['maxObjects'], 'sceneFromJSON');
+  const { maxObjects = Infinity, limitWork = false } = checkOptions(options, ['maxObjects', 'limitWork'], 'sceneFromJSON');
   const { objects = [], ...sceneOptions } = onlyFields(parse(json, 'scene'), SCENE_FIELDS, 'scene');
   const scene = new Scene(sceneOptions);
   if (!Array.isArray(objects)) throw new TypeError(`objects must be an array, got ${show(objects)}`);
   if (objects.length > maxObjects) {
     throw new RangeError(`the scene has ${objects.length.toLocaleString('en')} objects, more than the ${maxObjects.toLocaleString('en')} a scene from a link or a paste may have`);
   }
+  if (limitWork) checkWork(objects, sceneOptions);
   objects.forEach((o, i) => scene.add(objectFromJSON(o, `objects[${i}]`)));
   return scene;
 }
