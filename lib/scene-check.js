@@ -55,8 +55,9 @@ function sceneOptions({ background, ambient, shadows, bias, epsilon, maxDepth, s
 
 /**
  * One shape: a listed shape (a Sphere, Plane, Box, …) rebuilt by its class's
- * own `build` from its fields as they are now; a shape of the sketch's own
- * (the protocol's methods of its own) by its material alone.
+ * own `build` from its fields as they are now, or checked by its class's
+ * `check` (a Mesh: its BVH built again only when its data changed); a shape
+ * of the sketch's own (the protocol's methods of its own) by its material alone.
  */
 function checkShape(o, path) {
   if (o === null || typeof o !== 'object' || typeof o.hit !== 'function') {
@@ -64,7 +65,7 @@ function checkShape(o, path) {
   }
   const material = checkMaterial(o.material, `${path}.material`);
   const Shape = classOf(o);
-  if (Shape) withPath(() => Shape.build(o, material), `${path}.`);
+  if (Shape) withPath(() => (typeof Shape.check === 'function' ? Shape.check(o, material) : Shape.build(o, material)), `${path}.`);
   if (o.name !== undefined && typeof o.name !== 'string') throw new TypeError(`${path}.name must be text, got ${show(o.name)}`);
 }
 

@@ -179,6 +179,20 @@ export class Mesh {
     return new Mesh({ positions: o.positions, cells: o.cells }, material);
   }
 
+  /**
+   * A mesh checked again as it is now (a restart's check, lib/scene-check.js):
+   * when its positions and cells still hold what it was built from, nothing
+   * is built (restarts built every BVH again: 4 s for a million triangles);
+   * when they were changed in place, they are checked as the constructor
+   * does and the mesh takes the new triangles and BVH.
+   */
+  static check(mesh, material) {
+    if (sameData(mesh)) return;
+    const fresh = new Mesh({ positions: mesh.positions, cells: mesh.cells }, material);
+    for (const key of ['positions', 'cells', 'triangleCount', 'vertices', 'indices', 'normals', 'bvh', 'corners', 'size']) mesh[key] = fresh[key];
+    mesh.lastTriangle = -1;
+  }
+
   /** Its constructor's arguments in scene code: the data, then the material. */
   static codeArguments(o, material) {
     return [{ positions: o.positions, cells: o.cells }, material];
@@ -248,6 +262,20 @@ function checkCell(cell, i, count) {
     }
   }
   return [list[0], list[1], list[2]];
+}
+
+/** Do the mesh's positions and cells hold just the numbers it was built from? One pass, no allocation. */
+function sameData({ positions, cells, vertices, indices }) {
+  if (!Array.isArray(positions) || !Array.isArray(cells) || 3 * positions.length !== vertices.length || 3 * cells.length !== indices.length) return false;
+  for (let i = 0; i < positions.length; i++) {
+    const p = positions[i];
+    if (!Array.isArray(p) || p.length !== 3 || p[0] !== vertices[3 * i] || p[1] !== vertices[3 * i + 1] || p[2] !== vertices[3 * i + 2]) return false;
+  }
+  for (let i = 0; i < cells.length; i++) {
+    const c = cells[i];
+    if (!Array.isArray(c) || c.length !== 3 || c[0] !== indices[3 * i] || c[1] !== indices[3 * i + 1] || c[2] !== indices[3 * i + 2]) return false;
+  }
+  return true;
 }
 
 /** Is p already three finite numbers [x, y, z] (the common case, checked without a Vec3)? */
