@@ -5,11 +5,14 @@
  * kit's own task texts come out of it, and everything is shown as text.
  */
 import { LESSONS } from './lib/lesson-tasks.js';
-import { readProgressCode, pageProgress, progressText, achievements } from './lib/tasks.js';
+import { readProgressLine, pageProgress, progressText, achievements } from './lib/tasks.js';
 
 /** More than this is not read: a class, not a file dump. */
 const MAX_LINES = 200;
 const MAX_NAME = 40;
+/** Cards built in one task: 200 students' cards are about 11,000 elements, a task of their own per batch. */
+const CARDS_PER_TASK = 25;
+let shown = 0; // which show() is drawing: a new one stops the batches of the last
 
 const form = document.getElementById('codes-form');
 const box = /** @type {HTMLTextAreaElement} */ (document.getElementById('codes'));
@@ -28,19 +31,18 @@ form.addEventListener('submit', (event) => {
 
 function show() {
   const lines = box.value.slice(0, 20_000).split('\n').map((l) => l.trim()).filter(Boolean);
-  const read = lines.slice(0, MAX_LINES).map((line, i) => ({ line: i + 1, ...readLine(line) }));
-  students.replaceChildren(...read.map(card));
+  const read = lines.slice(0, MAX_LINES).map((line, i) => ({ line: i + 1, ...readProgressLine(line, LESSONS, MAX_NAME) }));
+  const drawing = ++shown;
+  students.replaceChildren();
+  const batch = (from) => {
+    if (drawing !== shown) return;
+    students.append(...read.slice(from, from + CARDS_PER_TASK).map(card));
+    if (from + CARDS_PER_TASK < read.length) setTimeout(batch, 0, from + CARDS_PER_TASK);
+  };
+  batch(0);
   const good = read.filter((r) => r.progress).length;
   summary.textContent = lines.length === 0 ? 'Paste at least one code.'
     : `${good} of ${read.length} ${read.length === 1 ? 'code' : 'codes'} read${lines.length > MAX_LINES ? ` (only the first ${MAX_LINES} lines)` : ''}.`;
-}
-
-/** A line's name (the text before the code, shortened) and its progress, or why it is no code. */
-function readLine(line) {
-  const at = line.toUpperCase().lastIndexOf('RT');
-  const code = at < 0 ? line : line.slice(at);
-  const name = (at < 0 ? '' : line.slice(0, at)).replace(/[:\s]+$/, '').slice(0, MAX_NAME);
-  return { name, ...readProgressCode(code.split(/\s/)[0], LESSONS) };
 }
 
 function card({ line, name, progress, problem }) {

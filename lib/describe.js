@@ -71,11 +71,13 @@ function sample(scene, camera) {
   const seen = objects.map((object) => ({ object, first: 0, any: 0, sx: 0, sy: 0, fx: 0, fy: 0, covers: new Map(), surface: surfaceKind(object, camera) }));
   const ray = { origin: camera.position, direction: { x: 0, y: 0, z: -1 } };
   const ts = new Float64Array(objects.length);
+  const balls = boundingBalls(objects);
+  const o = camera.position, d = ray.direction;
   const cast = (px, py) => {
-    camera.directionAt(px, py, ray.direction);
+    camera.directionAt(px, py, d);
     let nearest = -1;
     for (let i = 0; i < objects.length; i++) {
-      ts[i] = objects[i].hit(ray);
+      ts[i] = passesBy(balls, i, o, d) ? Infinity : objects[i].hit(ray);
       if (ts[i] !== Infinity && (nearest < 0 || ts[i] < ts[nearest])) nearest = i;
     }
     if (nearest < 0) return;
@@ -123,6 +125,31 @@ function summary(seen) {
     if (most < Math.max(2, s.any * HIDDEN_SHARE)) behind = null;
     return { object: s.object, first: s.first, any: s.any, x, y, behind, surface: s.surface };
   });
+}
+
+/**
+ * Each shape's bounding ball from its bounds, 4 numbers (x, y, z, r²; r² = −1 when
+ * unbounded): a ray that passes a ball by misses its shape, a test far cheaper
+ * than a cylinder's or a mesh's own (10,000 cylinders' hit tests were a task of a second).
+ */
+function boundingBalls(objects) {
+  const balls = new Float64Array(4 * objects.length);
+  objects.forEach((shape, i) => {
+    const b = typeof shape.bounds === 'function' ? shape.bounds() : null;
+    if (!b) { balls[4 * i + 3] = -1; return; }
+    const hx = (b.max.x - b.min.x) / 2, hy = (b.max.y - b.min.y) / 2, hz = (b.max.z - b.min.z) / 2;
+    balls.set([b.min.x + hx, b.min.y + hy, b.min.z + hz, (hx * hx + hy * hy + hz * hz) * (1 + 1e-9)], 4 * i);
+  });
+  return balls;
+}
+
+/** Does the ray from o along unit d pass ball i by (the lesson's geometric test: d² > r², or the ball behind the eye)? */
+function passesBy(balls, i, o, d) {
+  const r2 = balls[4 * i + 3];
+  if (!(r2 >= 0)) return false;
+  const lx = balls[4 * i] - o.x, ly = balls[4 * i + 1] - o.y, lz = balls[4 * i + 2] - o.z;
+  const tca = lx * d.x + ly * d.y + lz * d.z, ll = lx * lx + ly * ly + lz * lz;
+  return ll - tca * tca > r2 || (tca < 0 && ll > r2);
 }
 
 /**

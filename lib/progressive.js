@@ -239,7 +239,7 @@ export class ProgressiveRenderer {
    * background made one step take half a second.
    */
   #traceFor(budgetMs, start) {
-    let count = 0, run = CHECK_EVERY, before = 0;
+    let count = 0, run = this.#firstRun(budgetMs), before = 0;
     while (!this.#done) {
       const traced = this.#traceRun(run);
       count += traced;
@@ -250,9 +250,25 @@ export class ProgressiveRenderer {
       const left = budgetMs - elapsed;
       const byAverage = elapsed > 0 ? Math.floor((count * left) / elapsed / 4) : Infinity;
       const byDearest = this.#dearest > 0 ? Math.floor(left / this.#dearest / 2) : Infinity;
-      run = Math.max(CHECK_EVERY, Math.min(2 * run, byAverage, byDearest));
+      run = Math.max(this.#fewest(budgetMs), Math.min(2 * run, byAverage, byDearest));
     }
     return count;
+  }
+
+  /**
+   * A step's first run: one pixel at a render's start (its pace unknown: a
+   * pixel under 10,000 shadow rays costs a quarter of a second, and 16 of
+   * them made a 4 s step), then what half the budget holds at the dearest
+   * pace, from 1 to CHECK_EVERY.
+   */
+  #firstRun(budgetMs) {
+    if (this.#dearest > 0) return Math.max(1, Math.min(CHECK_EVERY, Math.floor(budgetMs / this.#dearest / 2)));
+    return this.#traced === 0 ? 1 : CHECK_EVERY;
+  }
+
+  /** The fewest pixels between two looks at the clock: CHECK_EVERY, or 1 when so many would overrun the whole budget. */
+  #fewest(budgetMs) {
+    return this.#dearest * CHECK_EVERY > budgetMs ? 1 : CHECK_EVERY;
   }
 
   /**

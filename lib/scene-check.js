@@ -11,13 +11,15 @@ import { Scene } from './scene.js';
 import { Camera } from './camera.js';
 import { Material } from './material.js';
 import { PointLight } from './lights.js';
+import { SpotLight } from './spot-light.js';
+import { AreaLight } from './area-light.js';
 import { classOf } from './shapes/index.js';
 import { toColor } from './color.js';
 import { show, withPath } from './check.js';
 
 /**
- * Checks every field of the scene, its shapes, their materials and its point
- * lights. A colour given as text or one number ('red', 0.5) is turned into
+ * Checks every field of the scene, its shapes, their materials and its
+ * lights (point, spot and area). A colour given as text or one number ('red', 0.5) is turned into
  * [r, g, b] in place, as the constructors do; anything else bad throws.
  * @param {Scene} scene
  */
@@ -25,9 +27,15 @@ export function checkScene(scene) {
   withPath(() => new Scene(sceneOptions(scene)), 'scene.');
   scene.background = asColor(scene.background, 'scene.background');
   scene.objects.forEach((o, i) => checkShape(o, `objects[${i}]`));
-  scene.lights.forEach(({ source: s }, i) => {
-    if (s instanceof PointLight) withPath(() => new PointLight(s.position, { color: s.color, intensity: s.intensity, attenuation: s.attenuation }), `lights[${i}].`);
-  });
+  scene.lights.forEach(({ source: s }, i) => withPath(() => rebuildLight(s), `lights[${i}].`));
+}
+
+/** A point, spot or area light built again from its fields as they are now (a light of the sketch's own is left as it is). */
+function rebuildLight(s) {
+  const { color, intensity, attenuation } = s;
+  if (s instanceof PointLight) new PointLight(s.position, { color, intensity, attenuation });
+  else if (s instanceof SpotLight) new SpotLight(s.position, s.target, { angle: s.angle, color, intensity, attenuation, name: s.name });
+  else if (s instanceof AreaLight) new AreaLight(s.center, s.radius, { color, intensity, attenuation, samples: s.samples, normal: s.normal, name: s.name });
 }
 
 /**
@@ -47,8 +55,9 @@ function sceneOptions({ background, ambient, shadows, bias, epsilon, maxDepth, s
 
 /**
  * One shape: a listed shape (a Sphere, Plane, Box, …) rebuilt by its class's
- * own `build` from its fields as they are now; a shape of the sketch's own
- * (the protocol's methods of its own) by its material alone.
+ * own `build` from its fields as they are now, or checked by its class's
+ * `check` (a Mesh: its BVH built again only when its data changed); a shape
+ * of the sketch's own (the protocol's methods of its own) by its material alone.
  */
 function checkShape(o, path) {
   if (o === null || typeof o !== 'object' || typeof o.hit !== 'function') {
@@ -56,7 +65,7 @@ function checkShape(o, path) {
   }
   const material = checkMaterial(o.material, `${path}.material`);
   const Shape = classOf(o);
-  if (Shape) withPath(() => Shape.build(o, material), `${path}.`);
+  if (Shape) withPath(() => (typeof Shape.check === 'function' ? Shape.check(o, material) : Shape.build(o, material)), `${path}.`);
   if (o.name !== undefined && typeof o.name !== 'string') throw new TypeError(`${path}.name must be text, got ${show(o.name)}`);
 }
 

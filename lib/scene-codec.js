@@ -66,7 +66,7 @@ export function encodeScene(json) {
  */
 export function decodeScene(text) {
   const t = String(text ?? '').trim();
-  if (t.startsWith('{')) return sceneFromJSON(t, { maxObjects: MAX_SCENE_OBJECTS });
+  if (t.startsWith('{')) return sceneFromJSON(t, { maxObjects: MAX_SCENE_OBJECTS, limitWork: true });
   if (!isBase64url(t)) throw new TypeError('the scene in the link is not base64url text');
   let bytes;
   try {
@@ -85,7 +85,7 @@ export function sceneFromBytes(bytes) {
   } catch {
     throw new TypeError('the scene in the link is not text');
   }
-  return sceneFromJSON(json, { maxObjects: MAX_SCENE_OBJECTS });
+  return sceneFromJSON(json, { maxObjects: MAX_SCENE_OBJECTS, limitWork: true });
 }
 
 /* ---------------- base64url ---------------- */

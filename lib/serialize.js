@@ -15,6 +15,8 @@
 import { Scene } from './scene.js';
 import { Camera } from './camera.js';
 import { Material } from './material.js';
+import { tooDeepAt } from './json-depth.js';
+import { checkWork } from './scene-work.js';
 import { PointLight } from './lights.js';
 import { AreaLight } from './area-light.js';
 import { SpotLight } from './spot-light.js';
@@ -83,15 +85,17 @@ export function sceneToJSON(scene) {
  * @param {object} [options]
  * @param {number} [options.maxObjects=Infinity] more objects than this is a RangeError naming the limit
  *   (scenes from a link or a paste: MAX_SCENE_OBJECTS, lib/scene-codec.js)
+ * @param {boolean} [options.limitWork=false] refuse more work than lib/scene-work.js allows (shadow rays, rays a pixel, triangles)
  */
 export function sceneFromJSON(json, options) {
-  const { maxObjects = Infinity } = checkOptions(options, ['maxObjects'], 'sceneFromJSON');
+  const { maxObjects = Infinity, limitWork = false } = checkOptions(options, ['maxObjects', 'limitWork'], 'sceneFromJSON');
   const { objects = [], ...sceneOptions } = onlyFields(parse(json, 'scene'), SCENE_FIELDS, 'scene');
   const scene = new Scene(sceneOptions);
   if (!Array.isArray(objects)) throw new TypeError(`objects must be an array, got ${show(objects)}`);
   if (objects.length > maxObjects) {
     throw new RangeError(`the scene has ${objects.length.toLocaleString('en')} objects, more than the ${maxObjects.toLocaleString('en')} a scene from a link or a paste may have`);
   }
+  if (limitWork) checkWork(objects, sceneOptions);
   objects.forEach((o, i) => scene.add(objectFromJSON(o, `objects[${i}]`)));
   return scene;
 }
@@ -217,6 +221,8 @@ export const MAX_JSON_DEPTH = 32;
 function parse(json, what) {
   let data = json;
   if (typeof json === 'string') {
+    const deep = tooDeepAt(json, MAX_JSON_DEPTH); // before JSON.parse builds every level
+    if (deep !== null) throw new RangeError(`${what} is nested more than ${MAX_JSON_DEPTH} levels deep, at ${deep}`);
     try {
       data = JSON.parse(json);
     } catch (error) {
@@ -226,7 +232,7 @@ function parse(json, what) {
   if (data === null || typeof data !== 'object' || Array.isArray(data)) {
     throw new TypeError(`${what} must be an object, got ${show(data)}`);
   }
-  checkDepth(data, what);
+  if (typeof json !== 'string') checkDepth(data, what); // text was measured before it was parsed: no walk of 50,000 arrays again
   return data;
 }
 
@@ -291,7 +297,8 @@ export function objectFromJSON(given, path) {
     if (o.material === null || typeof o.material !== 'object' || Array.isArray(o.material)) {
       throw new TypeError(`${path}.material must be an object, got ${show(o.material)}`);
     }
-    material = named(() => new Material(onlyFields(o.material, MATERIAL_FIELDS, `${path}.material`)), `${path}.material.`);
+    const fields = onlyFields(o.material, MATERIAL_FIELDS, `${path}.material`); // its message has the path already
+    material = named(() => new Material(fields), `${path}.material.`);
   }
   const item = named(() => kind.build(o, material), `${path}.`);
   item.name = o.name ?? '';

@@ -145,6 +145,26 @@ export function readProgressCode(text, lessons) {
   return { progress };
 }
 
+/** Where a code starts in a line: its prefix, in any case, found in the line as typed (upper-casing changes lengths: ß, ﬁ). */
+const CODE_START = new RegExp(`${CODE_PREFIX}-`, 'gi');
+
+/**
+ * A line a teacher pasted, `Ana RT1-0103-…`: the name before the code (up to
+ * `maxName` characters, without the colon or spaces between) and what
+ * readProgressCode makes of the code. With no `RT1-` in it, the line's first
+ * word is read as the code, so the problem says what a code starts with.
+ * @param {string} line one line, trimmed
+ */
+export function readProgressLine(line, lessons, maxName = 40) {
+  let at = -1;
+  for (const match of line.matchAll(CODE_START)) at = match.index;
+  const code = at < 0 ? line : line.slice(at);
+  let end = Math.max(at, 0); // the name ends before the colon and spaces (a loop: a pattern would retry each run of spaces)
+  while (end > 0 && /[:\s]/.test(line[end - 1])) end--;
+  const name = line.slice(0, Math.min(end, maxName));
+  return { name, ...readProgressCode(code.split(/\s/)[0], lessons) };
+}
+
 /** Two hex digits that change when any one digit of `hex` does, or two change places. */
 function checksum(hex) {
   let sum = 0;

@@ -13,7 +13,7 @@
  */
 import { element, resolveParent, sketchNode } from './dom.js';
 import { workerCountBox } from './animation.js';
-import { checkOptions } from '../check.js';
+import { checkOptions, show } from '../check.js';
 
 /**
  * The example a link asks for with `?example=…`: when it names none of the
@@ -28,7 +28,7 @@ export function exampleInLink(search, examples) {
   const names = Object.keys(examples);
   const asked = new URLSearchParams(search).get('example');
   if (asked === null || names.includes(asked)) return { name: asked ?? names[0], problem: '' };
-  return { name: names[0], problem: `example must be ${names.join(', ')}; got "${asked}", so here is the ${names[0]} scene.` };
+  return { name: names[0], problem: `example must be ${names.join(', ')}; got ${show(asked)}, so here is the ${names[0]} scene.` };
 }
 
 /**

@@ -34,6 +34,8 @@ export { pixelCSV, pixelCSVLines, csvCell, rootsMeaning, routesAgree, AGREE_TOLE
  * demand: a 1,000-sphere table took a click a quarter of a second.
  */
 export const SPHERE_ROWS = 12;
+/** Area lights listed at a hit, each with its shadow rays; past them "and N more" (9,998 lights × 64 rays made 2 million elements). */
+export const AREA_LIGHTS_SHOWN = 8;
 
 /**
  * Creates an inspector panel that follows `view`'s selected pixel:
@@ -221,9 +223,7 @@ function hitName(hit) {
 }
 
 /** The name a light goes by in the panel (shapes have theirs in the record: shapeName). */
-function nameOf(object, fallback) {
-  return object?.name || fallback;
-}
+const nameOf = (object, fallback) => object?.name || fallback;
 
 /* ---------------- sections ---------------- */
 
@@ -289,14 +289,15 @@ function hitSection(r) {
   ]));
 }
 
-function lightsSection(r) {
-  const hit = r.hit;
+function lightsSection({ hit }) {
   if (!hit || hit.lights.length === 0) return element('div', { hidden: '' });
   const grouped = new Set((hit.areaLights ?? []).flatMap((g) => g.indices));
   const own = hit.lights.map((l, i) => i).filter((i) => !grouped.has(i));
   const parts = [];
   if (own.length) parts.push(table(['light', 'cos θ', 'shadow ray', 'adds (r, g, b)'], own.length, (k) => lightRow(hit.lights[own[k]], own[k]), 'Lights'));
-  (hit.areaLights ?? []).forEach((g, a) => parts.push(areaLightBlock(hit, g, a)));
+  const areas = hit.areaLights ?? [], more = areas.length - AREA_LIGHTS_SHOWN;
+  areas.slice(0, AREA_LIGHTS_SHOWN).forEach((g, a) => parts.push(areaLightBlock(hit, g, a)));
+  if (more > 0) parts.push(element('p', { class: 'rt-note', 'data-field': 'more-area-lights' }, `and ${more.toLocaleString('en')} more area lights, not shown`));
   return section(hit.areaLights?.length ? 'Lights (one shadow ray each; an area light, one per point of its disc)' : 'Lights (one shadow ray each)', ...parts);
 }
 
@@ -329,9 +330,8 @@ function addedCell(added, at) {
  */
 function areaLightBlock(hit, g, a) {
   const at = { 'data-area-light': String(a) };
-  const name = g.light.name ? `area light '${g.light.name}'` : `area light ${a + 1}`;
+  const name = g.light.name ? `area light '${shownName(g.light.name)}'` : `area light ${a + 1}`, rows = g.indices;
   const percent = Math.round((100 * g.reached) / g.samples);
-  const rows = g.indices;
   return element('div', { class: 'rt-area-light', ...at },
     element('p', {},
       element('span', { class: 'rt-value', 'data-field': 'area-reached', 'data-value': `${g.reached}/${g.samples}`, ...at },
@@ -424,7 +424,7 @@ function shapesSection(r) {
     const at = { 'data-shape': String(entry.index) };
     const lines = entry.rows.map(([label, n], i) => element('span', { class: 'rt-record-line' }, i ? '; ' : '', `${label} = `,
       value('record', n, { ...at, 'data-label': label })));
-    return element('tr', { class: entry.object === r.hit?.object ? 'rt-hit-row' : '' }, element('th', { scope: 'row' }, entry.name), element('td', { class: 'rt-wrap rt-record' }, ...lines));
+    return element('tr', { class: entry.object === r.hit?.object ? 'rt-hit-row' : '' }, element('th', { scope: 'row', ...nameTitle(entry.name) }, shownName(entry.name)), element('td', { class: 'rt-wrap rt-record' }, ...lines));
   });
   const note = shown.length < others.length && element('p', { class: 'rt-note' }, `Showing ${shown.length} of the ${others.length.toLocaleString('en')} other shapes: ones the ray meets.`);
   return section('Other shapes: each one\'s own test', table(['shape', 'its record (t: the nearest hit past 0)'], rows.length, (k) => rows[k], 'Other shapes'), ...[note].filter(Boolean));

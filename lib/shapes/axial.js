@@ -55,10 +55,18 @@ export function axialArguments(center, radius, height, options) {
   return { center: c, radius, height, capped, name, material };
 }
 
-/** A finite number greater than 0, else an error naming `field`. */
+/**
+ * The largest radius, height or cone slope (radius / height): past it a square
+ * in the quadratic (k²·B², r²) overflows to Infinity, and Infinity − Infinity
+ * is a NaN, a black pixel with no message (a cone of radius 1e308 drew one).
+ */
+export const MAX_SIZE = 1e30;
+
+/** A finite number greater than 0 and at most MAX_SIZE, else an error naming `field`. */
 function positive(value, field) {
   finiteNumber(value, field);
   if (value <= 0) throw new RangeError(`${field} must be greater than 0, got ${value}`);
+  if (value > MAX_SIZE) throw new RangeError(`${field} must be at most ${MAX_SIZE}, got ${value}`);
 }
 
 /**

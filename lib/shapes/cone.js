@@ -8,7 +8,7 @@
  */
 import { Vec3, set } from '../vec3.js';
 import { EPSILON } from '../constants.js';
-import { AxialShape, axialPacked, solveQuadratic, recordSide, capCrossing, withinSpan, orNull } from './axial.js';
+import { AxialShape, MAX_SIZE, axialPacked, solveQuadratic, recordSide, capCrossing, withinSpan, orNull } from './axial.js';
 
 const _roots = new Float64Array(2);
 const _normal = new Float64Array(3);
@@ -24,6 +24,7 @@ export class Cone extends AxialShape {
    */
   constructor(center, radius, height, options) {
     super(center, radius, height, options);
+    if (radius / height > MAX_SIZE) throw new RangeError(`radius / height must be at most ${MAX_SIZE} (a cone this flat is a disc), got ${radius / height}`);
   }
 
   /** Smallest t > tMin where the ray meets the cone, or Infinity. */

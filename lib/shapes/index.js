@@ -24,7 +24,7 @@ import { show } from '../check.js';
 
 /**
  * A shape class as the list knows it.
- * @typedef {Function & { type: string, fields: string[], build: (fields: object, material?: Material) => object, packed?: object, form?: { title: string, what: string, columns: object[] } }} ShapeClass
+ * @typedef {Function & { type: string, fields: string[], build: (fields: object, material?: Material) => object, check?: (shape: object, material?: Material) => void, packed?: object, form?: { title: string, what: string, columns: object[] } }} ShapeClass
  */
 
 /**

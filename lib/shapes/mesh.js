@@ -9,7 +9,7 @@ import { show } from '../check.js';
 import { shapeOptions } from '../material.js';
 import { EPSILON } from '../constants.js';
 import { BVH } from '../bvh.js';
-import { intersectTriangle, FLAT } from './triangle.js';
+import { intersectTriangle, FLAT, edgeScale, checkSides } from './triangle.js';
 import { parseOBJ } from './obj.js';
 import { materialToJSON } from './json.js';
 import { meshTriangles } from './tessellate.js';
@@ -179,6 +179,20 @@ export class Mesh {
     return new Mesh({ positions: o.positions, cells: o.cells }, material);
   }
 
+  /**
+   * A mesh checked again as it is now (a restart's check, lib/scene-check.js):
+   * when its positions and cells still hold what it was built from, nothing
+   * is built (restarts built every BVH again: 4 s for a million triangles);
+   * when they were changed in place, they are checked as the constructor
+   * does and the mesh takes the new triangles and BVH.
+   */
+  static check(mesh, material) {
+    if (sameData(mesh)) return;
+    const fresh = new Mesh({ positions: mesh.positions, cells: mesh.cells }, material);
+    for (const key of ['positions', 'cells', 'triangleCount', 'vertices', 'indices', 'normals', 'bvh', 'corners', 'size']) mesh[key] = fresh[key];
+    mesh.lastTriangle = -1;
+  }
+
   /** Its constructor's arguments in scene code: the data, then the material. */
   static codeArguments(o, material) {
     return [{ positions: o.positions, cells: o.cells }, material];
@@ -211,28 +225,57 @@ const PACKED = Object.freeze({
 /** `data`'s positions and cells, checked and copied as plain lists; an error names the field. */
 function checkData(data) {
   if (!data || typeof data !== 'object') throw new TypeError(`mesh data must be { positions, cells }, got ${show(data)}`);
-  const { positions, cells } = data;
+  const positions = Object.hasOwn(data, 'positions') ? data.positions : undefined; // its own fields: nothing from a prototype
+  const cells = Object.hasOwn(data, 'cells') ? data.cells : undefined;
   if (!Array.isArray(positions) || positions.length < 3) {
     throw new TypeError(`positions must be a list of at least 3 points [x, y, z], got ${show(positions)}`);
   }
   if (!Array.isArray(cells) || cells.length < 1) {
     throw new TypeError(`cells must be a list of triangles [i, j, k], at least one, got ${show(cells)}`);
   }
-  const points = positions.map((p, i) => (isTriple(p) ? p : vec3List(p, `positions[${i}]`)));
-  const checkedCells = cells.map((cell, i) => {
-    const list = /** @type {ArrayLike<number>} */ (cell);
-    if (!(Array.isArray(cell) || ArrayBuffer.isView(cell)) || list.length !== 3) {
-      throw new TypeError(`cells[${i}] must be a triple of vertex indices [i, j, k], got ${show(cell)}`);
+  const points = new Array(positions.length);
+  for (let i = 0; i < positions.length; i++) {
+    const p = entry(positions, i, 'positions');
+    points[i] = isTriple(p) ? [p[0], p[1], p[2]] : vec3List(p, `positions[${i}]`);
+  }
+  const checkedCells = new Array(cells.length);
+  for (let i = 0; i < cells.length; i++) checkedCells[i] = checkCell(entry(cells, i, 'cells'), i, points.length);
+  return { positions: points, cells: checkedCells };
+}
+
+/** list[i], or a TypeError when it is a hole (map and flat pass over holes, so they came out later as odd errors or nulls). */
+function entry(list, i, field) {
+  if (!Object.hasOwn(list, i)) throw new TypeError(`${field}[${i}] is missing (a hole in the list)`);
+  return list[i];
+}
+
+/** cells[i] as [i, j, k], each a whole index into `count` positions. */
+function checkCell(cell, i, count) {
+  const list = /** @type {ArrayLike<number>} */ (cell);
+  if (!(Array.isArray(cell) || ArrayBuffer.isView(cell)) || list.length !== 3) {
+    throw new TypeError(`cells[${i}] must be a triple of vertex indices [i, j, k], got ${show(cell)}`);
+  }
+  for (let k = 0; k < 3; k++) {
+    const index = list[k];
+    if (!Number.isInteger(index) || index < 0 || index >= count) {
+      throw new RangeError(`cells[${i}][${k}] must be a whole number from 0 to ${count - 1} (an index into positions), got ${show(index)}`);
     }
-    for (let k = 0; k < 3; k++) {
-      const index = list[k];
-      if (!Number.isInteger(index) || index < 0 || index >= points.length) {
-        throw new RangeError(`cells[${i}][${k}] must be a whole number from 0 to ${points.length - 1} (an index into positions), got ${show(index)}`);
-      }
-    }
-    return [list[0], list[1], list[2]];
-  });
-  return { positions: points.map((p) => [p[0], p[1], p[2]]), cells: checkedCells };
+  }
+  return [list[0], list[1], list[2]];
+}
+
+/** Do the mesh's positions and cells hold just the numbers it was built from? One pass, no allocation. */
+function sameData({ positions, cells, vertices, indices }) {
+  if (!Array.isArray(positions) || !Array.isArray(cells) || 3 * positions.length !== vertices.length || 3 * cells.length !== indices.length) return false;
+  for (let i = 0; i < positions.length; i++) {
+    const p = positions[i];
+    if (!Array.isArray(p) || p.length !== 3 || p[0] !== vertices[3 * i] || p[1] !== vertices[3 * i + 1] || p[2] !== vertices[3 * i + 2]) return false;
+  }
+  for (let i = 0; i < cells.length; i++) {
+    const c = cells[i];
+    if (!Array.isArray(c) || c.length !== 3 || c[0] !== indices[3 * i] || c[1] !== indices[3 * i + 1] || c[2] !== indices[3 * i + 2]) return false;
+  }
+  return true;
 }
 
 /** Is p already three finite numbers [x, y, z] (the common case, checked without a Vec3)? */
@@ -282,8 +325,11 @@ function triangleNormals(vertices, indices) {
   const normals = new Float64Array(indices.length);
   for (let i = 0; i < indices.length / 3; i++) {
     const ia = 3 * indices[3 * i], ib = 3 * indices[3 * i + 1], ic = 3 * indices[3 * i + 2];
-    const e1x = vertices[ib] - vertices[ia], e1y = vertices[ib + 1] - vertices[ia + 1], e1z = vertices[ib + 2] - vertices[ia + 2];
-    const e2x = vertices[ic] - vertices[ia], e2y = vertices[ic + 1] - vertices[ia + 1], e2z = vertices[ic + 2] - vertices[ia + 2];
+    let e1x = vertices[ib] - vertices[ia], e1y = vertices[ib + 1] - vertices[ia + 1], e1z = vertices[ib + 2] - vertices[ia + 2];
+    let e2x = vertices[ic] - vertices[ia], e2y = vertices[ic + 1] - vertices[ia + 1], e2z = vertices[ic + 2] - vertices[ia + 2];
+    checkSides(e1x, e1y, e1z, e2x, e2y, e2z, `cells[${i}]: `);
+    const k = edgeScale(e1x, e1y, e1z, e2x, e2y, e2z); // exact: the same bits, the test relative to the size
+    e1x *= k; e1y *= k; e1z *= k; e2x *= k; e2y *= k; e2z *= k;
     const nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
     const length = Math.hypot(nx, ny, nz);
     if (!(length > FLAT * Math.hypot(e1x, e1y, e1z) * Math.hypot(e2x, e2y, e2z))) {

@@ -9,8 +9,12 @@
 import { show } from '../check.js';
 import { checkArea } from './triangle.js';
 
-/** A decimal number as OBJ writes one (no hex, no empty field, no "Infinity"). */
-const NUMBER = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
+/**
+ * A decimal number as OBJ writes one (no hex, no empty field, no "Infinity").
+ * One way to match each text: `\d+\.?\d*` let the digits before and after an
+ * absent point share a run, retried at every split (40,000 digits: 2 s).
+ */
+const NUMBER = /^[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][+-]?\d+)?$/;
 /** A face corner: a vertex index, maybe followed by /texture and /normal indices. */
 const CORNER = /^([+-]?\d+)(\/\d*(\/[+-]?\d*)?)?$/;
 
@@ -22,9 +26,10 @@ const CORNER = /^([+-]?\d+)(\/\d*(\/[+-]?\d*)?)?$/;
 export function parseOBJ(text) {
   if (typeof text !== 'string') throw new TypeError(`OBJ text must be a string, got ${show(text)}`);
   const positions = [], cells = [], cellLines = [];
-  const lines = text.split(/\r\n|\r|\n/);
+  const lines = text.replaceAll('\r\n', '\n').replaceAll('\r', '\n').split('\n'); // no pattern: plain text, linear
   for (let i = 0; i < lines.length; i++) {
-    const line = lines[i].replace(/#.*/, '').trim();
+    const hash = lines[i].indexOf('#');
+    const line = (hash < 0 ? lines[i] : lines[i].slice(0, hash)).trim();
     if (!line) continue;
     const [keyword, ...fields] = line.split(/\s+/);
     const where = `OBJ line ${i + 1}`;

@@ -7,7 +7,7 @@
  * sphere again: no single answer. The ray is inside when u ≥ 0, v ≥ 0 and
  * u + v ≤ 1.
  */
-import { toVec3, Vec3, sub, cross, dot, length, normalize } from '../vec3.js';
+import { toVec3, Vec3, sub, cross, dot, length, normalize, scale } from '../vec3.js';
 import { shapeOptions } from '../material.js';
 import { EPSILON } from '../constants.js';
 import { vector, materialToJSON } from './json.js';
@@ -21,6 +21,22 @@ export const PARALLEL = 1e-12;
 
 /** |e1 × e2| this small relative to |e1|·|e2|: the corners are on one line. */
 export const FLAT = 1e-12;
+
+/**
+ * The longest side a triangle may have: past about 1e77 the determinant's
+ * square overflows and the triangle is taken as parallel to every ray.
+ */
+export const MAX_SIDE = 1e30;
+
+/**
+ * A power of two that brings the largest of six numbers (two edges) near 1.
+ * Scaling by it is exact, so the area test is relative to the triangle's size
+ * (sides of 1e-200 do not square to 0) and a normal keeps its bits.
+ */
+export function edgeScale(e1x, e1y, e1z, e2x, e2y, e2z) {
+  const largest = Math.max(Math.abs(e1x), Math.abs(e1y), Math.abs(e1z), Math.abs(e2x), Math.abs(e2y), Math.abs(e2z));
+  return largest > 0 ? 2 ** Math.min(1000, -Math.floor(Math.log2(largest))) : 1;
+}
 
 export class Triangle {
   /**
@@ -62,7 +78,8 @@ export class Triangle {
   /** The unit normal of the front, e1 × e2 (the same everywhere on it). */
   normalAt(point, out = new Vec3()) {
     const e1 = sub(new Vec3(), this.b, this.a), e2 = sub(new Vec3(), this.c, this.a);
-    return normalize(out, cross(out, e1, e2));
+    const k = edgeScale(e1.x, e1.y, e1.z, e2.x, e2.y, e2.z);
+    return normalize(out, cross(out, scale(e1, e1, k), scale(e2, e2, k)));
   }
 
   /** The world-space box around the triangle. */
@@ -122,9 +139,20 @@ const PACKED = Object.freeze({
 /** A RangeError when a, b, c have (next to) no area; `where` says which triangle ("cells[3] " or ""). */
 export function checkArea(a, b, c, where) {
   const e1 = sub(new Vec3(), b, a), e2 = sub(new Vec3(), c, a);
+  checkSides(e1.x, e1.y, e1.z, e2.x, e2.y, e2.z, where);
+  const k = edgeScale(e1.x, e1.y, e1.z, e2.x, e2.y, e2.z);
+  scale(e1, e1, k);
+  scale(e2, e2, k);
   const area2 = length(cross(new Vec3(), e1, e2));
   if (!(area2 > FLAT * length(e1) * length(e2))) {
     throw new RangeError(`${where}a, b, c must not lie on one line: the triangle has zero area`);
+  }
+}
+
+/** A RangeError when an edge from a is longer than MAX_SIDE along an axis. */
+export function checkSides(e1x, e1y, e1z, e2x, e2y, e2z, where) {
+  if (Math.max(Math.abs(e1x), Math.abs(e1y), Math.abs(e1z), Math.abs(e2x), Math.abs(e2y), Math.abs(e2z)) > MAX_SIDE) {
+    throw new RangeError(`${where}a side is longer than ${MAX_SIDE}: too big to trace (its determinant overflows)`);
   }
 }
 

@@ -6,7 +6,8 @@
 // the ones that fail first, the time limit has room for a loaded machine.
 import { test, expect } from '@playwright/test';
 import { watchConsole, waitForDone, clickPixel } from './helpers.js';
-import { Scene, Sphere } from '../../lib/index.js';
+import { Scene, Sphere, Plane, Cylinder, Mesh, AreaLight, PointLight, classScene } from '../../lib/index.js';
+import { MAX_SHADOW_RAYS, MAX_SCENE_TRIANGLES } from '../../lib/scene-work.js';
 import { sceneToJSON } from '../../lib/serialize.js';
 import { encodeSceneLink } from '../../lib/p5/scene-link.js';
 import { SPHERE_ROWS } from '../../lib/p5/inspector.js';
@@ -279,4 +280,67 @@ test.describe(`${MAX_SCENE_OBJECTS.toLocaleString('en')} spheres (the limit) in 
     await expect(page.locator('[data-table="sphere"] tbody tr')).toHaveCount(7); // the class scene's spheres
     expect(errors).toEqual([]);
   });
+});
+
+/** Scenes at the limits of work (lib/scene-work.js), each over a floor: the most shadow rays, the most triangles, the most cylinders. */
+const AT_THE_LIMITS = {
+  'the class scene (for comparison)': () => sceneToJSON(classScene()),
+  'area lights': () => {
+    const scene = new Scene({ background: [0.8, 0.9, 1] }).add(new Plane([0, -2, 0], [0, 1, 0], { color: 'white' })).add(new Sphere([0, 0, -12], 2, { color: 'pink' }));
+    for (let i = 0; i < MAX_SHADOW_RAYS / 64; i++) scene.add(new AreaLight([i - 8, 12, -10], 1, { samples: 64, intensity: 1 / 16 }));
+    return sceneToJSON(scene);
+  },
+  meshes: () => {
+    const scene = new Scene({ background: [0.8, 0.9, 1] }).add(new PointLight([0, 20, 0]));
+    const per = 800, meshes = MAX_SCENE_TRIANGLES / per;
+    for (let m = 0; m < meshes; m++) {
+      const positions = [], cells = [];
+      for (let i = 0; i < per + 2; i++) positions.push([(m % 5) * 3 - 6 + (i % 2) * 0.5, Math.floor(m / 5) * 2 - 5 + (i / per) * 1.5, -30 - (i % 3) * 0.1]);
+      for (let i = 0; i < per; i++) cells.push([i, i + 1, i + 2]);
+      scene.add(new Mesh({ positions, cells }, { color: [m / meshes, 0.5, 0.5] }));
+    }
+    return sceneToJSON(scene);
+  },
+  cylinders: () => {
+    const scene = new Scene({ background: [0.9, 0.9, 1] }).add(new PointLight([0, 30, -20]));
+    for (let i = 0; i < MAX_SCENE_OBJECTS - 1; i++) {
+      const col = i % 100, row = Math.floor(i / 100);
+      scene.add(new Cylinder([(col - 49.5) * 0.3, (row - 50) * 0.3, -60], 0.12, 0.2, { color: [col / 100, row / 100, 0.5] }));
+    }
+    return sceneToJSON(scene);
+  },
+};
+
+test.describe('area lights, meshes and cylinders at the limit in sketch 05', () => {
+  const TASK_LIMIT = 200; // ms of the main thread's time
+  for (const [name, make] of Object.entries(AT_THE_LIMITS)) {
+    test(`${name}: opening the link, a click and arrow keys (under 200 ms a task: npm run bench:big-scene)`, async ({ page }) => {
+      test.setTimeout(600_000); // tracing at the limit on a busy machine
+      const errors = watchConsole(page);
+      const link = `/sketches/05-value-boxes.html#scene=${await encodeSceneLink(make())}`;
+      const tasks = {};
+      const step = async (label, action) => { tasks[label] = await longestTaskOf(page, action); };
+      await page.goto('/sketches/05-value-boxes.html?before');
+      await waitForDone(page);
+      await step('open', async () => {
+        await page.goto(link);
+        await waitForDone(page, 540_000);
+      });
+      await expect(page.locator('[data-link-problem]')).toBeEmpty();
+      const panel = page.locator('[data-inspector]');
+      await step('click', async () => {
+        await clickPixel(page.locator('[data-tracer]'), 80, 60);
+        await expect(panel).toHaveAttribute('data-x', '80');
+      });
+      await step('arrow', async () => {
+        await page.keyboard.press('ArrowDown');
+        await expect(panel).toHaveAttribute('data-y', '61');
+      });
+      test.info().annotations.push({ type: 'longest task, main-thread ms (wall-clock ms)', description: Object.entries(tasks).map(([k, { cpu, wall }]) => `${k} ${cpu} (${wall})`).join(', ') });
+      if (process.env.RT_BENCH) {
+        for (const [label, { cpu }] of Object.entries(tasks)) expect(cpu, `the longest task of "${label}"`).toBeLessThan(TASK_LIMIT);
+      }
+      expect(errors).toEqual([]);
+    });
+  }
 });

@@ -2,6 +2,8 @@
 // the progress kept in the browser, shown in the gallery, and read on the teacher's page.
 import { test, expect } from '@playwright/test';
 import { clickPixel, expectQuietConsole, waitForDone } from './helpers.js';
+import { progressCode } from '../../lib/tasks.js';
+import { LESSONS } from '../../lib/lesson-tasks.js';
 
 expectQuietConsole(test);
 
@@ -270,4 +272,33 @@ test('the gallery shows each lesson\'s progress, the achievements and a code the
   await page.goto('/');
   await page.getByRole('button', { name: 'Start again: every page' }).click();
   await expect(page.locator('a[href$="01-rays-through-pixels.html"] [data-progress]')).toHaveText('0 of 6');
+});
+
+test('the teacher\'s page reads a code after any name: ß and ﬁ change length when upper-cased, "(started)" holds RT', async ({ page }) => {
+  const code = progressCode({ '01': ['select'] }, LESSONS);
+  await page.goto('/teacher.html');
+  await page.locator('#codes').fill([`Weiß ${code}`, `ﬁona: ${code}`, `Ana (started) ${code}`, `Straße ﬁﬁ ${code.toLowerCase()}`].join('\n'));
+  await page.getByRole('button', { name: 'Read the codes' }).click();
+  await expect(page.locator('[data-teacher-summary]')).toHaveText('4 of 4 codes read.');
+  await expect(page.locator('[data-student="read"] h2')).toHaveText(['Weiß', 'ﬁona', 'Ana (started)', 'Straße ﬁﬁ']);
+});
+
+test('the teacher\'s page reads 200 codes without a long task', async ({ page }) => {
+  await page.addInitScript(() => {
+    window.longestTask = 0;
+    new PerformanceObserver((list) => {
+      for (const e of list.getEntries()) window.longestTask = Math.max(window.longestTask, e.duration);
+    }).observe({ type: 'longtask', buffered: true });
+  });
+  const all = Object.fromEntries(LESSONS.map((l) => [l.page, l.tasks.map((t) => t.id)]));
+  const lines = Array.from({ length: 200 }, (_, i) => `Student ${i} ${progressCode(all, LESSONS)}`);
+  await page.goto('/teacher.html');
+  await page.locator('#codes').fill(lines.join('\n'));
+  await page.evaluate(() => { window.longestTask = 0; });
+  await page.getByRole('button', { name: 'Read the codes' }).click();
+  await expect(page.locator('[data-teacher-summary]')).toHaveText('200 of 200 codes read.');
+  await expect(page.locator('[data-student="read"]')).toHaveCount(200);
+  const longest = await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => setTimeout(() => resolve(window.longestTask), 300))));
+  test.info().annotations.push({ type: 'longest task', description: `${Math.round(longest)} ms` });
+  expect(longest).toBeLessThan(200);
 });

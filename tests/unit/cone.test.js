@@ -179,3 +179,25 @@ describe('open cones against the same reference', () => {
     expect(hitsSeen).toBeGreaterThan(500);
   });
 });
+
+describe('huge and flat cones: refused past the limit with a message, no NaN within it', () => {
+  it('a radius of 1e308 and a cone flatter than the limit are refused, naming the field', () => {
+    expect(() => new Cone([0, 0, -20], 1e308, 1)).toThrow(/^radius must be at most 1e\+30, got 1e\+308$/);
+    expect(() => new Cone([0, 0, -20], 1, 1e31)).toThrow(/^height must be at most 1e\+30/);
+    expect(() => new Cone([0, 0, -20], 1e10, 1e-25)).toThrow(/^radius \/ height must be at most 1e\+30 \(a cone this flat is a disc\), got 1e\+35$/);
+  });
+
+  it.each([[1e30, 1], [1e30, 1e30], [1e-5, 1e-30], [1, 1e-29], [1e-300, 1]])('radius %s, height %s: every t finite, every normal a unit vector, no NaN in the record', (radius, height) => {
+    const cone = new Cone([0, 0, -20], radius, height);
+    const random = seeded(7);
+    for (let i = 0; i < 200; i++) {
+      const ray = new Ray([0, 0, 0], randomDirection(random));
+      const record = cone.intersect(ray);
+      for (const [key, value] of Object.entries(record)) if (typeof value === 'number') expect(value, key).not.toBeNaN();
+      const t = cone.hit(ray);
+      if (!Number.isFinite(t)) continue;
+      const n = cone.normalAt(new Vec3(ray.direction.x * t, ray.direction.y * t, ray.direction.z * t));
+      expect(Math.hypot(n.x, n.y, n.z)).toBeCloseTo(1, 9);
+    }
+  });
+});

@@ -146,6 +146,7 @@ describe('bad values are refused, naming the field', () => {
     [() => new Cylinder([0, 0, 0], 1, 0), RangeError, /height must be greater than 0/],
     [() => new Cylinder([0, 0, 0], 0, 1), RangeError, /radius must be greater than 0/],
     [() => new Cylinder([0, 0, 0], 1, NaN), TypeError, /height must be a finite number/],
+    [() => new Cylinder([0, 0, 0], 1e308, 1), RangeError, /^radius must be at most 1e\+30, got 1e\+308$/],
     [() => new Cylinder([0, Infinity, 0], 1, 1), TypeError, /center\.y must be a finite number/],
     [() => new Cylinder([0, 0, 0], 1, 1, { capped: 'yes' }), TypeError, /capped must be true or false/],
     [() => new Cylinder([0, 0, 0], 1, 1, { colour: 'red' }), TypeError, /colour/],

@@ -20,4 +20,10 @@ describe('exampleInLink', () => {
     });
     expect(exampleInLink('?example=', EXAMPLES).problem).toMatch(/got "", so here is the still scene\.$/);
   });
+
+  it('cuts a long name in its message (a 12,000-character link was echoed whole)', () => {
+    const { problem } = exampleInLink(`?example=${'x'.repeat(12_000)}`, EXAMPLES);
+    expect(problem.length).toBeLessThan(200);
+    expect(problem).toMatch(/^example must be still, animated, workers; got "x+…, so here is the still scene\.$/);
+  });
 });

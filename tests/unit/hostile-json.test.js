@@ -39,6 +39,22 @@ describe('deep nesting', () => {
     expect(() => cameraFromJSON(`{"width":${nested(10_000)}}`)).toThrow(/camera is nested more than 32 levels deep, at width\[0\]/);
   });
 
+  it('is refused while reading the text, before JSON.parse builds the levels: deep text that is cut short is refused for its depth', () => {
+    const cut = `{"objects":[{"type":"sphere","material":{"color":${'['.repeat(3_500_000)}`; // 3.5 million levels, never closed
+    const error = errorOf(() => sceneFromJSON(cut));
+    expect(error).toBeInstanceOf(RangeError);
+    expect(error.message).toMatch(/^scene is nested more than 32 levels deep, at objects\[0\]\.material\.color\[0\]\[0\]/);
+  });
+
+  it('the reading before JSON.parse names the same path as the walk after it, brackets and quotes in text passed over', async () => {
+    const { tooDeepAt } = await import('../../lib/json-depth.js');
+    const text = `{"q[":[1,"[[{\\"[",{"b":2,"c":[0,0,${nested(40)}]}]}`; // a bracket in a key, brackets and an escaped quote in a string
+    expect(tooDeepAt(text, 32)).toBe(`q[[2].c[2]${'[0]'.repeat(28)}`);
+    expect(errorOf(() => sceneFromJSON(JSON.parse(text))).message).toBe(`scene is nested more than 32 levels deep, at ${tooDeepAt(text, 32)}`);
+    expect(tooDeepAt(nested(32), 32)).toBeNull();
+    expect(tooDeepAt(nested(33), 32)).toBe('[0]'.repeat(32));
+  });
+
   it('an ordinary scene is far from the limit', () => {
     expect(sceneFromJSON('{"objects":[{"type":"sphere","center":[0,0,-5],"radius":1,"material":{"color":[1,0,0]}}]}').objects).toHaveLength(1);
   });

@@ -3,7 +3,7 @@ import bunny from 'bunny';
 import { Ray, EPSILON } from '../../lib/index.js';
 import { Vec3 } from '../../lib/vec3.js';
 import { Mesh } from '../../lib/shapes/mesh.js';
-import { triangleHit } from '../../lib/shapes/triangle.js';
+import { triangleHit, Triangle } from '../../lib/shapes/triangle.js';
 import { seeded, randomDirection } from './convex-reference.js';
 
 /** The loop over every triangle that the BVH must agree with: the nearest t, the lowest index on a tie. */
@@ -150,6 +150,38 @@ describe('bad data is refused, naming the field', () => {
     const mesh = new Mesh({ positions: [{ x: 0, y: 0, z: 0 }, { x: 1, y: 0, z: 0 }, { x: 0, y: 1, z: 0 }], cells: [[0, 1, 2]] }, { name: 'flag', color: 'red' });
     expect(mesh.name).toBe('flag');
     expect(mesh.hit(new Ray([0.2, 0.2, 1], [0, 0, -1]))).toBe(1);
+  });
+});
+
+describe('data as written, read as written', () => {
+  const square = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0]];
+  it('a hole in positions or cells is named, not "is not iterable" or a null written back', () => {
+    const holeyPositions = [[0, 0, 0], , [1, 1, 0], [0, 1, 0]]; // eslint-disable-line no-sparse-arrays
+    expect(() => new Mesh({ positions: holeyPositions, cells: [[0, 2, 3]] })).toThrow(new TypeError('positions[1] is missing (a hole in the list)'));
+    const holeyCells = [[0, 1, 2], , [0, 2, 3]]; // eslint-disable-line no-sparse-arrays
+    expect(() => new Mesh({ positions: square, cells: holeyCells })).toThrow(new TypeError('cells[1] is missing (a hole in the list)'));
+  });
+
+  it('reads positions and cells as the data\'s own fields, not through its prototype', () => {
+    const inherited = Object.create({ positions: square, cells: [[0, 1, 2]] });
+    expect(() => new Mesh(inherited)).toThrow(/^positions must be a list/);
+    expect(() => new Mesh(Object.assign(Object.create({ cells: [[0, 1, 2]] }), { positions: square }))).toThrow(/^cells must be a list/);
+  });
+
+  it.each([1e-200, 1e-300, 1e-20, 1e20, 1e30])('a triangle with sides of %s has area: the test is relative to its size, the normal a unit vector', (size) => {
+    const positions = [[0, 0, 0], [size, 0, 0], [0, size, 0]];
+    const mesh = new Mesh({ positions, cells: [[0, 1, 2]] });
+    expect(mesh.normals[2]).toBe(1);
+    const n = new Triangle(...positions).normalAt(new Vec3(0, 0, 0));
+    expect([n.x, n.y, n.z]).toEqual([0, 0, expect.closeTo(1, 15)]);
+    expect(() => new Mesh({ positions: [[0, 0, 0], [size, 0, 0], [size / 2, 0, 0]], cells: [[0, 1, 2]] })).toThrow(/zero area/);
+    expect(() => new Triangle([0, 0, 0], [size, size, 0], [size / 2, size / 2, 0])).toThrow(/zero area/);
+  });
+
+  it('a side longer than the limit is refused as too long, not as zero area', () => {
+    const positions = [[0, 0, 0], [1e200, 0, 0], [0, 1e200, 0]];
+    expect(() => new Mesh({ positions, cells: [[0, 1, 2]] })).toThrow(/^cells\[0\]: a side is longer than 1e\+30/);
+    expect(() => new Triangle(...positions)).toThrow(/^a side is longer than 1e\+30/);
   });
 });
 

@@ -336,8 +336,11 @@ describe('the time budget (a fake clock)', () => {
         p.step(0); // past the small first coarse pass
         const before = p.traced;
         p.step(budgetMs);
-        const checks = Math.max(1, Math.ceil(budgetMs / CHECK_EVERY));
-        expect(p.traced - before).toBe(checks * CHECK_EVERY);
+        // a pixel of 1 ms is dearer than budget / CHECK_EVERY for a budget under 16 ms: then one pixel between looks
+        const traced = p.traced - before;
+        if (budgetMs < CHECK_EVERY) expect(traced, `${mode}, ${budgetMs} ms`).toBe(Math.max(1, budgetMs));
+        expect(traced).toBeGreaterThanOrEqual(budgetMs);
+        expect(traced).toBeLessThan(budgetMs + CHECK_EVERY);
       }
     }
   });
@@ -345,12 +348,13 @@ describe('the time budget (a fake clock)', () => {
   it('uses the default budget of 8 ms, or the one given at construction', () => {
     const { p } = timed('scanline', 0.5);
     p.step();
-    expect(p.traced).toBe(16); // 16 pixels × 0.5 ms reach 8 ms at the first check
+    expect(p.traced).toBe(17); // 1 pixel (a render's pace unknown), then 16 × 0.5 ms: 8.5 ms, past 8 at the second check
     const clock = fakeClock();
     const q = new ProgressiveRenderer({ scene, camera, mode: 'scanline', budgetMs: 20, now: clock.now,
       shader: (...a) => { clock.t += 0.5; renderPixel(...a); } });
     q.step();
-    expect(q.traced).toBe(48);
+    expect(q.traced * 0.5).toBeGreaterThanOrEqual(20);
+    expect(q.traced * 0.5).toBeLessThan(20 + CHECK_EVERY * 0.5);
   });
 
   /**
@@ -391,6 +395,21 @@ describe('the time budget (a fake clock)', () => {
       const seen = steps(mode, 8, (x, y) => (y < 120 ? 0.001 : 0.004));
       for (const { ms } of seen) expect(ms).toBeLessThanOrEqual(8 + CHECK_EVERY * 0.004 + 1e-9);
     }
+  });
+
+  it('holds its budget when one pixel costs more than the whole budget: one pixel a step, from the first step on', () => {
+    for (const mode of ['coarse', 'scanline']) {
+      const seen = steps(mode, 8, (x, y) => (y < 120 ? 0.001 : 250)); // 250 ms a pixel: 10,000 shadow rays each
+      const dear = seen.filter(({ ms }) => ms >= 250);
+      expect(dear.length).toBeGreaterThan(10);
+      // One dear pixel a step, not 16 (4 s a step); once a run sized by the cheap pixels meets the first dear ones, it may overrun.
+      expect(dear.filter(({ ms }) => ms > 250 + 8 + 1e-6).length, mode).toBeLessThanOrEqual(1);
+    }
+    const camera = new Camera({ width: 8, height: 8 });
+    const clock = fakeClock();
+    const p = new ProgressiveRenderer({ scene, camera, mode: 'scanline', now: clock.now, shader: (...a) => { clock.t += 250; renderPixel(...a); } });
+    p.step(8);
+    expect(p.traced).toBe(1); // the first step of a render too
   });
 
   it('stays near its budget when the pixels get a hundred times dearer (a lit sphere among 10,000, after the background)', () => {

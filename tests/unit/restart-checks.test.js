@@ -1,9 +1,9 @@
 // A scene or camera changed in place after a ProgressiveRenderer was made is
 // checked again by restart(), with the constructors' own messages; a refused
 // restart leaves the last picture as it was.
-import { describe, it, expect } from 'vitest';
+import { describe, it, expect, vi } from 'vitest';
 import { ProgressiveRenderer } from '../../lib/progressive.js';
-import { render, Camera, Scene, Sphere, Plane, Box, PointLight, classScene } from '../../lib/index.js';
+import { render, Camera, Scene, Sphere, Plane, Box, Mesh, PointLight, SpotLight, AreaLight, classScene } from '../../lib/index.js';
 import * as sceneCheck from '../../lib/scene-check.js';
 
 const camera = () => new Camera({ width: 16, height: 12 });
@@ -64,6 +64,60 @@ describe('restart() after the scene changed in place', () => {
     scene.lights[0].source.intensity = 1;
     scene.lights[0].source.attenuation = '0.1';
     expect(() => r.restart()).toThrow('lights[0].attenuation must be a finite number, got "0.1"');
+  });
+});
+
+describe('restart() and a mesh', () => {
+  const square = () => new Mesh({ positions: [[-1, -1, -5], [1, -1, -5], [1, 1, -5], [-1, 1, -5]], cells: [[0, 1, 2], [0, 2, 3]] });
+
+  it('builds no BVH again while the mesh is as it was built', () => {
+    const scene = new Scene().add(square()).add(new PointLight([0, 5, 0]));
+    const r = finished(scene);
+    const { bvh } = scene.objects[0];
+    const build = vi.spyOn(Mesh, 'build');
+    r.restart();
+    r.restart();
+    expect(build).not.toHaveBeenCalled();
+    expect(scene.objects[0].bvh).toBe(bvh);
+    build.mockRestore();
+  });
+
+  it('checks one changed in place, and traces its new triangles', () => {
+    const scene = new Scene({ background: [0, 0, 1] }).add(square()).add(new PointLight([0, 5, 0]));
+    const r = finished(scene);
+    const mesh = scene.objects[0];
+    mesh.positions[0][0] = NaN;
+    expect(() => r.restart()).toThrow(/^objects\[0\]\.positions\[0\]\.x must be a finite number/);
+    mesh.positions[0][0] = -1;
+    for (const p of mesh.positions) p[2] = -500; // far away: a speck
+    r.restart();
+    while (!r.done) r.step(1000);
+    const moved = new Scene({ background: [0, 0, 1] }).add(new Mesh({ positions: mesh.positions, cells: mesh.cells })).add(new PointLight([0, 5, 0]));
+    expect(r.buffer).toEqual(render(moved, camera()));
+  });
+});
+
+describe('restart() after a spot or area light changed in place', () => {
+  it('checks them as it checks point lights, naming the light and the field', () => {
+    const scene = new Scene().add(new Sphere([0, 0, -5], 1)).add(new SpotLight([0, 5, -5], [0, 0, -5], { angle: 20 })).add(new AreaLight([0, 5, -5], 1));
+    const r = finished(scene);
+    const spot = scene.lights[0].source, area = scene.lights[1].source;
+    spot.angle = 120;
+    expect(() => r.restart()).toThrow('lights[0].angle must be between 0 and 90 degrees (not included), got 120');
+    spot.angle = 20;
+    spot.target = [0, 5, -5];
+    expect(() => r.restart()).toThrow(/^lights\[0\]\.target must not be the light's own position/);
+    spot.target = [0, 0, -5];
+    spot.intensity = -1;
+    expect(() => r.restart()).toThrow('lights[0].intensity must be between 0 and 1000000, got -1');
+    spot.intensity = 1;
+    area.samples = 1e6;
+    expect(() => r.restart()).toThrow(/^lights\[1\]\.samples must be a square number of shadow rays/);
+    area.samples = 16;
+    area.radius = null;
+    expect(() => r.restart()).toThrow('lights[1].radius must be a finite number, got null');
+    area.radius = 1;
+    expect(() => r.restart()).not.toThrow();
   });
 });
 

@@ -1,6 +1,6 @@
 // Progress without a page: the stored text, read strictly, and the progress code for the teacher.
 import { describe, it, expect } from 'vitest';
-import { PROGRESS_KEY, parseProgress, serializeProgress, markDone, clearProgress, pageProgress, progressText, achievements, progressCode, readProgressCode } from '../../lib/tasks.js';
+import { PROGRESS_KEY, parseProgress, serializeProgress, markDone, clearProgress, pageProgress, progressText, achievements, progressCode, readProgressCode, readProgressLine } from '../../lib/tasks.js';
 import { LESSONS, lessonOf } from '../../lib/lesson-tasks.js';
 
 const all = Object.fromEntries(LESSONS.map((l) => [l.page, l.tasks.map((t) => t.id)]));
@@ -94,5 +94,32 @@ describe('the progress code', () => {
     for (const [i, ch] of [...hex].entries()) sum = (sum + (i + 1) * parseInt(ch, 16)) % 251;
     const code = ['RT1', ...hex.match(/.{4}/g), sum.toString(16).toUpperCase().padStart(2, '0')].join('-');
     expect(readProgressCode(code, LESSONS).problem).toBe('page 08 has no task 4');
+  });
+});
+
+describe('a line the teacher pasted', () => {
+  const code = progressCode({ '01': ['select'] }, LESSONS);
+
+  it('finds the code after any name, in the line as typed (ß, ﬁ and İ change length when upper-cased; "started" holds RT)', () => {
+    for (const name of ['Weiß', 'ﬁona', 'Ana (started)', 'İpek', 'Straße ﬁﬁ', 'ART-Bart']) {
+      for (const line of [`${name} ${code}`, `${name}: ${code}`, `${name}:${code}`, `${name} ${code.toLowerCase()}`]) {
+        const read = readProgressLine(line, LESSONS);
+        expect(read.name, line).toBe(name);
+        expect(read.progress, line).toEqual({ '01': ['select'] });
+      }
+    }
+    expect(readProgressLine(code, LESSONS)).toEqual({ name: '', progress: { '01': ['select'] } });
+  });
+
+  it('says why a line holds no code, and cuts the name', () => {
+    expect(readProgressLine('Ana 0100-0000', LESSONS)).toEqual({ name: '', problem: 'a progress code starts with RT1-' });
+    expect(readProgressLine(`${'x'.repeat(100)} ${code}`, LESSONS, 40).name).toBe('x'.repeat(40));
+  });
+
+  it('reads a line in time proportional to its length', async () => {
+    const { timeRatio } = await import('./linear-time.js');
+    expect(timeRatio((line) => readProgressLine(line, LESSONS), (n) => `a${' '.repeat(n)}b ${code}`)).toBeLessThan(400);
+    expect(timeRatio((line) => readProgressLine(line, LESSONS), (n) => `${'rt1-'.repeat(n / 4)}`)).toBeLessThan(400);
+    expect(timeRatio((line) => readProgressLine(line, LESSONS), (n) => `${':'.repeat(n)}x ${code}`)).toBeLessThan(400);
   });
 });
