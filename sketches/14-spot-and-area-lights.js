@@ -60,6 +60,7 @@ new p5((p) => {
     p.createInspector({ view: soft, parent: 'sketch' });
     p.createSceneView({ view: soft, parent: 'sketch', orbit: { yaw: 55, pitch: 22, distance: 30 }, planeDistance: 3 }); // from the side: the disc, the ball and the pixel's shadow rays
     soft.select(73, 33); // on the floor at the rim of the ball's shadow: half the disc's points hidden
+    p.createTaskList({ page: '14', view: soft }); // the page's tasks, ticked off as they are done
   };
 
   /** Radio buttons for one setting; a change traces both pictures again. */
