@@ -118,6 +118,9 @@ test('the rewrite does what the editor does to a loop: a 100 ms time check that 
   expect(hits).toEqual([3]);
 });
 
+/** The console's lines, without p5.sound's own banner (Tone.js prints its version when it loads). */
+const ours = (lines, version) => (P5S[version].sound ? lines.filter((line) => !/^log: %c \* Tone\.js r\d+ \* /.test(line)) : lines);
+
 /** Every pixel of the tracer view's canvas written (a pixel not traced yet is transparent). */
 function unwrittenPixels(canvas) {
   return canvas.evaluate((c) => {
@@ -178,7 +181,7 @@ for (const version of Object.keys(P5S)) {
           expect(await results.locator('.hw-failed .hw-mark').first().evaluate((m) => getComputedStyle(m).color)).toBe('rgb(196, 50, 27)');
         }
         expect(await page.evaluate(() => window.loopHits)).toEqual([]);
-        expect(errors).toEqual([]);
+        expect(ours(errors, version)).toEqual([]);
       });
     }
 
@@ -191,7 +194,7 @@ for (const version of Object.keys(P5S)) {
         await expect(results).toHaveAttribute('data-check', 'passed');
         await expect(results.locator('.hw-headline')).toHaveText('Passed! Your scene does what the task asks.');
         expect(await page.evaluate(() => window.loopHits)).toEqual([]);
-        expect(errors).toEqual([]);
+        expect(ours(errors, version)).toEqual([]);
       });
     }
   });
