@@ -38,9 +38,14 @@ export default defineConfig(({ command, mode }) => ({
     target: 'es2022',
     outDir: withSolutions ? 'dist-teacher' : 'dist',
     chunkSizeWarningLimit: 1500, // p5 itself is 1.3 MB: one library, loaded once per page
-    rollupOptions: { input: [resolve('index.html'), resolve('web-editor.html'), resolve('teacher.html'), ...sketchPages] },
+    rollupOptions: {
+      input: [resolve('index.html'), resolve('web-editor.html'), resolve('teacher.html'), ...sketchPages],
+      // Generating the API reference and bundling the render workers is this build's own work, not a slow plugin
+      // to report: the reference parses the kit's files only (scripts/api-reference.js), the rest is Vite's.
+      checks: { bundlerTimings: false },
+    },
   },
-  worker: { format: 'es' },
+  worker: { format: 'es', rolldownOptions: { checks: { bundlerTimings: false } } },
   preview: { headers: isolation },
   server: {
     // The class server sends them itself, to loopback only (scripts/class-gate.js): browsers

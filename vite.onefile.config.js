@@ -87,7 +87,7 @@ if (typeof p5 !== 'function' || (typeof p5.registerAddon !== 'function' && !/^1\
 
 export default defineConfig({
   plugins: [inlineRenderWorker(), inlineStyle(), needP5()],
-  worker: { format: 'iife' },
+  worker: { format: 'iife', rolldownOptions: { checks: { bundlerTimings: false } } },
   build: {
     target: 'es2022',
     outDir: process.env.SKETCHBOOK_WITH_SOLUTIONS === '1' ? 'dist-teacher' : 'dist', // beside the site (vite.config.js)
@@ -103,7 +103,8 @@ export default defineConfig({
     rollupOptions: {
       external: ['p5'],
       // One file each: the panel's lazily loaded "did you mean" (lib/p5/mistake-hints.js) goes inside, not beside.
-      output: { globals: { p5: 'p5' }, inlineDynamicImports: true },
+      output: { globals: { p5: 'p5' }, codeSplitting: false },
+      checks: { bundlerTimings: false }, // inlining the render worker is the work of this build, not a slow plugin
     },
   },
 });

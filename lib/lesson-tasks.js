@@ -1,5 +1,5 @@
 /**
- * The tasks of each lesson page (00–09), each done by what the student does
+ * The tasks of each lesson page (00–14), each done by what the student does
  * on the page, never by a "done" button. A task is
  *
  *   { id, text, hint, done(event, memory) → boolean }
@@ -230,6 +230,55 @@ export const LESSONS = [
   ] },
   homeworkLesson('08', 'Homework 1: a traffic signal', 'three lights'),
   homeworkLesson('09', 'Homework 2: a car\'s two rear lights', 'two rear lights'),
+  { page: '10', title: 'Playground', tasks: [
+    selectAny,
+    { id: 'own', text: 'Add a sphere of your own to the code and select one of its pixels.',
+      hint: 'Copy the scene.add(new Sphere(…)) line, change its centre (e.g. [6, 1, -26]) and radius, save or Run, then click it.',
+      done: (e) => selected(e) && e.record.hit !== null && e.scene.objects.indexOf(e.record.hit.object) > 0 },
+    { id: 'glow', text: 'Add a light you can see: a sphere with an emission.',
+      hint: 'Give a sphere { color: [0, 0, 0], emission: 1 }: it shines on the others.', done: (e) => e.scene.spheres.some((s) => s.material.isEmissive) },
+    { id: 'mirror', text: 'Make a sphere a mirror and find a pixel of it that shows another shape.',
+      hint: 'Add reflection: 0.8 to a sphere\'s material; then click its side toward another sphere.',
+      done: (e) => selected(e) && Boolean(e.record.hit?.reflection?.hit) },
+  ] },
+  { page: '11', title: 'Several rays per pixel', tasks: [
+    { id: 'edge', text: 'Find an edge pixel: its rays do not all hit the same thing.',
+      hint: 'Click the rim of the pink sphere in the right-hand picture: the panel lists each ray and what it hit.',
+      done: (e) => selected(e) && e.record.samples !== undefined && new Set(e.record.samples.map((s) => s.hit)).size > 1 },
+    { id: 'sixteen', text: 'Trace 16 rays per pixel: the smoothest edge.', hint: 'Choose 16 above the pictures.', done: (e) => e.camera.samples === 16 },
+    { id: 'one', text: 'Choose 1 ray per pixel: the right-hand picture is as jagged as the left.', hint: 'Choose 1 above the pictures.', done: (e) => e.camera.samples === 1 },
+  ] },
+  { page: '12', title: 'Cylinders, cones and triangles', tasks: [
+    { id: 'side', text: 'Find a pixel on the cylinder\'s side: a root of its quadratic within its height.',
+      hint: 'The pink cylinder on the left; the panel\'s "Other shapes" row says which part was hit.', done: (e) => partHit(e, 'side') && hitName(e) === 'pink cylinder' },
+    { id: 'cone', text: 'Find a pixel of the yellow cone: its radius shrinks as y goes up, so y is back in A, B and C.',
+      hint: 'The cone stands in the middle.', done: (e) => selected(e) && hitName(e) === 'yellow cone' },
+    { id: 'triangle', text: 'Find a pixel of the green triangle: u ≥ 0, v ≥ 0, u + v ≤ 1.', hint: 'The triangle is on the right.', done: (e) => selected(e) && hitName(e) === 'green triangle' },
+    { id: 'beside', text: 'Find a ray that passes just beside the triangle: u or v a little below 0, or u + v a little over 1.',
+      hint: 'Click a pixel touching the triangle\'s edge, outside it: the panel\'s u and v say by how much it missed.', done: (e) => selected(e) && besideTriangle(e.record) },
+  ] },
+  { page: '13', title: 'Meshes and a BVH', tasks: [
+    { id: 'bunny', text: 'Select a pixel of the bunny: how many triangles did its ray test?', hint: 'Click the bunny; the panel gives its box and triangle tests.',
+      done: (e) => selected(e) && hitName(e) === 'bunny' },
+    { id: 'loose', text: 'Find a ray that misses the bunny yet tests some of its triangles: it entered a box the bunny does not fill.',
+      hint: 'Click just beside the bunny\'s outline, between its ears or under its chin.',
+      done: (e) => selected(e) && hitName(e) !== 'bunny' && meshRecord(e.record)?.triangleTests > 0 },
+    { id: 'skip', text: 'Find a ray that misses the bunny\'s bounding box: no triangle tested at all.',
+      hint: 'Any pixel of the sky or floor far from the bunny.', done: (e) => selected(e) && meshRecord(e.record)?.triangleTests === 0 },
+    { id: 'shadow', text: 'Find a pixel of the floor in the bunny\'s shadow.', hint: 'The light is up on the left, in front: the shadow falls behind the bunny, to the right.',
+      done: (e) => selected(e) && hitName(e) === 'floor' && inShadowOf(e.record, e.scene, 'bunny') },
+  ] },
+  { page: '14', title: 'Spot and area lights, soft shadows', tasks: [
+    { id: 'penumbra', text: 'Find a pixel of the penumbra: some of the disc\'s shadow rays reach it, not all.',
+      hint: 'The rim of the ball\'s soft shadow on the floor; the panel says "N of 16 shadow rays reached it".',
+      done: (e) => selected(e) && (e.record.hit?.areaLights ?? []).some((g) => g.reached > 0 && g.reached < g.samples) },
+    { id: 'umbra', text: 'Find a pixel in the full shadow: none of the disc\'s shadow rays reach it.',
+      hint: 'The middle of the ball\'s shadow, right under it.', done: (e) => selected(e) && (e.record.hit?.areaLights ?? []).some((g) => g.samples > 1 && g.reached === 0) },
+    { id: 'cone', text: 'Find a pixel of the floor outside the spot\'s cone.', hint: 'Away from the warm circle of light around the blue cylinder.',
+      done: (e) => selected(e) && hitName(e) === 'floor' && e.record.hit.lights.some((l) => l.beam === 0) },
+    { id: 'one-ray', text: 'Give the disc 1 shadow ray and select a pixel: the shadow is hard again.',
+      hint: 'Choose 1 under "shadow rays", then click the floor.', done: (e) => selected(e) && (e.record.hit?.areaLights ?? []).some((g) => g.samples === 1) },
+  ] },
 ];
 
 /** A homework page's tasks: run the self-check, show a light of your own, pass. */
@@ -249,6 +298,28 @@ export function lessonOf(page) {
 }
 
 /* ---------------- helpers of the tasks ---------------- */
+
+/** The selected pixel's ray hit a cylinder's or cone's `part` ('side', 'top', 'bottom'). */
+function partHit(e, part) {
+  return selected(e) && e.record.hit !== null && e.record.records.some((r) => r.object === e.record.hit.object && r.record.part === part);
+}
+
+/** Barycentric coordinates this far out of range count as "just beside" a triangle. */
+const BESIDE = 0.1;
+
+/** A triangle's plane was met just outside the triangle: u or v a little below 0, or u + v a little over 1. */
+function besideTriangle(record) {
+  return record.records.some(({ record: r }) => {
+    if (r.parallel !== false || r.u === null) return false;
+    const out = Math.max(-r.u, r.u - 1, r.v === null ? 0 : Math.max(-r.v, r.u + r.v - 1));
+    return out > 0 && out < BESIDE;
+  });
+}
+
+/** The mesh's record of this pixel's ray (box and triangle tests), or undefined. */
+function meshRecord(record) {
+  return record.records.find((r) => r.record.triangleTests !== undefined)?.record;
+}
 
 /** How much light the photons brought to pixel (x, y) so far. */
 function photonsAt(photonView, x, y) {

@@ -98,6 +98,8 @@ export function achievements(progress, lessons) {
 
 /** The code's version: its first part. A code of another version is refused, not guessed at. */
 const CODE_PREFIX = 'RT1';
+/** The pages the first codes held (00–09): a code that short is still read. */
+const FIRST_CODE_PAGES = 10;
 /** Longer input than this is no code. */
 const MAX_CODE = 80;
 
@@ -131,12 +133,13 @@ export function readProgressCode(text, lessons) {
   const parts = code.split('-');
   if (parts[0] !== CODE_PREFIX) return { problem: `a progress code starts with ${CODE_PREFIX}-` };
   const hex = parts.slice(1, -1).join(''), sum = parts[parts.length - 1];
-  if (!/^[0-9A-F]*$/.test(hex + sum) || hex.length !== lessons.length * 2 || sum.length !== 2) {
+  const pages = hex.length / 2; // a code made before the later pages had tasks holds fewer: those read as nothing done
+  if (!/^[0-9A-F]*$/.test(hex + sum) || !Number.isInteger(pages) || pages > lessons.length || pages < Math.min(FIRST_CODE_PAGES, lessons.length) || sum.length !== 2) {
     return { problem: 'not the shape of a progress code (RT1- and groups of four hex digits)' };
   }
   if (checksum(hex) !== sum) return { problem: 'a character is wrong or missing (the check sum does not match)' };
   const progress = emptyProgress();
-  for (const [i, lesson] of lessons.entries()) {
+  for (const [i, lesson] of lessons.slice(0, pages).entries()) {
     const bits = parseInt(hex.slice(2 * i, 2 * i + 2), 16);
     if (bits >> lesson.tasks.length) return { problem: `page ${lesson.page} has no task ${Math.floor(Math.log2(bits)) + 1}` };
     const ids = lesson.tasks.filter((_, k) => bits & (1 << k)).map((t) => t.id);

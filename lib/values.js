@@ -15,6 +15,9 @@ import { show } from './check.js';
  */
 export const PLAIN_NUMBER = /^[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:e[+-]?\d+)?$/i;
 
+/** 2,5: a decimal comma (or, in a whole-number box, two numbers in one box). */
+const DECIMAL_COMMA = /^[+-]?\d+,\d+$/;
+
 /** The longest text a number or colour box reads: past it, a message, not a long wait. */
 export const TYPED_MAX = 100;
 
@@ -38,6 +41,7 @@ export function readNumber(text, label, { min = -Infinity, max = Infinity, above
   const range = Number.isFinite(min) && Number.isFinite(max) ? ` from ${min} to ${max}` : '';
   if (t === '') throw new TypeError(`${label} is empty: type ${wanted}${range}`);
   notTooLong(t, label);
+  if (DECIMAL_COMMA.test(t)) throw new TypeError(`${label} must be ${wanted}, got ${show(t)}: ${integer ? 'one number to a box' : `write decimals with a point, ${t.replace(',', '.')}`}`);
   if (!PLAIN_NUMBER.test(t)) throw new TypeError(`${label} must be ${wanted}, got ${show(t)}`);
   const n = Number(t);
   if (!Number.isFinite(n)) throw new RangeError(`${label} is too big, got ${show(t)}`);

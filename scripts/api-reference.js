@@ -40,10 +40,21 @@ export const ENTRIES = [
   },
 ];
 
+/**
+ * Exports the kit's own pages use (text in slices, the page's render state, links, DOM helpers,
+ * number formatting): named in the reference, but apart, after what a teacher's sketch uses.
+ */
+export const INTERNAL = new Set([
+  'joinInSlices', 'nextTask', 'sceneCodeLines', 'solutionParameter', 'registerShape', 'ProgressiveRenderer', 'ParallelRenderer',
+  'sketchbookAddon', 'FACTORIES', 'fmt', 'formatLabel', 'exampleInLink', 'pageRenderState',
+  'readSceneLink', 'sceneLinkURL', 'linkNotice', 'element', 'copyText', 'showInBox', 'downloadText',
+]);
+
 /** `{ entries: [{ …entry, items }], methods }`: everything the reference names, in source order. */
 export function collectAPI(root = process.cwd()) {
   const files = ENTRIES.map((e) => resolve(root, e.file));
-  const program = ts.createProgram(files, { allowJs: true, checkJs: false, noEmit: true, target: ts.ScriptTarget.ES2022, module: ts.ModuleKind.ESNext, moduleResolution: ts.ModuleResolutionKind.Bundler, types: [], noLib: true });
+  const options = { allowJs: true, checkJs: false, noEmit: true, target: ts.ScriptTarget.ES2022, module: ts.ModuleKind.ESNext, moduleResolution: ts.ModuleResolutionKind.Bundler, types: [], noLib: true };
+  const program = ts.createProgram(files, options, kitOnlyHost(options));
   const checker = program.getTypeChecker();
   const rel = (node) => relative(root, node.getSourceFile().fileName);
 
@@ -89,6 +100,19 @@ export function collectAPI(root = process.cwd()) {
   }
   for (const item of entries.flatMap((e) => e.items)) delete item.node;
   return { entries, methods };
+}
+
+/**
+ * A compiler host that follows the kit's own imports only: the reference names
+ * what lib/ exports, and p5's declarations (which lib/p5/ imports) took most of
+ * the build's time to parse for nothing.
+ */
+function kitOnlyHost(options) {
+  const host = ts.createCompilerHost(options);
+  host.resolveModuleNameLiterals = (literals, containingFile, redirected, compilerOptions) => literals.map((literal) => (literal.text.startsWith('.')
+    ? ts.resolveModuleName(literal.text, containingFile, compilerOptions, host, undefined, redirected)
+    : { resolvedModule: undefined }));
+  return host;
 }
 
 /** One export: its kind, its JSDoc, a constructor's or a class's methods. */
@@ -336,20 +360,24 @@ function itemHTML(item, known, where) {
   return parts.filter(Boolean).join('\n');
 }
 
-/** The whole page: one HTML document, its own style, no script. */
+/** The whole page: one HTML document, its own style, and the find box's few lines of script. */
 export function apiReferenceHTML(root = process.cwd()) {
   const { entries, methods } = collectAPI(root);
   const known = new Set([...entries.flatMap((e) => e.items.map((i) => i.name)), ...methods.map((m) => m.name)]);
   const version = JSON.parse(readFileSync(resolve(root, 'package.json'), 'utf8')).version;
   const toc = [];
   const sections = [];
+  const tocLine = (id, title, list) => `<li><a href="#${id}">${esc(title)}</a>: ${list.map((i) => `<a href="#${esc(i.name)}"><code>${esc(i.name)}</code></a>`).join(' ')}</li>`;
+  const groupsHTML = (groups) => groups.map(([title, list, where]) => (title ? `<h3 class="group">${esc(title)}</h3>\n` : '') + list.map((i) => itemHTML(i, known, where)).join('\n')).join('\n');
   for (const entry of entries) {
-    const items = entry.items;
+    const items = entry.items.filter((i) => !INTERNAL.has(i.name));
     const groups = entry.id === 'p5' ? [['p5 methods', methods, 'p5 method (the addon)'], ['Exports', items, entry.file]] : [[null, items, entry.file]];
-    toc.push(`<li><a href="#${entry.id}">${esc(entry.title)}</a>: ${groups.flatMap(([, list]) => list).map((i) => `<a href="#${esc(i.name)}"><code>${esc(i.name)}</code></a>`).join(' ')}</li>`);
-    const body = groups.map(([title, list, where]) => (title ? `<h3 class="group">${esc(title)}</h3>\n` : '') + list.map((i) => itemHTML(i, known, where)).join('\n')).join('\n');
-    sections.push(`<section class="entry" id="${entry.id}"><h2>${esc(entry.title)}</h2>\n<p>${esc(entry.about)}</p>\n<pre class="imports" tabindex="0" role="region" aria-label="${esc(`How to import ${entry.title}`)}"><code>${entry.imports.map(esc).join('\n')}</code></pre>\n${body}</section>`);
+    toc.push(tocLine(entry.id, entry.title, groups.flatMap(([, list]) => list)));
+    sections.push(`<section class="entry" id="${entry.id}"><h2>${esc(entry.title)}</h2>\n<p>${esc(entry.about)}</p>\n<pre class="imports" tabindex="0" role="region" aria-label="${esc(`How to import ${entry.title}`)}"><code>${entry.imports.map(esc).join('\n')}</code></pre>\n${groupsHTML(groups)}</section>`);
   }
+  const internal = entries.map((entry) => [`From ${entry.file}`, entry.items.filter((i) => INTERNAL.has(i.name)), entry.file]);
+  toc.push(tocLine('internal', 'The kit\'s own pages', internal.flatMap(([, list]) => list)));
+  sections.push(`<section class="entry" id="internal"><h2>The kit's own pages</h2>\n<p>Exported for the gallery and the lesson pages (text in slices, the page's render state, links, page parts, number formatting). A sketch of your own rarely needs them.</p>\n${groupsHTML(internal)}</section>`);
   return `<!doctype html>
 <html lang="en">
 <head>
@@ -380,6 +408,9 @@ export function apiReferenceHTML(root = process.cwd()) {
   .source, .returns { color: #5b6470; font-size: 0.9rem; }
   .toc li { margin-bottom: 0.5rem; }
   .toc code { margin-right: 0.35rem; }
+  .find { display: block; position: sticky; top: 0; padding: 0.5rem 0; background: #fafbfc; }
+  .find input { font: inherit; padding: 0.2rem 0.4rem; width: min(20rem, 100%); box-sizing: border-box; }
+  #found { color: #3b434d; margin-left: 0.5rem; }
 </style>
 </head>
 <body>
@@ -388,16 +419,41 @@ export function apiReferenceHTML(root = process.cwd()) {
 <h1>API reference</h1>
 <p>Raytracing Sketchbook ${esc(version)}. Every name a sketch can use, generated from the library's own comments (<code>npm run build</code>). Colours are <code>[r, g, b]</code> in 0–1 or CSS names and hex strings (<code>'pink'</code>, <code>'#ff5160'</code>); points and directions are <code>[x, y, z]</code> or <code>{ x, y, z }</code>. A wrong value or an unknown option throws a <code>TypeError</code> or <code>RangeError</code> naming it.</p>
 </header>
-<nav><ul class="toc">
+<nav aria-label="Every name"><ul class="toc">
 ${toc.join('\n')}
 </ul></nav>
+<div class="find" role="search"><label for="find">Find a name or a word</label> <input id="find" type="search" autocomplete="off" spellcheck="false"> <span id="found" role="status"></span></div>
 <main>
 ${sections.join('\n')}
 </main>
+<script>${FIND_SCRIPT}</script>
 </body>
 </html>
 `;
 }
+
+/**
+ * The find box: each entry whose name or text holds every word typed stays,
+ * the others hide, and so do their links in the list of names; a status says how many.
+ */
+const FIND_SCRIPT = `
+const box = document.getElementById('find'), found = document.getElementById('found');
+const items = [...document.querySelectorAll('section.item')];
+const texts = new Map(items.map((item) => [item, (item.id + ' ' + item.textContent).toLowerCase()]));
+box.addEventListener('input', () => {
+  const words = box.value.toLowerCase().split(/\\s+/).filter(Boolean);
+  let shown = 0;
+  for (const item of items) {
+    item.hidden = !words.every((word) => texts.get(item).includes(word));
+    if (!item.hidden) shown++;
+  }
+  for (const a of document.querySelectorAll('.toc a')) {
+    const target = document.getElementById(decodeURIComponent(a.hash.slice(1)));
+    if (target && target.classList.contains('item')) a.hidden = target.hidden;
+  }
+  found.textContent = words.length ? shown + ' of ' + items.length + ' names' : '';
+});
+`;
 
 /**
  * The reference's names a sketch uses: what it imports from the two entry

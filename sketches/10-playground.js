@@ -26,5 +26,6 @@ new p5((p) => {
     const eye = new Camera({ width: WIDTH, height: HEIGHT, fov: 30, position: [0, 0, 0] }); // looks toward −z
     const view = p.createTracerView({ scene: makeScene(), camera: eye, grid: true });
     p.createInspector({ view });
+    p.createTaskList({ page: '10', view }); // the page's tasks, ticked off as they are done
   };
 }, 'sketch');

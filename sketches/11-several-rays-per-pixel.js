@@ -31,6 +31,7 @@ new p5((p) => {
     p.createSampleRays({ view: smooth, parent: 'sketch' });
     p.createInspector({ view: smooth, parent: 'sketch' });
     smooth.select(24, 7); // on the pink sphere's top edge: two rays hit it, two miss
+    p.createTaskList({ page: '11', view: smooth }); // the page's tasks, ticked off as they are done
   };
 
   /** The radio buttons 1, 4, 9, 16: the right-hand picture is traced again with that many rays. */

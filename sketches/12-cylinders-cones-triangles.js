@@ -31,5 +31,6 @@ new p5((p) => {
     const view = p.createTracerView({ scene: makeScene(), camera: eye, grid: true });
     p.createInspector({ view });
     view.select(8, 20); // on the cylinder, in its light
+    p.createTaskList({ page: '12', view }); // the page's tasks, ticked off as they are done
   };
 }, 'sketch');

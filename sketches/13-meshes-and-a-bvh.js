@@ -35,5 +35,6 @@ new p5((p) => {
     p.createInspector({ view });
     p.createBvhView({ view, mesh, parent: 'sketch' });
     view.select(200, 150); // on the bunny's side
+    p.createTaskList({ page: '13', view }); // the page's tasks, ticked off as they are done
   };
 }, 'sketch');

@@ -17,7 +17,7 @@
  * it, whether it is outside the spot's cone, and the spot's falloff there.
  */
 import p5 from 'p5';
-import { Scene, Sphere, Plane, Cylinder, PointLight, AreaLight, SpotLight, Camera } from '../lib/index.js';
+import { Scene, Sphere, Plane, Cylinder, PointLight, AreaLight, SpotLight, Camera, inspectPixel } from '../lib/index.js';
 import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
 
 const WIDTH = 96, HEIGHT = 72, SCALE = 4;
@@ -35,6 +35,14 @@ function makeScene({ lamp, samples, angle }) {
   scene.add(lamp === 'point' ? new PointLight(LAMP, { intensity: 0.8, name: 'bulb' })
     : new AreaLight(LAMP, LAMP_RADIUS, { samples, intensity: 0.8, name: 'disc' }));
   return scene;
+}
+
+/** The page's key line for the selected pixel: how many of the disc's shadow rays reached it. */
+function shadowRaysLine(view, s) {
+  const hit = s && inspectPixel(view.scene, view.camera, s.x, s.y).hit, disc = hit?.areaLights?.[0];
+  if (!s || !disc) return s ? `Pixel ${s.x},${s.y}: ${hit ? 'no shadow ray to the disc (it faces away)' : 'its ray hits nothing'}.` : '';
+  const rays = `${disc.reached} of ${disc.samples} shadow ray${disc.samples === 1 ? '' : 's'}`;
+  return `Pixel ${s.x},${s.y}: ${rays} reached it (${Math.round((100 * disc.reached) / disc.samples)} % of the disc seen).`;
 }
 
 const discLabel = (n) => n === 1 ? 'A disc with 1 shadow ray: a point again' : `A disc of light, ${n} shadow rays: a soft shadow`;
@@ -59,7 +67,10 @@ new p5((p) => {
     addChoices('angle', ANGLES, state, retrace, (n) => ` ${n}°`);
     p.createInspector({ view: soft, parent: 'sketch' });
     p.createSceneView({ view: soft, parent: 'sketch', orbit: { yaw: 55, pitch: 22, distance: 30 }, planeDistance: 3 }); // from the side: the disc, the ball and the pixel's shadow rays
+    const keyLine = document.getElementById('shadow-rays'); // under the pictures: the panel's lines are further down
+    soft.onSelect((s) => { keyLine.textContent = shadowRaysLine(soft, s); });
     soft.select(73, 33); // on the floor at the rim of the ball's shadow: half the disc's points hidden
+    p.createTaskList({ page: '14', view: soft }); // the page's tasks, ticked off as they are done
   };
 
   /** Radio buttons for one setting; a change traces both pictures again. */

@@ -18,8 +18,9 @@ function setup() {
 
 function draw() {
   const pixel = view.selected;
-  const record = pixel && RT.inspectPixel(view.scene, view.camera, pixel.x, pixel.y);
+  // Not "record": with p5.sound (the editor's 1.x template loads it) that is a p5 function's name.
+  const story = pixel && RT.inspectPixel(view.scene, view.camera, pixel.x, pixel.y); // the pixel's whole story
   background('#f6f7f9');
-  drawSideView({ scene: view.scene, camera: view.camera, record, x: 0, y: 0, w: 600, h: 270 });
-  drawParabola({ record, x: 0, y: 290, w: 600, h: 270 });
+  drawSideView({ scene: view.scene, camera: view.camera, record: story, x: 0, y: 0, w: 600, h: 270 });
+  drawParabola({ record: story, x: 0, y: 290, w: 600, h: 270 });
 }

@@ -43,14 +43,16 @@ export function createAnswerForm(p, options) {
   const boxes = Object.fromEntries(Object.entries(specs).map(([name, spec]) => [name, valueBox({ name, ...spec })]));
   const checkButton = element('button', { type: 'submit', class: 'rt-button', 'data-check': '' }, 'Check');
   const form = element('form', { class: 'boxes', novalidate: '' }, ...Object.values(boxes).map((b) => b.element), checkButton);
-  form.addEventListener('submit', (event) => { event.preventDefault(); onCheck(); });
+  form.addEventListener('submit', (event) => { event.preventDefault(); takeTypedLine(); onCheck(); });
   if (parse) {
     form.addEventListener('paste', (event) => {
       const values = parse(event.clipboardData?.getData('text/plain') ?? '');
       if (!values) return; // an ordinary paste into one box
       event.preventDefault();
-      fill(values);
+      fillFromLine(values);
     });
+    // Capture: before a box's own change handler reads the line as a bad number.
+    form.addEventListener('change', takeTypedLine, true);
   }
 
   const answer = element('code', { class: 'answer', 'data-answer-line': '' });
@@ -73,6 +75,22 @@ export function createAnswerForm(p, options) {
       boxes[name].input.value = value;
       boxes[name].clear();
     }
+  }
+
+  /** A whole answer line, pasted or typed: every box gets its value, and the last verdict goes (it judged another answer). */
+  function fillFromLine(values) {
+    fill(values);
+    for (const key of Object.keys(result.dataset)) delete result.dataset[key];
+    result.dataset.result = 'unchecked';
+    result.replaceChildren('Not checked yet: press Check.');
+    answer.textContent = '';
+    detail.textContent = '';
+  }
+
+  /** The slide's whole line typed into one box, as a paste would bring it: fills every box. */
+  function takeTypedLine() {
+    const values = parse && Object.values(boxes).map((box) => parse(box.input.value)).find(Boolean);
+    if (values) fillFromLine(values);
   }
 
   return {

@@ -10,9 +10,8 @@
  *   - per sphere, both routes: A, B, C, discriminant → roots t0, t1, and
  *     L, tca, d², thc → t0, t1, with a mark that the two routes agree;
  *   - every other shape by its own test (its `intersect` record's lines).
- * Every value sits in an element with data attributes (`data-field`, and
- * `data-sphere`/`data-route` or `data-light` where needed) and its full
- * precision in `data-value`, so tests and worksheets can read it.
+ * Every value sits in an element with data attributes (`data-field`, and `data-sphere`/`data-route`
+ * or `data-light` where needed) and its full precision in `data-value`, so tests and worksheets can read it.
  */
 import { inspectPixel } from '../explain.js';
 import { kindOf } from '../shapes/index.js';
@@ -111,8 +110,9 @@ export class Inspector {
   #showBody(r, shown) {
     const tests = shown ?? r.tests;
     const more = shown ? this.#moreButton(r) : null;
+    const spheres = r.tests.length > 0 || r.records.length === 0; // only other shapes (12, 13): no empty sphere tables
     this.body.replaceChildren(colorSection(r), raySection(r), hitSection(r), lightsSection(r),
-      quadraticSection(r, tests, more), geometricSection(r, tests, more && this.#moreButton(r)), shapesSection(r));
+      ...(spheres ? [quadraticSection(r, tests, more), geometricSection(r, tests, more && this.#moreButton(r))] : []), shapesSection(r));
   }
 
   /** "Show all 1,000 spheres": the whole tables, for this pixel. */
@@ -214,11 +214,11 @@ export function pixelAnnouncement(r) {
   return `${answerLine(r)}. ${name.charAt(0).toUpperCase()}${name.slice(1)}, ${hit}.`;
 }
 
-/** "pink sphere" for a sphere named pink; "ground" for one named ground; "sphere 2" for one with no name. */
+/** "pink sphere" for a sphere named pink; "ground" for one named ground; "sphere 2" for one with no name (the panel's name, from 1). */
 function hitName(hit) {
   const kind = kindOf(hit.object);
   const name = shownName(hit.object?.name?.trim() ?? '');
-  if (!name) return `${kind} ${hit.index}`;
+  if (!name) return hit.name;
   return /^(pink|red|orange|yellow|green|cyan|blue|purple|white|gray|grey|black|brown)$/i.test(name) ? `${name} ${kind}` : name;
 }
 

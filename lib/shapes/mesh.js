@@ -27,16 +27,24 @@ export class Mesh {
    * const square = Mesh.fromOBJ('v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n', { color: 'teal' });
    */
   constructor(data, options) {
-    const { positions, cells } = checkData(data);
+    const { positions, cells: given } = checkData(data);
     const shape = shapeOptions(options);
     this.name = shape.name;
     this.material = shape.material;
     this.positions = positions;
+    this.vertices = Float64Array.from(positions.flat());
+    // A triangle of no area (real OBJ files and UV spheres have some) shows nothing: left out, and counted.
+    const flat = [], normals = triangleNormals(this.vertices, Int32Array.from(given.flat()), flat);
+    if (flat.length === given.length) {
+      throw new RangeError(`cells[${flat[0]}]: a, b, c must not lie on one line: the triangle has zero area${given.length > 1 ? `, as have all ${given.length} triangles` : ''}`);
+    }
+    /** Indices into the cells given of the zero-area triangles left out. */
+    this.zeroAreaCells = flat;
+    const left = new Set(flat), cells = flat.length ? given.filter((_, i) => !left.has(i)) : given;
     this.cells = cells;
     this.triangleCount = cells.length;
-    this.vertices = Float64Array.from(positions.flat());
     this.indices = Int32Array.from(cells.flat());
-    this.normals = triangleNormals(this.vertices, this.indices);
+    this.normals = flat.length ? triangleNormals(this.vertices, this.indices) : normals;
     this.bvh = new BVH(triangleBoxes(this.vertices, this.indices));
     this.corners = cornersInOrder(this.vertices, this.indices, this.bvh.order);
     this.size = boxSize(this.bounds());
@@ -155,7 +163,8 @@ export class Mesh {
   }
   /** The record's lines for the inspector: the BVH's work beside a loop over every triangle, and t. */
   recordRows(record) {
-    return [['box tests', record.boxTests], ['triangle tests', record.triangleTests], ['a loop would test', this.triangleCount], ['t', record.t]];
+    const rows = [['box tests', record.boxTests], ['triangle tests', record.triangleTests], ['a loop would test', this.triangleCount], ['t', record.t]];
+    return this.zeroAreaCells.length ? [...rows, ['zero-area triangles left out', this.zeroAreaCells.length]] : rows;
   }
 
   /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view-mesh.js). */
@@ -318,10 +327,11 @@ function cornersInOrder(vertices, indices, order) {
 }
 
 /**
- * Every triangle's unit normal e1 × e2, 3 numbers each, in cells' order; a
- * RangeError naming the cell when one has (next to) no area, as for a Triangle.
+ * Every triangle's unit normal e1 × e2, 3 numbers each, in cells' order. A
+ * triangle of (next to) no area, as a Triangle judges it, goes into `flat` when
+ * given (its normal stays 0), else it is a RangeError naming the cell.
  */
-function triangleNormals(vertices, indices) {
+function triangleNormals(vertices, indices, flat) {
   const normals = new Float64Array(indices.length);
   for (let i = 0; i < indices.length / 3; i++) {
     const ia = 3 * indices[3 * i], ib = 3 * indices[3 * i + 1], ic = 3 * indices[3 * i + 2];
@@ -333,6 +343,7 @@ function triangleNormals(vertices, indices) {
     const nx = e1y * e2z - e1z * e2y, ny = e1z * e2x - e1x * e2z, nz = e1x * e2y - e1y * e2x;
     const length = Math.hypot(nx, ny, nz);
     if (!(length > FLAT * Math.hypot(e1x, e1y, e1z) * Math.hypot(e2x, e2y, e2z))) {
+      if (flat) { flat.push(i); continue; }
       throw new RangeError(`cells[${i}]: a, b, c must not lie on one line: the triangle has zero area`);
     }
     normals[3 * i] = nx / length; normals[3 * i + 1] = ny / length; normals[3 * i + 2] = nz / length;

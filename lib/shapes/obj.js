@@ -26,6 +26,7 @@ const CORNER = /^([+-]?\d+)(\/\d*(\/[+-]?\d*)?)?$/;
 export function parseOBJ(text) {
   if (typeof text !== 'string') throw new TypeError(`OBJ text must be a string, got ${show(text)}`);
   const positions = [], cells = [], cellLines = [];
+  let flat = 0, firstFlat = null; // zero-area faces: the Mesh leaves them out, unless every face is one
   const lines = text.replaceAll('\r\n', '\n').replaceAll('\r', '\n').split('\n'); // no pattern: plain text, linear
   for (let i = 0; i < lines.length; i++) {
     const hash = lines[i].indexOf('#');
@@ -39,13 +40,14 @@ export function parseOBJ(text) {
       if (corners.length < 3) throw new RangeError(`${where}: a face needs at least 3 vertices "f i j k", got ${show(line)}`);
       for (let k = 1; k + 1 < corners.length; k++) {
         const cell = [corners[0], corners[k], corners[k + 1]];
-        checkArea(...cell.map((c) => toPoint(positions[c])), `${where}: `);
+        try { checkArea(...cell.map((c) => toPoint(positions[c])), `${where}: `); } catch (error) { flat++; firstFlat ??= error; }
         cells.push(cell);
         cellLines.push(i + 1);
       }
     }
   }
   if (!cells.length) throw new RangeError('OBJ text has no faces (lines "f i j k")');
+  if (flat === cells.length) throw firstFlat;
   return { positions, cells, cellLines };
 }
 

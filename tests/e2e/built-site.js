@@ -12,6 +12,9 @@ import { extname, join, normalize, resolve, sep } from 'node:path';
 const TYPES = { '.html': 'text/html; charset=utf-8', '.js': 'text/javascript', '.mjs': 'text/javascript', '.css': 'text/css',
   '.png': 'image/png', '.json': 'application/json', '.svg': 'image/svg+xml', '.zip': 'application/zip' };
 
+/** What the last buildSite() printed (warnings and errors: it builds with --logLevel warn). */
+export let buildOutput = '';
+
 /** Builds the site into a new temporary folder; resolves with the folder. */
 export function buildSite() {
   const outDir = mkdtempSync(join(tmpdir(), 'rt-built-site-'));
@@ -22,7 +25,10 @@ export function buildSite() {
     let output = '';
     child.stdout.on('data', (d) => { output += d; });
     child.stderr.on('data', (d) => { output += d; });
-    child.on('exit', (code) => (code === 0 ? done(outDir) : fail(new Error(`vite build failed (${code}):\n${output}`))));
+    child.on('exit', (code) => {
+      buildOutput = output;
+      if (code === 0) done(outDir); else fail(new Error(`vite build failed (${code}):\n${output}`));
+    });
   });
 }
 

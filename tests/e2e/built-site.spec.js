@@ -5,7 +5,7 @@ import { test, expect } from '@playwright/test';
 import { readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { watchConsole, waitForDone } from './helpers.js';
-import { buildSite, serveFolder, removeFolder } from './built-site.js';
+import { buildSite, serveFolder, removeFolder, buildOutput } from './built-site.js';
 import { HOMEWORK, answerFingerprints, ELSEWHERE } from './homework-answers.js';
 
 const BASE = '/some-name/';
@@ -21,6 +21,10 @@ test.beforeAll(async () => {
 test.afterAll(async () => {
   await site?.close();
   if (folder) removeFolder(folder);
+});
+
+test('the build prints no warning and no timings report: nothing a teacher running it must wonder about', () => {
+  expect(buildOutput).not.toMatch(/WARN|PLUGIN_TIMINGS|BUNDLER_TIMINGS|inlineDynamicImports/);
 });
 
 /** Every file of the built site, with its path inside it. */

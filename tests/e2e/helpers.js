@@ -82,8 +82,8 @@ export function firstPictureHelp(url, name) {
   const look = `${name} had no reference picture: the picture just seen was written as one. Look at it; commit it if it is right.`;
   return sketch
     ? `${look}\nIf not, delete it, fix the sketch, and make this new sketch's reference alone (checked on a second run) with\n` +
-      `  npm run test:new-picture -- sketches/${sketch}\n(README: "How the first reference picture is made").`
-    : `${look} (README: "How the first reference picture is made").`;
+      `  npm run test:new-picture -- sketches/${sketch}\n(docs/DEVELOPERS.md: "How the first reference picture is made").`
+    : `${look} (docs/DEVELOPERS.md: "How the first reference picture is made").`;
 }
 
 /** In the page: the screen pixels the canvas is painted on (its edges rounded, as Chromium paints it). */

@@ -1,14 +1,14 @@
 // The lesson pages' tasks: their shape, and the predicates against real scenes and records.
 import { describe, it, expect } from 'vitest';
-import { Camera, Scene, Sphere, Plane, PointLight, classScene, inspectPixel } from '../../lib/index.js';
+import { Camera, Scene, Sphere, Plane, Cylinder, Cone, Triangle, Mesh, PointLight, AreaLight, SpotLight, classScene, inspectPixel } from '../../lib/index.js';
 import { LESSONS, lessonOf, sphereTest, nearZeroDiscriminant, eyeInside, hasAcne, inShadowOf, shadowsOnOthers } from '../../lib/lesson-tasks.js';
 
 const select = (scene, camera, x, y) => ({ type: 'select', record: inspectPixel(scene, camera, x, y), scene, camera, parts: {}, mode: 'shaded', order: 'coarse' });
 const task = (page, id) => lessonOf(page).tasks.find((t) => t.id === id);
 
 describe('the lessons', () => {
-  it('pages 00–09 each have three to seven tasks with an id, a text and a hint', () => {
-    expect(LESSONS.map((l) => l.page)).toEqual(['00', '01', '02', '03', '04', '05', '06', '07', '08', '09']);
+  it('pages 00–14 each have three to seven tasks with an id, a text and a hint', () => {
+    expect(LESSONS.map((l) => l.page)).toEqual(['00', '01', '02', '03', '04', '05', '06', '07', '08', '09', '10', '11', '12', '13', '14']);
     for (const lesson of LESSONS) {
       expect(lesson.tasks.length, lesson.page).toBeGreaterThanOrEqual(3);
       expect(lesson.tasks.length, lesson.page).toBeLessThanOrEqual(7);
@@ -96,5 +96,81 @@ describe('the predicates', () => {
     expect(task('04', 'two').done(answer(true, 'Pixel: 17,12; H: 0; V: 0'), memory)).toBe(true);
     expect(task('04', 'turned').done(answer(true, 'Pixel: 16,12; H: 0; V: 0'), {})).toBe(false);
     expect(task('04', 'turned').done(answer(true, 'Pixel: 10,12; H: 30; V: -82'), {})).toBe(true);
+  });
+});
+
+describe('the predicates of pages 10–14, on the sketches\' scenes', () => {
+  const state = (scene, camera) => ({ type: 'state', scene, camera, parts: {} });
+
+  it('10: a sphere of one\'s own, a glowing sphere, a mirror showing another shape', () => {
+    const start = () => new Scene({ background: [0.85, 0.92, 1] }).add(new Sphere([0, 0, -20], 4, { color: [1, 0.32, 0.36] })).add(new PointLight([-10, 20, 0]));
+    const camera = new Camera({ width: 64, height: 48 });
+    expect(task('10', 'own').done(select(start(), camera, 32, 24), {})).toBe(false); // the starter's sphere
+    const more = start().add(new Sphere([6, 1, -26], 2, { color: [0.3, 0.6, 1] }));
+    const x = [...Array(64).keys()].find((i) => inspectPixel(more, camera, i, 22).hit?.object === more.objects[1]);
+    expect(task('10', 'own').done(select(more, camera, x, 22), {})).toBe(true);
+    expect(task('10', 'glow').done(state(more, camera), {})).toBe(false);
+    expect(task('10', 'glow').done(state(start().add(new Sphere([6, 1, -26], 2, { color: [0, 0, 0], emission: 1 })), camera), {})).toBe(true);
+    const mirror = new Scene({ background: [0.85, 0.92, 1] }).add(new Sphere([0, 0, -20], 4, { reflection: 0.8 }))
+      .add(new Sphere([0, 0, 10], 4, { color: 'pink' })).add(new PointLight([-10, 20, 0]));
+    expect(task('10', 'mirror').done(select(mirror, camera, 32, 24), {})).toBe(true); // the pink sphere behind the eye, in the mirror
+    expect(task('10', 'mirror').done(select(start(), camera, 32, 24), {})).toBe(false);
+  });
+
+  it('11: an edge pixel is one whose rays hit different things; the rays per pixel are the camera\'s', () => {
+    const scene = classScene(), four = new Camera({ width: 64, height: 48, samples: 4 });
+    expect(task('11', 'edge').done(select(scene, four, 24, 7), {})).toBe(true); // the pink sphere's top edge
+    expect(task('11', 'edge').done(select(scene, four, 32, 24), {})).toBe(false); // its middle: every ray on it
+    expect(task('11', 'edge').done(select(scene, new Camera({ width: 64, height: 48 }), 24, 7), {})).toBe(false); // one ray: no edge to see
+    expect(task('11', 'sixteen').done(state(scene, new Camera({ width: 64, height: 48, samples: 16 })), {})).toBe(true);
+    expect(task('11', 'one').done(state(scene, four), {})).toBe(false);
+  });
+
+  it('12: the cylinder\'s side, the cone, the triangle, and a ray just beside the triangle (not far from it)', () => {
+    const scene = new Scene({ background: [0.85, 0.92, 1], ambient: 0.12 })
+      .add(new Plane([0, -4, 0], [0, 1, 0], { name: 'floor' }))
+      .add(new Cylinder([-6, -1, -24], 2.5, 6, { name: 'pink cylinder' }))
+      .add(new Cone([1, -1, -26], 3, 6, { name: 'yellow cone' }))
+      .add(new Triangle([5, -4, -22], [10, -4, -24], [7.5, 3, -23], { name: 'green triangle' }))
+      .add(new PointLight([-10, 20, 0]));
+    const camera = new Camera({ width: 64, height: 48, fov: 35, position: [0, 2, 0], pitch: -8 });
+    const done = (id, x, y) => task('12', id).done(select(scene, camera, x, y), {});
+    expect([done('side', 8, 20), done('side', 34, 14)]).toEqual([true, false]);
+    expect([done('cone', 34, 14), done('cone', 8, 20)]).toEqual([true, false]);
+    expect([done('triangle', 56, 20), done('triangle', 52, 20)]).toEqual([true, false]);
+    expect([done('beside', 52, 20), done('beside', 60, 20), done('beside', 56, 20), done('beside', 8, 20)]).toEqual([true, true, false, false]);
+  });
+
+  it('13: the bunny, a ray its boxes let in that misses it, a ray no box let in, the bunny\'s shadow', () => {
+    // A small mesh stands in for the bunny: a tetrahedron whose box it does not fill.
+    const mesh = new Mesh({ positions: [[-2, 0, -20], [2, 0, -20], [0, 0, -23], [0, 3, -21]], cells: [[0, 1, 3], [1, 2, 3], [2, 0, 3], [0, 2, 1]] }, { name: 'bunny' });
+    const scene = new Scene().add(new Plane([0, -0.01, 0], [0, 1, 0], { name: 'floor' })).add(mesh).add(new PointLight([20, 10, -21]));
+    const camera = new Camera({ width: 64, height: 48, position: [0, 1.5, 0] });
+    const done = (id, x, y) => task('13', id).done(select(scene, camera, x, y), {});
+    const pixels = [];
+    for (let y = 0; y < 48; y++) for (let x = 0; x < 64; x++) pixels.push([x, y]);
+    const bunny = pixels.find(([x, y]) => inspectPixel(scene, camera, x, y).hit?.object === mesh);
+    expect(done('bunny', ...bunny)).toBe(true);
+    expect(done('skip', 0, 0)).toBe(true);
+    expect(done('skip', ...bunny)).toBe(false);
+    expect(pixels.some(([x, y]) => done('loose', x, y))).toBe(true); // beside a sloping face, inside the box
+    expect(done('loose', ...bunny)).toBe(false);
+    expect(done('loose', 0, 0)).toBe(false);
+    expect(pixels.some(([x, y]) => done('shadow', x, y))).toBe(true); // the floor beside it, away from a low light
+  });
+
+  it('14: the penumbra, the full shadow, outside the spot\'s cone, one shadow ray', () => {
+    const scene = (samples) => new Scene({ background: [0.82, 0.9, 1], ambient: 0.1 })
+      .add(new Plane([0, -4, 0], [0, 1, 0], { name: 'floor' }))
+      .add(new Sphere([2, -1, -20], 3, { name: 'pink ball' }))
+      .add(new SpotLight([-7, 12, -18], [-7, -4, -23], { angle: 20, intensity: 0.7, name: 'spot' }))
+      .add(new AreaLight([-7, 12, -13], 5, { samples, intensity: 0.8, name: 'disc' }));
+    const camera = new Camera({ width: 96, height: 72, fov: 45, position: [0, 5, 2], pitch: -20 });
+    const done = (id, x, y, samples = 16) => task('14', id).done(select(scene(samples), camera, x, y), {});
+    expect([done('penumbra', 64, 21), done('penumbra', 66, 27), done('penumbra', 0, 70)]).toEqual([true, false, false]);
+    expect([done('umbra', 66, 27), done('umbra', 64, 21), done('umbra', 66, 27, 1)]).toEqual([true, false, false]);
+    expect([done('cone', 0, 70), done('cone', 20, 50)].includes(true)).toBe(true);
+    expect(done('one-ray', 0, 70, 1)).toBe(true);
+    expect(done('one-ray', 0, 70, 16)).toBe(false);
   });
 });

@@ -45,10 +45,11 @@ describe('sketches/sketch.css', () => {
   });
 });
 
-describe('README: the p5 web editor', () => {
+describe('the p5 web editor: README and docs/web-editor.md', () => {
   it('shows the starter sketch the browser tests run, as it is, and the <script> line', () => {
-    const readme = readFileSync('README.md', 'utf8');
-    expect(readme).toContain('```js\n' + readFileSync('examples/web-editor/sketch.js', 'utf8') + '```');
-    expect(readme).toContain('<script src="raytracing-sketchbook.js"></script>');
+    const guide = readFileSync('docs/web-editor.md', 'utf8');
+    expect(guide).toContain('```js\n' + readFileSync('examples/web-editor/sketch.js', 'utf8') + '```');
+    expect(guide).toContain('<script src="raytracing-sketchbook.js"></script>');
+    expect(readFileSync('README.md', 'utf8')).toContain('<script src="raytracing-sketchbook.js"></script>');
   });
 });

@@ -60,7 +60,7 @@ describe('the progress code', () => {
 
   it('is short, and reads back as the same progress', () => {
     const code = progressCode(progress, LESSONS);
-    expect(code).toMatch(/^RT1(-[0-9A-F]{4}){5}-[0-9A-F]{2}$/);
+    expect(code).toMatch(/^RT1(-[0-9A-F]{4}){7}-[0-9A-F]{2}-[0-9A-F]{2}$/); // 15 pages, two hex digits each
     expect(readProgressCode(code, LESSONS)).toEqual({ progress });
     expect(readProgressCode(`  ${code.toLowerCase()} `, LESSONS)).toEqual({ progress }); // as typed
     expect(readProgressCode(progressCode({}, LESSONS), LESSONS)).toEqual({ progress: {} });
@@ -87,9 +87,17 @@ describe('the progress code', () => {
     expect(readProgressCode('RT1-00G0-0000-0000-0000-0000-00', LESSONS).problem).toMatch(/shape/);
   });
 
+  it('still reads a code made when only pages 00–09 had tasks: the later pages as nothing done', () => {
+    const first10 = LESSONS.slice(0, 10);
+    const old = progressCode(progress, first10);
+    expect(old).toMatch(/^RT1(-[0-9A-F]{4}){5}-[0-9A-F]{2}$/);
+    expect(readProgressCode(old, LESSONS)).toEqual({ progress });
+    expect(readProgressCode(progressCode(progress, LESSONS.slice(0, 9)), LESSONS).problem).toMatch(/shape/); // shorter still: no code of this kit
+  });
+
   it('refuses bits for tasks a page does not have, even with a good check sum', () => {
     // Page 08 has 3 tasks: bit 3 (value 8) is none of them. Build the code with its check sum.
-    const hex = `${'00'.repeat(8)}08${'00'}`;
+    const hex = `${'00'.repeat(8)}08${'00'.repeat(LESSONS.length - 9)}`;
     let sum = 0;
     for (const [i, ch] of [...hex].entries()) sum = (sum + (i + 1) * parseInt(ch, 16)) % 251;
     const code = ['RT1', ...hex.match(/.{4}/g), sum.toString(16).toUpperCase().padStart(2, '0')].join('-');

@@ -23,6 +23,13 @@ describe('readNumber', () => {
     expect(() => readNumber('1e999', 'radius')).toThrow(RangeError);
   });
 
+  it('says to write decimals with a point when a comma stands for one (2,5), and one number to a whole-number box', () => {
+    expect(() => readNumber('2,5', 'Camera H')).toThrow(/^Camera H must be a number, got "2,5": write decimals with a point, 2\.5$/);
+    expect(() => readNumber('-0,25', 'Camera V')).toThrow(/write decimals with a point, -0\.25$/);
+    expect(() => readNumber('2,5', 'Pixel x', { integer: true })).toThrow(/^Pixel x must be a whole number, got "2,5": one number to a box$/);
+    expect(() => readNumber('1,2,3', 'radius')).toThrow(/^radius must be a number, got "1,2,3"$/); // no point would help
+  });
+
   it('checks whole numbers and ranges, with the range in the message', () => {
     const rule = { min: 0, max: 31, integer: true };
     expect(readNumber('31', 'Pixel x', rule)).toBe(31);
