@@ -15,13 +15,15 @@
  * number as the kernel's nested mix. A ray of weight 0 adds nothing, so it
  * is not traced.
  *
- * One guard float32 needs: a ray leaving a sphere's outside (a shadow ray or a
- * mirror ray from a point seen from outside) never meets that sphere again,
- * so it is not tested against it (\`leaving\`). In float64 the kernel's test
- * says so itself, the ray starting \`bias\` off the surface; in float32 a
- * point on the class scene's ground, a sphere of radius 10,000, is only known
- * to about 1e-3, ten times the bias, and the test would shade the ground with
- * its own shadow (acne).
+ * One guard float32 needs, for rays that start on a sphere (a shadow ray,
+ * a mirror ray, a glass ray): a ray leaving the sphere's outside never meets
+ * it again, and a ray running inside it meets it only at its far root. In
+ * float64 the kernel's test finds that itself, the ray starting \`bias\` off
+ * the surface; in float32 a point on a sphere of radius 10,000 (the class
+ * scene's ground) is only known to about 1e-3, ten times the bias, and the
+ * test would find the surface the ray starts on: the sphere would shade
+ * itself (acne). So each ray carries \`self\`: x, the sphere it leaves (not
+ * tested), y, the sphere it runs inside (its far root only); −1 for none.
  */
 import { SHAPE, KIND } from '../shapes/packed.js';
 import {
@@ -91,10 +93,10 @@ out vec4 pixel;
 int kindOf(int object) { return uKindType[int(shape(object * SHAPE + KIND))]; }
 
 // The smallest t > tMin along the ray of shape \`object\`, or NO_HIT; a mesh's triangle into item.
-float hitShape(int object, vec3 o, vec3 d, float tMin, out int item) {
+float hitShape(int object, vec3 o, vec3 d, float tMin, bool farOnly, out int item) {
   int b = object * SHAPE, kind = kindOf(object);
   item = -1;
-  if (kind == SPHERE) return sphereHit(b, o, d, tMin);
+  if (kind == SPHERE) return sphereHit(b, o, d, tMin, farOnly);
   if (kind == PLANE) return planeHit(b, o, d, tMin);
   if (kind == BOX) return boxHit(b, o, d, tMin);
   if (kind == CYLINDER) return cylinderHit(b, o, d, tMin);
@@ -103,14 +105,14 @@ float hitShape(int object, vec3 o, vec3 d, float tMin, out int item) {
   return meshHit(b, o, d, tMin, item);
 }
 
-// nearestHit: the nearest shape along the ray (−1 for none), its t and a mesh's triangle; \`leaving\` is not tested (see below).
-int nearestHit(vec3 o, vec3 d, int leaving, out float t, out int item) {
+// nearestHit: the nearest shape along the ray (−1 for none), its t and a mesh's triangle; \`self\`: see above.
+int nearestHit(vec3 o, vec3 d, ivec2 self, out float t, out int item) {
   int object = -1, ti_item;
   t = NO_HIT;
   item = -1;
   for (int i = 0; i < uCount; i++) {
-    if (i == leaving) continue;
-    float ti = hitShape(i, o, d, uEpsilon, ti_item);
+    if (i == self.x) continue;
+    float ti = hitShape(i, o, d, uEpsilon, i == self.y, ti_item);
     if (ti < t) { t = ti; object = i; item = ti_item; }
   }
   return object;
@@ -132,12 +134,12 @@ vec3 surfaceAt(int object, int item, vec3 P, vec3 D, out bool inside) {
 }
 
 // How much light gets through from o to reach along the shadow ray toward light l (1 clear, 0 blocked).
-float shadowRay(vec3 o, vec3 d, float reach, int l, int leaving) {
+float shadowRay(vec3 o, vec3 d, float reach, int l, ivec2 self) {
   int lightObject = int(light(l * LIGHT + LIGHT_SHAPE)), row = l * uCount, item;
   float beyond = reach + 2.0 * uBias + 1e-5 * reach; // lib/kernel.js outOfReach
   float transmission = 1.0;
   for (int i = 0; i < uCount; i++) {
-    if (i == lightObject || i == leaving || number(uApart, row + i) > beyond || hitShape(i, o, d, uEpsilon, item) >= reach) continue;
+    if (i == lightObject || i == self.x || number(uApart, row + i) > beyond || hitShape(i, o, d, uEpsilon, i == self.y, item) >= reach) continue;
     transmission *= material(i * MATERIAL + TRANSPARENCY);
     if (transmission == 0.0) return 0.0;
   }
@@ -145,7 +147,7 @@ float shadowRay(vec3 o, vec3 d, float reach, int l, int leaving) {
 }
 
 // lightPoint: emission + ambient + each light the point can see.
-vec3 lightPoint(int object, vec3 P, vec3 N, vec3 D, int leaving) {
+vec3 lightPoint(int object, vec3 P, vec3 N, vec3 D, ivec2 self) {
   int m = object * MATERIAL;
   vec3 surface = vec3(material(m), material(m + 1), material(m + 2));
   vec3 color = vec3(material(m + EMISSION), material(m + EMISSION + 1), material(m + EMISSION + 2)) + uAmbient * surface;
@@ -160,7 +162,7 @@ vec3 lightPoint(int object, vec3 P, vec3 N, vec3 D, int leaving) {
       ? spotShare(vec3(light(at + AXIS), light(at + AXIS + 1), light(at + AXIS + 2)), light(at + COS_OUTER), light(at + COS_INNER), L)
       : 1.0;
     if (beam == 0.0) continue; // outside a spot light's cone
-    float transmission = (uShadows ? shadowRay(P + N * uBias, L, distance - uBias, at / LIGHT, leaving) : 1.0) * beam;
+    float transmission = (uShadows ? shadowRay(P + N * uBias, L, distance - uBias, at / LIGHT, self) : 1.0) * beam;
     if (transmission == 0.0) continue;
     float reach = transmission * falloff(light(at + ATTENUATION), distance);
     float diffuse = cosTheta * reach;
@@ -174,13 +176,14 @@ vec3 lightPoint(int object, vec3 P, vec3 N, vec3 D, int leaving) {
 
 // The rays still to trace: origin, direction, weight, depth.
 vec3 stackOrigin[RAY_STACK], stackDirection[RAY_STACK], stackWeight[RAY_STACK];
-int stackDepth[RAY_STACK], stackLeaving[RAY_STACK];
+int stackDepth[RAY_STACK];
+ivec2 stackSelf[RAY_STACK];
 int waiting;
 
-void push(vec3 o, vec3 d, vec3 weight, int depth, int leaving) {
+void push(vec3 o, vec3 d, vec3 weight, int depth, ivec2 self) {
   if (weight == vec3(0.0)) return; // adds nothing
   stackOrigin[waiting] = o; stackDirection[waiting] = d; stackWeight[waiting] = weight; stackDepth[waiting] = depth;
-  stackLeaving[waiting] = leaving;
+  stackSelf[waiting] = self;
   waiting++;
 }
 
@@ -191,7 +194,7 @@ vec3 shares(float color, float reflection, float transparency, float F) {
 }
 
 // mirrorAndGlass: the mirror ray and the glass ray, at depth + 1, mixed with the Fresnel share (Schlick); returns the local colour's weight.
-vec3 mirrorAndGlass(int object, vec3 P, vec3 N, vec3 D, bool inside, int depth, vec3 weight, int leaving) {
+vec3 mirrorAndGlass(int object, vec3 P, vec3 N, vec3 D, bool inside, int depth, vec3 weight, ivec2 self) {
   int m = object * MATERIAL;
   float reflection = material(m + REFLECTION), transparency = material(m + TRANSPARENCY), ior = material(m + IOR);
   float cosi = -(D.x * N.x + D.y * N.y + D.z * N.z);
@@ -201,8 +204,8 @@ vec3 mirrorAndGlass(int object, vec3 P, vec3 N, vec3 D, bool inside, int depth, 
   float F = fresnel(transparency, refracts, cosi, ior);
   vec3 r = shares(material(m), reflection, transparency, F), g = shares(material(m + 1), reflection, transparency, F),
     b = shares(material(m + 2), reflection, transparency, F);
-  if (refracts) push(P + N * -uBias, T, weight * vec3(r.z, g.z, b.z), depth + 1, -1); // starts just inside
-  push(P + N * uBias, D - 2.0 * dot(D, N) * N, weight * vec3(r.y, g.y, b.y), depth + 1, leaving); // vec3.js reflect
+  if (refracts) push(P + N * -uBias, T, weight * vec3(r.z, g.z, b.z), depth + 1, self.yx); // starts just inside
+  push(P + N * uBias, D - 2.0 * dot(D, N) * N, weight * vec3(r.y, g.y, b.y), depth + 1, self); // vec3.js reflect
   return weight * vec3(r.x, g.x, b.x);
 }
 
@@ -210,22 +213,22 @@ vec3 mirrorAndGlass(int object, vec3 P, vec3 N, vec3 D, bool inside, int depth, 
 vec3 tracePrimary(vec3 origin, vec3 direction) {
   vec3 color = vec3(0.0);
   waiting = 0;
-  push(origin, direction, vec3(1.0), 0, -1);
+  push(origin, direction, vec3(1.0), 0, ivec2(-1));
   while (waiting > 0) {
     waiting--;
     vec3 o = stackOrigin[waiting], d = stackDirection[waiting], weight = stackWeight[waiting];
     int depth = stackDepth[waiting], item;
     float t;
-    int object = nearestHit(o, d, stackLeaving[waiting], t, item);
+    int object = nearestHit(o, d, stackSelf[waiting], t, item);
     if (object < 0) { color += weight * uBackground; continue; }
     vec3 P = o + d * t; // P = Ro + Rd·t
     bool inside;
     vec3 N = surfaceAt(object, item, P, d, inside);
-    int leaving = kindOf(object) == SPHERE && !inside ? object : -1;
-    vec3 local = lightPoint(object, P, N, d, leaving);
+    ivec2 self = kindOf(object) != SPHERE ? ivec2(-1) : inside ? ivec2(-1, object) : ivec2(object, -1);
+    vec3 local = lightPoint(object, P, N, d, self);
     int m = object * MATERIAL;
     float reflection = material(m + REFLECTION), transparency = material(m + TRANSPARENCY);
-    if (depth < uMaxDepth && (reflection > 0.0 || transparency > 0.0)) color += local * mirrorAndGlass(object, P, N, d, inside, depth, weight, leaving);
+    if (depth < uMaxDepth && (reflection > 0.0 || transparency > 0.0)) color += local * mirrorAndGlass(object, P, N, d, inside, depth, weight, self);
     else color += weight * local;
   }
   return color;

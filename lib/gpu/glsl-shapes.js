@@ -12,7 +12,8 @@
  * Ray Tracing Gems, 2019).
  */
 export const SHAPES_GLSL = /* glsl */ `
-float sphereHit(int b, vec3 o, vec3 d, float tMin) {
+// farOnly: the ray runs inside this sphere from its surface (lib/gpu/glsl-kernel.js, self).
+float sphereHit(int b, vec3 o, vec3 d, float tMin, bool farOnly) {
   vec3 c = vec3(shape(b), shape(b + 1), shape(b + 2));
   float radius = shape(b + 3), r2 = radius * radius;
   vec3 L = c - o;
@@ -23,7 +24,7 @@ float sphereHit(int b, vec3 o, vec3 d, float tMin) {
   float band = TANGENT * (r2 + LL);
   if (gap < -band) return NO_HIT; // d > r: a miss
   float thc = gap <= band ? 0.0 : sqrt(gap);
-  if (tca - thc > tMin) return tca - thc;
+  if (tca - thc > tMin && !farOnly) return tca - thc;
   return tca + thc > tMin ? tca + thc : NO_HIT;
 }
 
