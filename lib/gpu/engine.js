@@ -20,12 +20,13 @@ export function noWebGL2() {
 export class GpuTracer {
   /**
    * @param {HTMLCanvasElement|OffscreenCanvas} [canvas] where frames are drawn (a new one when left out)
+   * @param {{ preserveDrawingBuffer?: boolean }} [options] keep the last frame readable after the page shows it (a view's)
    */
-  constructor(canvas) {
+  constructor(canvas, { preserveDrawingBuffer = false } = {}) {
     const why = noWebGL2();
     if (why) throw new Error(`the GPU engine needs WebGL2: ${why}`);
     this.canvas = canvas ?? (typeof document !== 'undefined' ? document.createElement('canvas') : new OffscreenCanvas(1, 1));
-    const gl = this.canvas.getContext('webgl2', { antialias: false, depth: false, stencil: false, preserveDrawingBuffer: false, premultipliedAlpha: false });
+    const gl = this.canvas.getContext('webgl2', { antialias: false, depth: false, stencil: false, preserveDrawingBuffer, premultipliedAlpha: false });
     if (!gl) throw new Error('the GPU engine needs WebGL2: this browser gives no WebGL2 context (switched off, or no GPU driver)');
     this.gl = gl;
     this.program = link(gl, kernelSource());
