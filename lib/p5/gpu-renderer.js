@@ -31,12 +31,12 @@ export class GpuRenderer {
   /** A GPU frame is whole once drawn. */
   get done() { return this.#drawn; }
   get progress() { return this.#drawn ? 1 : 0; }
-  /** Primary rays per second over the last frame (every pixel's samples). */
+  /** Primary rays per second, from the time since the frame before (every pixel's samples). */
   get raysPerSecond() { return this.#rays; }
   /** True when the browser took the GPU's context away. */
   get lost() { return this.tracer.lost; }
 
-  #drawn = false; #rays = 0; #buffer = null; #stale = true;
+  #drawn = false; #rays = 0; #buffer = null; #stale = true; #last = 0;
 
   /** A new scene or camera (or both): checked, then uploaded (the scene) for the next frame. */
   restart({ scene = this.scene, camera = this.camera } = {}) {
@@ -50,13 +50,13 @@ export class GpuRenderer {
 
   /** One whole frame on the GPU (whatever the budget): changed and done. */
   step() {
-    const start = performance.now();
     this.tracer.draw(this.camera);
     this.#drawn = true;
     this.#stale = true;
     this.frames++;
-    const ms = performance.now() - start;
+    const now = performance.now(), ms = now - this.#last; // the GPU works apart from the page: time from frame to frame
     this.#rays = ms > 0 ? (this.width * this.height * this.camera.samples * 1000) / ms : 0;
+    this.#last = now;
     return STEP;
   }
 

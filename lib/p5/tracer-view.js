@@ -270,10 +270,11 @@ export class TracerView {
    */
   draw() {
     if (this.#destroyed) return;
-    const r = this.#renderer;
+    const r = this.#renderer, again = r.live && r.done; // again: one more GPU frame of the same picture
     if (r.lost) { this.setEngine('cpu'); return; } // the GPU's context was taken away: engineRenderer says so
     const { changed, done } = r.step(this.budgetMs);
     if (changed) this.#blit();
+    if (again) return; // nothing else to show: the loop allocates nothing
     this.#showProgress();
     if (this.#events.heard('progress')) this.#events.emit('progress', { progress: done ? 1 : r.progress, done, current: this.current }, this);
     if (r.problem !== this.#shownProblem) this.#shownProblem = showWorkerProblem(this.workerNote, r.problem);
@@ -281,9 +282,7 @@ export class TracerView {
     if (c && (c.x !== this.#shownCurrent?.x || c.y !== this.#shownCurrent?.y)) this.#drawOverlay();
     if (done) {
       if (this.#shownCurrent) this.#drawOverlay(); // the "now tracing" marker goes
-      this.#page.done();
-      this.#words.done();
-      this.figure.dataset.state = 'done';
+      this.#page.done(); this.#words.done(); this.figure.dataset.state = 'done';
     }
   }
 
