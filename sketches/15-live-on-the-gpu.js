@@ -10,11 +10,12 @@
  *
  * Click a pixel: the inspector tells its story, computed again on the CPU
  * (float64) by the same formulas; where the GPU's byte (float32) differs from
- * it, the inspector says by how much. Switch to the CPU to compare the speed.
+ * it, the inspector says by how much. Switch to the CPU to compare the speed:
+ * "Turn by itself" asks for a new picture as soon as the last one is whole.
  */
 import p5 from 'p5';
 import { classScene, Camera } from '../lib/index.js';
-import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
+import { orbit } from '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
 
 const WIDTH = 160, HEIGHT = 120, SCALE = 4;
 
@@ -36,8 +37,9 @@ new p5((p) => {
     }
   };
 
-  // Frames per second, counted over each half second.
+  // "Turn by itself": a new camera as soon as the last picture is whole; frames per second, counted over each half second.
   p.draw = () => {
+    if (document.getElementById('turn').checked && view.done) orbit(view, 1, 0, 1);
     const now = p.millis();
     if (now - since < 500) return;
     const fps = ((frames() - counted) * 1000) / (now - since);

@@ -2,9 +2,11 @@
  * The tracer view's GPU engine: the renderer the view drives (as it drives
  * lib/workers/progressive.js's), but each step is a whole frame traced by
  * the GPU engine (lib/gpu/engine.js) and drawn onto the view's canvas: no
- * progressive passes, a new frame every animation frame. Its `buffer` is read
+ * progressive passes, a whole new frame on the animation frame after every
+ * change (of camera or scene), and nothing while nothing changes (a page
+ * left open costs the GPU nothing). A step allocates nothing. Its `buffer` is read
  * back from the GPU only when asked (a click's inspector, a saved PNG), so
- * the frame loop allocates nothing and waits for nothing.
+ * the frame loop waits for nothing.
  */
 import { GpuTracer } from '../gpu/engine.js';
 import { Scene } from '../scene.js';
@@ -23,7 +25,7 @@ export class GpuRenderer {
     this.frames = 0;
     this.current = null;
     this.problem = null;
-    this.live = true;
+    this.engine = 'gpu';
   }
 
   get width() { return this.camera.width; }
@@ -31,7 +33,7 @@ export class GpuRenderer {
   /** A GPU frame is whole once drawn. */
   get done() { return this.#drawn; }
   get progress() { return this.#drawn ? 1 : 0; }
-  /** Primary rays per second, from the time since the frame before (every pixel's samples). */
+  /** Primary rays per second, from the time between the change and its frame (every pixel's samples). */
   get raysPerSecond() { return this.#rays; }
   /** True when the browser took the GPU's context away. */
   get lost() { return this.tracer.lost; }
@@ -46,6 +48,7 @@ export class GpuRenderer {
     this.scene = scene;
     this.camera = camera;
     this.#drawn = false;
+    this.#last = performance.now();
   }
 
   /** One whole frame on the GPU (whatever the budget): changed and done. */
@@ -54,7 +57,7 @@ export class GpuRenderer {
     this.#drawn = true;
     this.#stale = true;
     this.frames++;
-    const now = performance.now(), ms = now - this.#last; // the GPU works apart from the page: time from frame to frame
+    const now = performance.now(), ms = now - this.#last; // the GPU works apart from the page: time from the change to its frame
     this.#rays = ms > 0 ? (this.width * this.height * this.camera.samples * 1000) / ms : 0;
     this.#last = now;
     return STEP;

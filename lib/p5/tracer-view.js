@@ -160,7 +160,7 @@ export class TracerView {
   /** In 'slow' order: rays per second by the clock (0: `slowRaysPerStep` a frame instead). Shoot in the 3D view sets it. */
   get slowRaysPerSecond() { return this.#renderer.slowRaysPerSecond; }
   set slowRaysPerSecond(n) { this.#renderer.slowRaysPerSecond = n; }
-  get engine() { return this.#renderer.live ? 'gpu' : 'cpu'; } // the engine tracing now, as the canvas's data-engine says
+  get engine() { return this.#renderer.engine ?? 'cpu'; } // the engine tracing now, as the canvas's data-engine says
 
   /** 'gpu': a whole frame every animation frame; 'cpu': progressive. Where the GPU cannot, the CPU, and a line says why (lib/p5/engines.js). */
   setEngine(engine) {
@@ -270,11 +270,10 @@ export class TracerView {
    */
   draw() {
     if (this.#destroyed) return;
-    const r = this.#renderer, again = r.live && r.done; // again: one more GPU frame of the same picture
+    const r = this.#renderer;
     if (r.lost) { this.setEngine('cpu'); return; } // the GPU's context was taken away: engineRenderer says so
     const { changed, done } = r.step(this.budgetMs);
     if (changed) this.#blit();
-    if (again) return; // nothing else to show: the loop allocates nothing
     this.#showProgress();
     if (this.#events.heard('progress')) this.#events.emit('progress', { progress: done ? 1 : r.progress, done, current: this.current }, this);
     if (r.problem !== this.#shownProblem) this.#shownProblem = showWorkerProblem(this.workerNote, r.problem);
@@ -282,7 +281,9 @@ export class TracerView {
     if (c && (c.x !== this.#shownCurrent?.x || c.y !== this.#shownCurrent?.y)) this.#drawOverlay();
     if (done) {
       if (this.#shownCurrent) this.#drawOverlay(); // the "now tracing" marker goes
-      this.#page.done(); this.#words.done(); this.figure.dataset.state = 'done';
+      this.#page.done();
+      this.#words.done();
+      this.figure.dataset.state = 'done';
     }
   }
 
@@ -336,7 +337,7 @@ export class TracerView {
   #frame = () => {
     this.#raf = 0;
     this.draw();
-    if (!this.#renderer.done || this.#renderer.live) this.#schedule();
+    if (!this.#renderer.done) this.#schedule();
   };
 
   /** Copies the renderer's buffer into the canvas; no allocation unless the buffer itself changed. */
