@@ -84,3 +84,15 @@ test('no WebGL2: renderGPU throws an Error saying so', async ({ page }) => {
   });
   expect(message).toMatch(/needs WebGL2.*no WebGL2 context/);
 });
+
+test('each GLSL optics formula gives lib/optics.js\'s number on sampled inputs (a float texture read back)', async ({ page }) => {
+  await page.goto('/tests/e2e/pages/gpu-formulas.html');
+  await page.waitForFunction(() => window.gpuFormulas);
+  const names = await page.evaluate(() => window.gpuFormulas.names);
+  expect(names).toEqual(['lambert', 'specular', 'spotShare', 'falloff', 'lightShare', 'refraction', 'schlick', 'fresnel', 'mixShares']);
+  for (const name of names) {
+    const { compared, worst } = await page.evaluate((n) => window.gpuFormulas.check(n), name);
+    expect(compared, name).toBeGreaterThan(400);
+    expect(worst, `${name}: the sample farthest outside float32's tolerance`).toEqual({ excess: 0, sample: -1 });
+  }
+});
