@@ -17,7 +17,9 @@ let engine = null;
  * @returns {Uint8ClampedArray} RGBA, width × height × 4, row 0 at the top
  * @throws {Error} without WebGL2, or for a shape the GPU cannot draw (the error names it)
  * @example
- * const pixels = renderGPU(classScene({ full: true }), new Camera({ width: 640, height: 480 }));
+ * const frame = () => renderGPU(classScene({ full: true }), new Camera({ width: 640, height: 480 }));
+ * // in a browser with WebGL2, frame() is render()'s picture traced on the GPU;
+ * // in Node it throws "the GPU engine needs WebGL2: there is no canvas here (a browser is needed)"
  */
 export function renderGPU(scene, camera) {
   checkSceneAndCamera(scene, camera);
