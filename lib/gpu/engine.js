@@ -4,7 +4,7 @@
  * (lib/gpu/upload.js), and a frame drawn in one pass, one fragment a pixel.
  * Nothing here runs until a GpuTracer is made: importing it touches no WebGL.
  */
-import { kernelSource, VERTEX_SOURCE, ROW } from './glsl-kernel.js';
+import { kernelSource, VERTEX_SOURCE, ROW, SHAPE_CODES } from './glsl-kernel.js';
 import { gpuScene, inRows } from './upload.js';
 
 /** The textures, by their sampler's name, and what of gpuScene's each holds. */
@@ -29,8 +29,8 @@ export class GpuTracer {
     const gl = this.canvas.getContext('webgl2', { antialias: false, depth: false, stencil: false, preserveDrawingBuffer, premultipliedAlpha: false });
     if (!gl) throw new Error('the GPU engine needs WebGL2: this browser gives no WebGL2 context (switched off, or no GPU driver)');
     this.gl = gl;
-    this.program = link(gl, kernelSource());
-    this.locations = locate(gl, this.program);
+    /** The shader with the BVH walk and without it (made when a scene first needs it), and their uniforms. */
+    this.programs = new Map();
     this.textures = TEXTURES.map(() => gl.createTexture());
     this.scene = null;
     this.counts = null;
@@ -54,6 +54,12 @@ export class GpuTracer {
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
       gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
     });
+    const meshes = numbers.kindTypes.includes(SHAPE_CODES.mesh);
+    if (!this.programs.has(meshes)) {
+      const program = link(gl, kernelSource(meshes));
+      this.programs.set(meshes, { program, locations: locate(gl, program) });
+    }
+    ({ program: this.program, locations: this.locations } = this.programs.get(meshes));
     this.scene = scene;
     this.kindTypes = numbers.kindTypes;
     this.packed = numbers.packed;
@@ -113,7 +119,7 @@ export class GpuTracer {
   dispose() {
     const gl = this.gl;
     this.textures.forEach((texture) => gl.deleteTexture(texture));
-    gl.deleteProgram(this.program);
+    for (const { program } of this.programs.values()) gl.deleteProgram(program);
     gl.deleteVertexArray(this.vertices);
   }
 }

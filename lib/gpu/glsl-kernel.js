@@ -102,7 +102,11 @@ float hitShape(int object, vec3 o, vec3 d, float tMin, bool farOnly, out int ite
   if (kind == CYLINDER) return cylinderHit(b, o, d, tMin);
   if (kind == CONE) return coneHit(b, o, d, tMin);
   if (kind == TRIANGLE) return triangleShapeHit(b, o, d, tMin);
+#if HAS_MESH
   return meshHit(b, o, d, tMin, item);
+#else
+  return NO_HIT;
+#endif
 }
 
 // nearestHit: the nearest shape along the ray (−1 for none), its t and a mesh's triangle; \`self\`: see above.
@@ -127,8 +131,7 @@ vec3 surfaceAt(int object, int item, vec3 P, vec3 D, out bool inside) {
   else if (kind == BOX) N = boxNormal(b, P);
   else if (kind == CYLINDER) N = cylinderNormal(b, P);
   else if (kind == CONE) N = coneNormal(b, P);
-  else if (kind == TRIANGLE) N = triangleNormal(b);
-  else N = meshNormal(b, item);
+  else N = kind == TRIANGLE ? triangleNormal(b) : meshNormal(b, item);
   inside = D.x * N.x + D.y * N.y + D.z * N.z > 0.0;
   return inside ? -N : N; // shade the side the ray sees
 }
@@ -253,9 +256,13 @@ void main() {
 }
 `;
 
-/** The fragment shader's whole source. */
-export function kernelSource() {
-  return `${HEADER}${layout()}\n${READS}${OPTICS_GLSL}${SHAPES_GLSL}${KERNEL}`;
+/**
+ * The fragment shader's whole source; `meshes`: with the BVH walk. A scene
+ * without a mesh gets a shader without it: its stacks in every hit test made
+ * SwiftShader's frame of the class scene two to three times slower.
+ */
+export function kernelSource(meshes = true) {
+  return `${HEADER}${layout()}\n#define HAS_MESH ${meshes ? 1 : 0}\n${READS}${OPTICS_GLSL}${SHAPES_GLSL}${KERNEL}`;
 }
 
 /** A vertex shader drawing one triangle over the whole frame. */

@@ -197,6 +197,7 @@ vec3 triangleNormal(int b) {
   return table3(tableStart(int(shape(b))) + 9);
 }
 
+#if HAS_MESH
 // The slab test on a BVH node's box (lib/bvh.js enterBox): where the ray enters it, or NO_HIT.
 float enterBox(int j, vec3 o, vec3 inv, float tMin, float best) {
   float tNear = tMin, tFar = best;
@@ -250,4 +251,7 @@ vec3 meshNormal(int b, int item) {
   int at = tableStart(int(shape(b)));
   return table3(int(table(at + 4)) + 3 * item);
 }
+#else
+vec3 meshNormal(int b, int item) { return vec3(0.0, 1.0, 0.0); } // (no mesh in the scene)
+#endif
 `;
