@@ -81,3 +81,25 @@ test('without WebGL2 the view traces on the CPU and says why', async ({ page }) 
   await expect(page.locator('[data-message="view-engine"]')).toHaveText(/^Traced on the CPU: .*WebGL2/);
   await expect(page.getByLabel('CPU')).toBeChecked();
 });
+
+test('when the browser takes the GPU\'s context away, the view goes back to the CPU and says why', async ({ page }) => {
+  test.setTimeout(120_000);
+  await page.addInitScript(() => { // keep the WebGL2 contexts the page makes, to lose one
+    const getContext = HTMLCanvasElement.prototype.getContext;
+    window.contexts = [];
+    HTMLCanvasElement.prototype.getContext = function (type, ...rest) {
+      const context = getContext.call(this, type, ...rest);
+      if (type === 'webgl2' && context) window.contexts.push(context);
+      return context;
+    };
+  });
+  await page.goto(PAGE);
+  await waitForDone(page, 60_000);
+  const canvas = page.locator('[data-tracer]');
+  await expect(canvas).toHaveAttribute('data-engine', 'gpu');
+  await page.evaluate(() => window.contexts[0].getExtension('WEBGL_lose_context').loseContext());
+  await canvas.press('+'); // a new camera: the next frame finds the context lost
+  await expect(canvas).toHaveAttribute('data-engine', 'cpu');
+  await expect(page.locator('[data-message="view-engine"]')).toHaveText('Traced on the CPU: the GPU context was lost.');
+  await waitForDone(page, 60_000);
+});
