@@ -47,8 +47,10 @@ async function run({ width = 640, height = 480, seconds = 10, least = 2 } = {}) 
   for (let p = 0; p < frame.length; p += 4) {
     if (Math.abs(frame[p] - reference[p]) > 2 || Math.abs(frame[p + 1] - reference[p + 1]) > 2 || Math.abs(frame[p + 2] - reference[p + 2]) > 2) beyond2++;
   }
+  const info = gl.getExtension('WEBGL_debug_renderer_info'); // the GPU's own name (RENDERER alone says "WebKit WebGL")
+  const renderer = gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER);
   tracer.dispose();
-  return { gpu, cpu: { ...cpu, cores }, beyond2, renderer: gl.getParameter(gl.RENDERER) };
+  return { gpu, cpu: { ...cpu, cores }, beyond2, renderer };
 }
 
 window.bench = { run, ready: true };
