@@ -3,8 +3,8 @@
  * Workers for large frames) and the GPU's whole frames (lib/p5/gpu-renderer.js).
  * Switching keeps the scene, the camera and the order; when the GPU cannot
  * take the picture (no WebGL2, a lost context, a shape it cannot draw, a
- * visual mode other than the shaded picture) the view stays on, or goes back
- * to, the CPU, and a line under the picture says why.
+ * visual mode other than the shaded picture, set before or after) the view
+ * stays on, or goes back to, the CPU, and a line under the picture says why.
  */
 import { WorkerProgressiveRenderer } from '../workers/progressive.js';
 import { GpuRenderer } from './gpu-renderer.js';
@@ -27,7 +27,7 @@ export function checkEngine(engine) {
 export function engineRenderer(engine, current, { budgetMs, shader, shaded }) {
   const { scene, camera, mode } = current;
   const onGpu = current instanceof GpuRenderer;
-  let why = onGpu && current.lost ? 'the GPU context was lost' : null;
+  let why = onGpu ? current.lost : null; // the GPU cannot go on: its context lost, or a visual mode
   if (engine === 'gpu' && !why) {
     if (onGpu) return { renderer: current, engine, why: null };
     if (!shaded) why = 'the GPU draws the shaded picture only';

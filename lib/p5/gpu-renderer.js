@@ -12,6 +12,7 @@ import { GpuTracer } from '../gpu/engine.js';
 import { Scene } from '../scene.js';
 import { Camera } from '../camera.js';
 import { show } from '../check.js';
+import { renderPixel } from '../render.js';
 
 export class GpuRenderer {
   /** The engine's canvas and context are made here: an Error saying why when there is no WebGL2 or the scene cannot go to the GPU. */
@@ -35,13 +36,17 @@ export class GpuRenderer {
   get progress() { return this.#drawn ? 1 : 0; }
   /** Primary rays per second, from the time between the change and its frame (every pixel's samples). */
   get raysPerSecond() { return this.#rays; }
-  /** True when the browser took the GPU's context away. */
-  get lost() { return this.tracer.lost; }
+  /** Why the GPU cannot go on (the view then goes back to the CPU), or null. */
+  get lost() {
+    if (this.tracer.lost) return 'the GPU context was lost';
+    return this.#shaded ? null : 'the GPU draws the shaded picture only';
+  }
 
-  #drawn = false; #rays = 0; #buffer = null; #stale = true; #last = 0;
+  #drawn = false; #rays = 0; #buffer = null; #stale = true; #last = 0; #shaded = true;
 
-  /** A new scene or camera (or both): checked, then uploaded (the scene) for the next frame. */
-  restart({ scene = this.scene, camera = this.camera } = {}) {
+  /** A new scene or camera (or both): checked, then uploaded (the scene) for the next frame; another visual mode's shader: `lost`. */
+  restart({ scene = this.scene, camera = this.camera, shader } = {}) {
+    if (shader !== undefined) this.#shaded = shader === renderPixel;
     if (!(scene instanceof Scene)) throw new TypeError(`scene must be a Scene (new Scene(…)), got ${show(scene)}`);
     if (!(camera instanceof Camera)) throw new TypeError(`camera must be a Camera (new Camera({ width, height })), got ${show(camera)}`);
     if (scene !== this.scene) this.tracer.setScene(scene);

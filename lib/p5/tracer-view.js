@@ -271,7 +271,7 @@ export class TracerView {
   draw() {
     if (this.#destroyed) return;
     const r = this.#renderer;
-    if (r.lost) { this.setEngine('cpu'); return; } // the GPU's context was taken away: engineRenderer says so
+    if (r.lost) { this.setEngine('cpu'); return; } // the GPU cannot go on (its context lost, a visual mode): engineRenderer says why
     const { changed, done } = r.step(this.budgetMs);
     if (changed) this.#blit();
     this.#showProgress();

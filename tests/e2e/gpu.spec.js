@@ -96,3 +96,19 @@ test('each GLSL optics formula gives lib/optics.js\'s number on sampled inputs (
     expect(worst, `${name}: the sample farthest outside float32's tolerance`).toEqual({ excess: 0, sample: -1 });
   }
 });
+
+test('a GPU view: a visual mode other than the shaded picture goes back to the CPU and says why; setEngine brings the GPU back', async ({ page }) => {
+  test.setTimeout(120_000);
+  await page.goto('/tests/e2e/pages/inspector.html?engine=gpu');
+  await expect(page.locator('body')).toHaveAttribute('data-render', 'done', { timeout: 60_000 });
+  const canvas = page.locator('[data-tracer]');
+  await expect(canvas).toHaveAttribute('data-engine', 'gpu');
+  await page.evaluate(() => window.view.setMode('normals'));
+  await expect(canvas).toHaveAttribute('data-engine', 'cpu');
+  await expect(page.locator('[data-message="view-engine"]')).toHaveText('Traced on the CPU: the GPU draws the shaded picture only.');
+  await expect(page.locator('body')).toHaveAttribute('data-render', 'done', { timeout: 60_000 });
+  await page.evaluate(() => window.view.setMode('shaded').setEngine('gpu'));
+  await expect(canvas).toHaveAttribute('data-engine', 'gpu');
+  await expect(page.locator('[data-message="view-engine"]')).toBeHidden();
+  await expect(page.evaluate(() => window.view.setEngine('metal'))).rejects.toThrow(/engine must be 'cpu' or 'gpu', got "metal"/);
+});
