@@ -27,13 +27,18 @@
  *   5. the 3D scene view's frame rate and cost (see view3d());
  *   6. sketch 07's animated example at 320×240 on the page's thread and on 2
  *      workers in turns: frames per second on the canvas, and what a frame
- *      costs on each (see bench/browser/bench.js).
+ *      costs on each (see bench/browser/bench.js);
+ *   7. the GPU engine: the class scene with full shading at 640×480 (or
+ *      --gpu-size 1280x720), frames per second on the GPU and on one Web
+ *      Worker per core, and their ratio, in one run (see bench/browser/gpu.js).
+ *      Headless Chromium here draws WebGL with SwiftShader, on the CPU; on a
+ *      machine with a GPU, add --headed (docs/gpu.md).
  * Times are printed, never asserted; the exit code is 1 only when something
  * is broken (a page error, a picture that differs, no browser).
  *
  * Options: --dev (the dev server instead of build + preview); --runs N (worker
  * timings per case, default 15); --rounds N (animation rounds per thread,
- * default 5); --only progressive, workers, animation, saves or view3d (one part
+ * default 5); --only progressive, workers, animation, saves, view3d or gpu (one part
  * alone); --port N or BENCH_PORT=N (the server's port, default 5178);
  * BENCH_TRACE=file writes the Chromium trace of part 1 (open it in
  * ui.perfetto.dev), and BENCH_TRACE_CATEGORIES=devtools.timeline,v8 adds
@@ -53,6 +58,9 @@ const PORT = port(option('--port') ?? process.env.BENCH_PORT);
 const ROOT = resolve(import.meta.dirname, '..');
 const PAGE = 'bench/browser/bench.html';
 const VIEW3D_PAGE = 'bench/browser/view3d.html';
+const GPU_PAGE = 'bench/browser/gpu.html';
+const GPU_SIZE = (option('--gpu-size') ?? '640x480').split('x').map(Number); // `-- --gpu-size 1280x720`
+const HEADED = process.argv.includes('--headed'); // a real GPU: a headed browser (headless Chromium draws WebGL in software)
 const ONLY_VIEW3D = option('--only') === 'view3d'; // `npm run bench:browser -- --only view3d`: section 5 alone
 const DEV = process.argv.includes('--dev');
 const ONLY = option('--only'); // 'progressive', 'workers', 'animation', 'saves' or 'view3d': one part alone
@@ -92,7 +100,7 @@ async function buildPage() {
   const { build } = await import('vite');
   await build({
     root: ROOT, configFile: false, base: './', logLevel: 'warn',
-    build: { target: 'es2022', outDir, emptyOutDir: true, rollupOptions: { input: [resolve(ROOT, PAGE), resolve(ROOT, VIEW3D_PAGE)] } },
+    build: { target: 'es2022', outDir, emptyOutDir: true, rollupOptions: { input: [resolve(ROOT, PAGE), resolve(ROOT, VIEW3D_PAGE), resolve(ROOT, GPU_PAGE)] } },
     worker: { format: 'es' },
   });
   return outDir;
@@ -466,6 +474,28 @@ function reportView3d({ traces, turn }) {
     `${(((b - a) / a) * 100).toFixed(0)} % slower (goal ≤ 20 %)`);
 }
 
+/* ---------------- 7. the GPU engine ---------------- */
+
+/** The class scene with full shading on the GPU and on one worker per core (bench/browser/gpu.js). */
+async function gpuEngine(browser, base, errors) {
+  const page = await browser.newPage({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1 });
+  watch(page, errors);
+  await page.goto(`${base}${GPU_PAGE}`);
+  await page.waitForFunction(() => window.bench?.ready, null, { timeout: 60_000, polling: 100 });
+  const [width, height] = GPU_SIZE;
+  const result = await page.evaluate((size) => window.bench.run(size), { width, height, seconds: 10, least: 2 });
+  await page.close();
+  if (result.beyond2 > 0.005 * width * height) errors.push(`the GPU's frame differs from render() by more than 2 on ${result.beyond2} pixels`);
+  return { ...result, width, height };
+}
+
+function reportGpu({ gpu, cpu, beyond2, renderer, width, height }) {
+  console.log(`\n7. The GPU engine: the class scene with full shading at ${width}×${height} (WebGL2 renderer: ${renderer})`);
+  console.log(`   GPU: ${gpu.fps.toFixed(2)} frames/s (${gpu.frames} frames, ${ms(gpu.ms)} ms each; goal on a GPU ≥ 60 at 1280×720)`);
+  console.log(`   CPU, ${cpu.cores} workers (one per core): ${cpu.fps.toFixed(2)} frames/s (${cpu.frames} frames, ${ms(cpu.ms)} ms each)`);
+  console.log(`   ratio GPU / CPU: ${(gpu.fps / cpu.fps).toFixed(2)}×; pixels beyond 2 per channel from render(): ${beyond2}`);
+}
+
 /* ---------------- main ---------------- */
 
 const executablePath = findBrowser();
@@ -479,7 +509,7 @@ let server = null, outDir = null, browser = null;
 try {
   if (!DEV) outDir = await buildPage();
   server = await startServer(outDir);
-  browser = await chromium.launch({ executablePath, headless: true });
+  browser = await chromium.launch({ executablePath, headless: !HEADED, ...(HEADED && { args: ['--ignore-gpu-blocklist'] }) });
   const base = `http://localhost:${PORT}/`;
   console.log(`Browser benchmark: Chromium ${browser.version()} headless, ${DEV ? 'Vite dev server (unbundled modules)' : 'production build (vite build + vite preview)'},` +
     ` ${availableParallelism()} cores, load average ${loadavg()[0].toFixed(1)}`);
@@ -503,6 +533,7 @@ try {
     }
   }
   if (!ONLY || ONLY_VIEW3D) reportView3d(await view3d(browser, base, errors));
+  if (!ONLY || ONLY === 'gpu') reportGpu(await gpuEngine(browser, base, errors));
   console.log(`\nload average at the end: ${loadavg()[0].toFixed(1)}`);
 } catch (error) {
   errors.push(error.stack ?? String(error));

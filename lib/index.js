@@ -22,6 +22,7 @@ export { Ray } from './ray.js';
 export { Camera } from './camera.js';
 // Pictures, and the story of one pixel.
 export { render } from './render.js';
+export { renderGPU } from './gpu/render-gpu.js';
 export { inspectPixel } from './explain.js';
 export { ProgressiveRenderer } from './progressive.js';
 export { ParallelRenderer } from './workers/parallel.js';

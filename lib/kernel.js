@@ -21,15 +21,15 @@ import { reflectInto } from './vec3.js';
 import { lambert, specular, lightShare, spotShare, falloff, refract, fresnel as fresnelShare, mix } from './optics.js';
 
 /** Numbers per material, and where each lies among them: r g b, emission r g b, reflection, transparency, ior, specular, shininess. */
-const MATERIAL = 11;
-const EMISSION = 3, REFLECTION = 6, TRANSPARENCY = 7, IOR = 8, SPECULAR = 9, SHININESS = 10;
+export const MATERIAL = 11;
+export const EMISSION = 3, REFLECTION = 6, TRANSPARENCY = 7, IOR = 8, SPECULAR = 9, SHININESS = 10;
 /**
  * Numbers per light: x y z, emission r g b (at EMISSION), the index of its
  * shape (−1 for a point light), its attenuation, then for a spot light 1, its
  * axis x y z, cosOuter and cosInner (0 and unused for any other light).
  */
-const LIGHT = 14;
-const LIGHT_SHAPE = 6, ATTENUATION = 7, IS_SPOT = 8, AXIS = 9, COS_OUTER = 12, COS_INNER = 13;
+export const LIGHT = 14;
+export const LIGHT_SHAPE = 6, ATTENUATION = 7, IS_SPOT = 8, AXIS = 9, COS_OUTER = 12, COS_INNER = 13;
 
 /** The deepest bounce a scene allows (Scene's maxDepth is 0–16), plus the primary ray. */
 const LEVELS = 17;

@@ -17,6 +17,7 @@ registerAddon(sketchbookAddon); // p5.registerAddon on 2.x; on 1.x, p5.prototype
 
 export { sketchbookAddon, FACTORIES } from './addon.js';
 export { TracerView } from './tracer-view.js';
+export { orbit } from './gpu-orbit.js'; // turn a view's camera about the point it looks at (as a drag on a GPU view does)
 export { SceneView } from './scene-view.js';
 export { PhotonView } from './photon-view.js';
 export { Inspector, answerLine } from './inspector.js';

@@ -22,6 +22,7 @@ import { useStyle, element, resolveParent, copyText, shownName, nameTitle } from
 import { showInBox, downloadText } from './text-box.js';
 import { joinInSlices } from '../slices.js';
 import { pixelCSV, pixelCSVLines, rootsMeaning, routesAgree } from './pixel-csv.js';
+import { gpuDifference } from './engines.js';
 import { createAnnouncer } from './announce.js';
 import { virtualRows, VIRTUAL_FROM } from './virtual-rows.js';
 
@@ -88,8 +89,7 @@ export class Inspector {
     if (!selected) {
       this.record = null;
       this.answer.textContent = '';
-      this.body.replaceChildren(element('p', { class: 'rt-hint' },
-        'Click a pixel of the picture, or click it once and move with the arrow keys (Shift: 10 at a time).'));
+      this.body.replaceChildren(element('p', { class: 'rt-hint' }, 'Click a pixel of the picture, or click it once and move with the arrow keys (Shift: 10 at a time).'));
       this.element.dataset.state = 'empty';
       return;
     }
@@ -111,7 +111,7 @@ export class Inspector {
     const tests = shown ?? r.tests;
     const more = shown ? this.#moreButton(r) : null;
     const spheres = r.tests.length > 0 || r.records.length === 0; // only other shapes (12, 13): no empty sphere tables
-    this.body.replaceChildren(colorSection(r), raySection(r), hitSection(r), lightsSection(r),
+    this.body.replaceChildren(colorSection(r), ...gpuDifference(this.view, r), raySection(r), hitSection(r), lightsSection(r),
       ...(spheres ? [quadraticSection(r, tests, more), geometricSection(r, tests, more && this.#moreButton(r))] : []), shapesSection(r));
   }
 

@@ -36,6 +36,8 @@ import { pngDataURL, pngFilename, download, createSaveButton } from './tracer-ex
 import { checkScale, pictureScale, sizePicture, watchRoom } from './tracer-layout.js';
 import { createPictureWords } from './picture-words.js';
 import { createEvents } from './tracer-events.js';
+import { engineRenderer, showEngine, checkEngine } from './engines.js';
+import { listenForOrbit } from './gpu-orbit.js';
 
 /**
  * Creates a tracer view inside a p5 sketch (call it from setup()).
@@ -53,6 +55,7 @@ import { createEvents } from './tracer-events.js';
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where to put it (element, id or p5.Element); default the sketch's node
  * @param {string} [options.label] a caption above the picture
  * @param {boolean} [options.legend=true] show the mode's legend under the picture (not for 'shaded')
+ * @param {'cpu'|'gpu'} [options.engine='cpu'] 'gpu': a whole frame every animation frame by WebGL2 (lib/gpu/), back to the CPU with a line on the page when WebGL2 is missing or lost
  * @returns {TracerView}
  * @example
  * new p5((p) => {
@@ -70,7 +73,7 @@ export function createTracerView(p, options) { // no options: checkOptions gives
 }
 
 /** The options createTracerView takes. */
-const TRACER_VIEW_OPTIONS = ['scene', 'camera', 'scale', 'grid', 'mode', 'order', 'renderMode', 'budgetMs', 'workers', 'parent', 'label', 'legend'];
+const TRACER_VIEW_OPTIONS = ['scene', 'camera', 'scale', 'grid', 'mode', 'order', 'renderMode', 'budgetMs', 'workers', 'parent', 'label', 'legend', 'engine'];
 /** What a tracer view tells its listeners (see `on`). */
 const EVENTS = ['select', 'restart', 'progress'];
 
@@ -93,7 +96,8 @@ export class TracerView {
    * @param {import('p5').default} p
    * @param {Parameters<typeof createTracerView>[1]} options as for createTracerView
    */
-  constructor(p, { scene, camera, scale = 'auto', grid = false, mode = 'shaded', order, renderMode, budgetMs = 8, workers = 'auto', parent, label, legend = true } = /** @type {any} */ ({})) {
+  constructor(p, { scene, camera, scale = 'auto', grid = false, mode = 'shaded', order, renderMode, budgetMs = 8, workers = 'auto', parent, label, legend = true, engine = 'cpu' } = /** @type {any} */ ({})) {
+    checkEngine(engine);
     this.#scale = checkScale(scale);
     this.#grid = Boolean(grid);
     this.budgetMs = checkBudget(budgetMs);
@@ -107,10 +111,11 @@ export class TracerView {
     useStyle();
     addProjectorSwitch();
     this.#buildDom(resolveParent(parent, sketchNode(p)), label);
+    listenForOrbit(this.canvasElement, this); // on the GPU: drag, arrows and +/− move the camera (first, to take the drag)
     listenForPixels(this.canvasElement, this); // press, drag, arrow keys: this.select(x, y)
     this.#page = registerView(this);
     this.#unwatchRoom = watchRoom(this.figure, () => this.#layout()); // the window, and the room the page's layout leaves
-    this.#started();
+    this.setEngine(engine); // and the first frame starts
   }
 
   /* ---------------- public API ---------------- */
@@ -155,6 +160,17 @@ export class TracerView {
   /** In 'slow' order: rays per second by the clock (0: `slowRaysPerStep` a frame instead). Shoot in the 3D view sets it. */
   get slowRaysPerSecond() { return this.#renderer.slowRaysPerSecond; }
   set slowRaysPerSecond(n) { this.#renderer.slowRaysPerSecond = n; }
+  get engine() { return this.#renderer.engine ?? 'cpu'; } // the engine tracing now, as the canvas's data-engine says
+
+  /** 'gpu': a whole frame every animation frame; 'cpu': progressive. Where the GPU cannot, the CPU, and a line says why (lib/p5/engines.js). */
+  setEngine(engine) {
+    const { renderer, engine: now, why } = engineRenderer(checkEngine(engine), this.#renderer, { budgetMs: this.budgetMs, shader: modeShader(this.#mode), shaded: this.#mode === 'shaded' });
+    if (renderer !== this.#renderer) { this.#renderer.terminate(); this.#renderer = renderer; }
+    showEngine(this, now, why);
+    this.#started();
+    return this;
+  }
+
   /** The progressive renderer doing the work, for tools and benchmarks; sketches use the view's own API. */
   get renderer() { return this.#renderer; }
 
@@ -255,6 +271,7 @@ export class TracerView {
   draw() {
     if (this.#destroyed) return;
     const r = this.#renderer;
+    if (r.lost) { this.setEngine('cpu'); return; } // the GPU cannot go on (its context lost, a visual mode): engineRenderer says why
     const { changed, done } = r.step(this.budgetMs);
     if (changed) this.#blit();
     this.#showProgress();
@@ -326,6 +343,7 @@ export class TracerView {
   /** Copies the renderer's buffer into the canvas; no allocation unless the buffer itself changed. */
   #blit() {
     const r = this.#renderer;
+    if (r.blitTo) { r.blitTo(this.#ctx); return; } // the GPU's frame, GPU to GPU
     if (this.#imageData?.data !== r.buffer) this.#imageData = new ImageData(r.buffer, r.width, r.height);
     this.#ctx.putImageData(this.#imageData, 0, 0);
   }

@@ -87,7 +87,7 @@ test.afterAll(async () => {
 });
 
 test('the page offers the starters this file runs', () => {
-  expect(STARTERS).toEqual(['sketch', 'diagrams', 'animation', 'homework-traffic-signal', 'homework-rear-lights']);
+  expect(STARTERS).toEqual(['sketch', 'diagrams', 'animation', 'gpu', 'homework-traffic-signal', 'homework-rear-lights']);
 });
 
 test('the one-file build passes the editor\'s rewrite untouched (its // noprotect line); the starters go through it', () => {
@@ -171,6 +171,7 @@ for (const version of Object.keys(P5S)) {
           for (let i = 0; i < data.length; i += 4 * 89) colours.add(data[i] << 16 | data[i + 1] << 8 | data[i + 2]);
           expect(colours.size, 'colours in the 3D view').toBeGreaterThan(20);
         }
+        if (name === 'gpu') await expect(page.locator('[data-tracer]')).toHaveAttribute('data-engine', 'gpu'); // the GPU engine is in the one file, on either p5
         if (HOMEWORK[name]) {
           // As given: the check fails on the lights, its hint in global mode's names, its list styled.
           await page.getByRole('button', { name: 'Check my scene' }).click();

@@ -8,120 +8,16 @@
 // inspector, which records every step of the same trace, gives render()'s colour.
 import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
-import { Camera, Scene, Sphere, Plane, Box, Cylinder, Cone, Triangle, Mesh, PointLight, SpotLight, AreaLight, render, inspectPixel } from '../../lib/index.js';
+import { Camera, Scene, Sphere, Plane, Box, Cylinder, Mesh, PointLight, render, inspectPixel } from '../../lib/index.js';
 import { renderPixel, prepareFrame } from '../../lib/render.js';
 import { packScene, tracePrimary, outOfReach } from '../../lib/kernel.js';
 import { trace } from '../../lib/trace.js';
 import { Ray } from '../../lib/ray.js';
 import { Vec3 } from '../../lib/vec3.js';
 import { MODES, modeShader } from '../../lib/modes.js';
+import { between, point, direction, scene, shapeScene, sphereScene, camera } from '../shared/random-scenes.js';
 import { ProgressiveRenderer, ORDERS } from '../../lib/progressive.js';
 
-/**
- * A number in [min, max]: half the time fast-check's own double, drawn to the
- * ends and to tiny values (0, 1, 5e-324), half the time spread evenly, so that
- * colours and places in between, where a last bit shows in a byte, come up too.
- */
-const between = (min, max) => fc.oneof(
-  fc.double({ min, max, noNaN: true }),
-  fc.noBias(fc.integer({ min: 0, max: 2 ** 53 - 1 })).map((n) => Math.min(max, min + (max - min) * (n / 2 ** 53))),
-);
-const coord = (size) => between(-size, size);
-const point = (size) => fc.tuple(coord(size), coord(size), coord(size));
-/** Anywhere near the eye, or ahead of it (down −z, where a camera that looks ahead sees it small). */
-const place = fc.oneof(point(15), fc.tuple(coord(10), coord(8), between(-40, -3)));
-const unit = between(0, 1);
-/** Zero half the time: most surfaces are plain, some mirror, some glass, some shine. */
-const sometimes = (value) => fc.oneof(fc.constant(0), value);
-const color = fc.tuple(unit, unit, unit);
-
-const material = fc.record({
-  color,
-  emission: fc.oneof({ weight: 3, arbitrary: fc.constant(0) }, { weight: 1, arbitrary: fc.tuple(unit, unit, unit).map((c) => c.map((v) => 2 * v)) }),
-  reflection: sometimes(unit),
-  transparency: sometimes(unit),
-  ior: between(1, 2.5),
-  specular: sometimes(unit),
-  shininess: between(1, 200),
-});
-
-const sphere = fc.tuple(place, fc.oneof(
-  { weight: 4, arbitrary: between(0.05, 1.5) }, // small: many tiles leave it out
-  { weight: 2, arbitrary: between(0.05, 8) },
-  { weight: 1, arbitrary: between(100, 10000) }, // a ground or a wall
-), material).map(([center, radius, m]) => new Sphere(center, radius, m));
-
-const direction = point(1).filter(([x, y, z]) => x * x + y * y + z * z > 0.01);
-const plane = fc.tuple(point(10), direction, material).map(([p, normal, m]) => new Plane(p, normal, m));
-
-const size = between(0.1, 4);
-const box = fc.tuple(place, size, size, size, material)
-  .map(([[x, y, z], dx, dy, dz, m]) => new Box([x, y, z], [x + dx, y + dy, z + dz], m));
-
-/** Lights fade with distance now and then (attenuation 0: not at all). */
-const attenuation = fc.oneof({ weight: 2, arbitrary: fc.constant(0) }, { weight: 1, arbitrary: between(0, 0.5) });
-const pointLight = fc.tuple(point(20), color, between(0, 2), attenuation)
-  .map(([position, c, intensity, k]) => (k === 0 ? new PointLight(position, c, intensity) : new PointLight(position, { color: c, intensity, attenuation: k })));
-const spotLight = fc.tuple(point(20), point(10), between(1, 89), color, between(0, 2), attenuation)
-  .filter(([p, t]) => p.some((v, i) => v !== t[i]))
-  .map(([position, target, angle, c, intensity, k]) => new SpotLight(position, target, { angle, color: c, intensity, attenuation: k }));
-const areaLight = fc.tuple(point(20), between(0.1, 4), fc.constantFrom(1, 4, 9), direction, color, between(0, 2), attenuation)
-  .map(([center, radius, samples, normal, c, intensity, k]) => new AreaLight(center, radius, { samples, normal, color: c, intensity, attenuation: k }));
-const light = fc.oneof({ weight: 3, arbitrary: pointLight }, { weight: 1, arbitrary: spotLight }, { weight: 1, arbitrary: areaLight });
-
-/** Cylinders and cones, capped and open. */
-const axial = (Shape) => fc.tuple(place, between(0.1, 3), between(0.1, 4), fc.boolean(), material)
-  .map(([center, radius, height, capped, m]) => new Shape(center, radius, height, { ...m, capped }));
-const cylinder = axial(Cylinder), cone = axial(Cone);
-
-/** Three corners near a place, kept only when they span an area (a Triangle refuses a flat one). */
-const corners = fc.tuple(place, point(3), point(3)).filter(([, u, v]) => {
-  const cx = u[1] * v[2] - u[2] * v[1], cy = u[2] * v[0] - u[0] * v[2], cz = u[0] * v[1] - u[1] * v[0];
-  return Math.hypot(cx, cy, cz) > 1e-3 * Math.hypot(...u) * Math.hypot(...v) && Math.hypot(...u) > 0.05 && Math.hypot(...v) > 0.05;
-}).map(([[x, y, z], u, v]) => [[x, y, z], [x + u[0], y + u[1], z + u[2]], [x + v[0], y + v[1], z + v[2]]]);
-const triangle = fc.tuple(corners, material).map(([[a, b, c], m]) => new Triangle(a, b, c, m));
-
-/** A small mesh: a tetrahedron scaled and placed, or a few separate triangles (enough for the tree to split). */
-const tetrahedron = fc.tuple(place, between(0.2, 3), material).map(([[x, y, z], r, m]) => new Mesh({
-  positions: [[x, y, z], [x + r, y, z], [x, y + r, z], [x, y, z + r]], cells: [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]],
-}, m));
-const soup = fc.tuple(fc.array(corners, { minLength: 1, maxLength: 12 }), material).map(([list, m]) => new Mesh({
-  positions: list.flat(), cells: list.map((_, i) => [3 * i, 3 * i + 1, 3 * i + 2]),
-}, m));
-const mesh = fc.oneof(tetrahedron, soup);
-
-/** A scene's switches, and its items drawn from `item`. */
-const sceneOf = (item) => fc.record({
-  background: color,
-  ambient: sometimes(unit),
-  shadows: fc.boolean(),
-  specular: fc.boolean(),
-  maxDepth: fc.integer({ min: 0, max: 4 }),
-  bias: fc.constantFrom(1e-4, 0, 0.01),
-  epsilon: fc.constantFrom(1e-6, 0),
-  items: fc.array(item, { minLength: 1, maxLength: 7 }),
-  again: fc.oneof({ weight: 9, arbitrary: fc.constant(null) }, { weight: 1, arbitrary: fc.nat() }), // now and then one item added twice
-}).map(({ items, again, ...options }) => [...items, ...(again === null ? [] : [items[again % items.length]])]
-  .reduce((s, it) => s.add(it), new Scene(options)));
-
-const scene = sceneOf(fc.oneof({ weight: 5, arbitrary: sphere }, { weight: 1, arbitrary: plane }, { weight: 3, arbitrary: box }, { weight: 2, arbitrary: light }));
-/** The course's other shapes among spheres, planes and boxes: cylinders, cones, triangles and small meshes. */
-const shapeScene = sceneOf(fc.oneof(
-  { weight: 2, arbitrary: sphere }, { weight: 1, arbitrary: plane }, { weight: 1, arbitrary: box }, { weight: 2, arbitrary: light },
-  { weight: 2, arbitrary: cylinder }, { weight: 2, arbitrary: cone }, { weight: 2, arbitrary: triangle }, { weight: 2, arbitrary: mesh },
-));
-/** The lesson's scenes: spheres only (the fast path then skips asking each shape its kind), lit by their glow and point lights. */
-const sphereScene = sceneOf(fc.oneof({ weight: 3, arbitrary: sphere }, { weight: 1, arbitrary: light }));
-
-/** Small frames of a few tiles (16 px), rarely whole ones; from anywhere looking anywhere, or from near the origin looking ahead. */
-const camera = fc.record({
-  width: fc.integer({ min: 1, max: 48 }),
-  height: fc.integer({ min: 1, max: 36 }),
-  fov: fc.oneof(between(10, 60), between(10, 150)),
-  yaw: fc.oneof(between(-30, 30), between(-180, 180)),
-  pitch: fc.oneof(between(-20, 20), between(-89, 89)),
-  position: fc.oneof(point(2), point(6)),
-}).map((options) => new Camera(options));
 
 /** The plain reference: `shader` called for every pixel, in reading order, each primary ray against every shape. */
 function pixelByPixel(scene, cam, shader = renderPixel) {

@@ -1,0 +1,151 @@
+/**
+ * The GPU engine: a WebGL2 context on a canvas of its own, the kernel's
+ * shader (lib/gpu/glsl-kernel.js), the packed scene as float textures
+ * (lib/gpu/upload.js), and a frame drawn in one pass, one fragment a pixel.
+ * Nothing here runs until a GpuTracer is made: importing it touches no WebGL.
+ */
+import { kernelSource, VERTEX_SOURCE, ROW, SHAPE_CODES } from './glsl-kernel.js';
+import { gpuScene, inRows } from './upload.js';
+
+/** The textures, by their sampler's name, and what of gpuScene's each holds. */
+const TEXTURES = [['uShapes', 'shapes'], ['uMaterials', 'materials'], ['uLights', 'lights'], ['uApart', 'apart'], ['uTables', 'tables']];
+
+/** Why there is no WebGL2 here, or null when there is (tested before any context is made). */
+export function noWebGL2() {
+  if (typeof document === 'undefined' && typeof OffscreenCanvas === 'undefined') return 'there is no canvas here (a browser is needed)';
+  if (typeof WebGL2RenderingContext === 'undefined') return 'this browser has no WebGL2';
+  return null;
+}
+
+export class GpuTracer {
+  /**
+   * @param {HTMLCanvasElement|OffscreenCanvas} [canvas] where frames are drawn (a new one when left out)
+   * @param {{ preserveDrawingBuffer?: boolean }} [options] keep the last frame readable after the page shows it (a view's)
+   */
+  constructor(canvas, { preserveDrawingBuffer = false } = {}) {
+    const why = noWebGL2();
+    if (why) throw new Error(`the GPU engine needs WebGL2: ${why}`);
+    this.canvas = canvas ?? (typeof document !== 'undefined' ? document.createElement('canvas') : new OffscreenCanvas(1, 1));
+    const gl = this.canvas.getContext('webgl2', { antialias: false, depth: false, stencil: false, preserveDrawingBuffer, premultipliedAlpha: false });
+    if (!gl) throw new Error('the GPU engine needs WebGL2: this browser gives no WebGL2 context (switched off, or no GPU driver)');
+    this.gl = gl;
+    /** The shader with the BVH walk and without it (made when a scene first needs it), and their uniforms. */
+    this.programs = new Map();
+    this.textures = TEXTURES.map(() => gl.createTexture());
+    this.scene = null;
+    this.counts = null;
+    this.vertices = gl.createVertexArray();
+  }
+
+  /** True when the browser took the context away (a driver reset, too many contexts). */
+  get lost() {
+    return this.gl.isContextLost();
+  }
+
+  /** Uploads the scene's packed form; an Error naming a shape the GPU cannot draw. */
+  setScene(scene) {
+    const numbers = gpuScene(scene), gl = this.gl;
+    const limit = gl.getParameter(gl.MAX_TEXTURE_SIZE);
+    TEXTURES.forEach(([name, field], t) => {
+      const { data, rows } = inRows(numbers[field]);
+      if (rows > limit) throw new Error(`renderGPU cannot draw this scene: its ${field} take ${numbers[field].length} numbers, more than this GPU's textures hold (${ROW * limit})`);
+      gl.bindTexture(gl.TEXTURE_2D, this.textures[t]);
+      gl.texImage2D(gl.TEXTURE_2D, 0, gl.R32F, ROW, rows, 0, gl.RED, gl.FLOAT, data);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    });
+    const meshes = numbers.kindTypes.includes(SHAPE_CODES.mesh);
+    if (!this.programs.has(meshes)) {
+      const program = link(gl, kernelSource(meshes));
+      this.programs.set(meshes, { program, locations: locate(gl, program) });
+    }
+    ({ program: this.program, locations: this.locations } = this.programs.get(meshes));
+    this.scene = scene;
+    this.kindTypes = numbers.kindTypes;
+    this.packed = numbers.packed;
+  }
+
+  /** Draws the frame of `camera` (the scene last set) into the engine's canvas; allocates nothing. */
+  draw(camera) {
+    const gl = this.gl, u = this.locations, k = this.packed;
+    if (this.canvas.width !== camera.width) this.canvas.width = camera.width;
+    if (this.canvas.height !== camera.height) this.canvas.height = camera.height;
+    gl.viewport(0, 0, camera.width, camera.height);
+    gl.useProgram(this.program);
+    for (let t = 0; t < TEXTURES.length; t++) {
+      gl.activeTexture(gl.TEXTURE0 + t);
+      gl.bindTexture(gl.TEXTURE_2D, this.textures[t]);
+      gl.uniform1i(u[TEXTURES[t][0]], t);
+    }
+    gl.uniform1iv(u.uKindType, this.kindTypes);
+    gl.uniform1i(u.uCount, k.count);
+    gl.uniform1i(u.uLightCount, k.lightCount);
+    gl.uniform1i(u.uMaxDepth, k.maxDepth);
+    gl.uniform3f(u.uBackground, k.background[0], k.background[1], k.background[2]);
+    gl.uniform1f(u.uAmbient, k.ambient);
+    gl.uniform1f(u.uBias, k.bias);
+    gl.uniform1f(u.uEpsilon, k.epsilon);
+    gl.uniform1i(u.uShadows, k.shadows ? 1 : 0);
+    gl.uniform1i(u.uSpecular, k.specular ? 1 : 0);
+    const { position: e, right: r, up, forward: f } = camera;
+    gl.uniform3f(u.uEye, e.x, e.y, e.z);
+    gl.uniform3f(u.uRight, r.x, r.y, r.z);
+    gl.uniform3f(u.uUp, up.x, up.y, up.z);
+    gl.uniform3f(u.uForward, f.x, f.y, f.z);
+    gl.uniform2f(u.uHalf, camera.halfWidth, camera.halfHeight);
+    gl.uniform2i(u.uSize, camera.width, camera.height);
+    gl.uniform1i(u.uSamples, camera.samples);
+    gl.bindVertexArray(this.vertices);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+  }
+
+  /**
+   * The last frame's bytes into `target` (RGBA, row 0 at the top, as render()
+   * writes them). GL's rows run from the bottom, so they are turned over.
+   */
+  read(target, width, height) {
+    const gl = this.gl, row = width * 4;
+    gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, target);
+    const swap = new Uint8ClampedArray(row);
+    for (let top = 0, bottom = height - 1; top < bottom; top++, bottom--) {
+      swap.set(target.subarray(top * row, top * row + row));
+      target.copyWithin(top * row, bottom * row, bottom * row + row);
+      target.set(swap, bottom * row);
+    }
+    return target;
+  }
+
+  /** Gives the GPU's resources back. */
+  dispose() {
+    const gl = this.gl;
+    this.textures.forEach((texture) => gl.deleteTexture(texture));
+    for (const { program } of this.programs.values()) gl.deleteProgram(program);
+    gl.deleteVertexArray(this.vertices);
+  }
+}
+
+/** The compiled and linked program; an Error with the compiler's log. */
+function link(gl, fragmentSource) {
+  const program = gl.createProgram();
+  for (const [type, source] of [[gl.VERTEX_SHADER, VERTEX_SOURCE], [gl.FRAGMENT_SHADER, fragmentSource]]) {
+    const shader = gl.createShader(type);
+    gl.shaderSource(shader, source);
+    gl.compileShader(shader);
+    if (!gl.getShaderParameter(shader, gl.COMPILE_STATUS) && !gl.isContextLost()) {
+      throw new Error(`the GPU engine's shader did not compile: ${gl.getShaderInfoLog(shader)}`);
+    }
+    gl.attachShader(program, shader);
+  }
+  gl.linkProgram(program);
+  if (!gl.getProgramParameter(program, gl.LINK_STATUS) && !gl.isContextLost()) {
+    throw new Error(`the GPU engine's shader did not link: ${gl.getProgramInfoLog(program)}`);
+  }
+  return program;
+}
+
+/** Every uniform's location, by name. */
+function locate(gl, program) {
+  const names = ['uShapes', 'uMaterials', 'uLights', 'uApart', 'uTables', 'uKindType', 'uCount', 'uLightCount', 'uMaxDepth', 'uSamples',
+    'uBackground', 'uAmbient', 'uBias', 'uEpsilon', 'uShadows', 'uSpecular', 'uEye', 'uRight', 'uUp', 'uForward', 'uHalf', 'uSize'];
+  return Object.fromEntries(names.map((name) => [name, gl.getUniformLocation(program, name)]));
+}
