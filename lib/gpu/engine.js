@@ -31,6 +31,10 @@ export class GpuTracer {
     this.gl = gl;
     /** The shader with the BVH walk and without it (made when a scene first needs it), and their uniforms. */
     this.programs = new Map();
+    /** @type {WebGLProgram | null} the program of the scene set last */
+    this.program = null;
+    /** @type {any} its uniforms' locations by name */
+    this.locations = null;
     this.textures = TEXTURES.map(() => gl.createTexture());
     this.scene = null;
     this.counts = null;

@@ -118,6 +118,7 @@ export async function copyText(text) {
 
 /** Copies `text` through a hidden text box, as Ctrl+C copies a selection; the focus goes back where it was. */
 function copyBySelection(text) {
+  if (typeof document === 'undefined' || typeof document.execCommand !== 'function') return false;
   const box = element('textarea', { readonly: '', 'aria-hidden': 'true', tabindex: '-1', style: 'position:fixed;top:0;left:0;width:1px;height:1px;opacity:0' });
   box.value = text;
   const before = document.activeElement;

@@ -45,6 +45,7 @@ export class GpuRenderer {
   #drawn = false; #rays = 0; #buffer = null; #stale = true; #last = 0; #shaded = true;
 
   /** A new scene or camera (or both): checked, then uploaded (the scene) for the next frame; another visual mode's shader: `lost`. */
+  /** @param {{ scene?: any, camera?: any, shader?: any }} [options] */
   restart({ scene = this.scene, camera = this.camera, shader } = {}) {
     if (shader !== undefined) this.#shaded = shader === renderPixel;
     if (!(scene instanceof Scene)) throw new TypeError(`scene must be a Scene (new Scene(…)), got ${show(scene)}`);

@@ -87,7 +87,7 @@ const EVENTS = ['select', 'restart', 'progress'];
  * view.on('progress', ({ progress }) => console.log(`${Math.round(progress * 100)}%`));
  */
 export class TracerView {
-  #renderer; #page; #imageData = null; #raf = 0; #destroyed = false;
+  /** @type {any} a WorkerProgressiveRenderer, or the GPU engine's (lib/p5/engines.js) */ #renderer; #page; #imageData = null; #raf = 0; #destroyed = false;
   #scale; #grid; #mode; #selected = null; #events = createEvents(EVENTS);
   #shownCurrent = null; #progressText = ''; #shownProblem = null;
   #ctx; #overlayCtx; #unwatchRoom; #words;
