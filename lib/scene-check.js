@@ -10,13 +10,13 @@
 import { Scene } from './scene.js';
 import { Camera } from './camera.js';
 import { Material } from './material.js';
-import { PointLight } from './lights.js';
+import { lightsOf, lightClassOf } from './lights/index.js';
 import { classOf } from './shapes/index.js';
 import { toColor } from './color.js';
 import { show, withPath } from './check.js';
 
 /**
- * Checks every field of the scene, its shapes, their materials and its point
+ * Checks every field of the scene, its shapes, their materials and its
  * lights. A colour given as text or one number ('red', 0.5) is turned into
  * [r, g, b] in place, as the constructors do; anything else bad throws.
  * @param {Scene} scene
@@ -25,9 +25,9 @@ export function checkScene(scene) {
   withPath(() => new Scene(sceneOptions(scene)), 'scene.');
   scene.background = asColor(scene.background, 'scene.background');
   scene.objects.forEach((o, i) => checkShape(o, `objects[${i}]`));
-  scene.lights.forEach(({ source: s }, i) => {
-    if (s instanceof PointLight) withPath(() => new PointLight(s.position, { color: s.color, intensity: s.intensity, attenuation: s.attenuation }), `lights[${i}].`);
-  });
+  for (const light of lightsOf(scene)) { // rebuilt by its class from its fields as they are now; named by its first place in scene.lights
+    withPath(() => lightClassOf(light).build(light), `lights[${scene.lights.findIndex((l) => l.source === light)}].`);
+  }
 }
 
 /**

@@ -329,7 +329,7 @@ function addedCell(added, at) {
  */
 function areaLightBlock(hit, g, a) {
   const at = { 'data-area-light': String(a) };
-  const name = g.light.name ? `area light '${g.light.name}'` : `area light ${a + 1}`;
+  const name = g.light.name ? `${g.label} '${g.light.name}'` : `${g.label} ${a + 1}`;
   const percent = Math.round((100 * g.reached) / g.samples);
   const rows = g.indices;
   return element('div', { class: 'rt-area-light', ...at },
