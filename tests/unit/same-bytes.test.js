@@ -16,6 +16,8 @@ import { Ray } from '../../lib/ray.js';
 import { Vec3 } from '../../lib/vec3.js';
 import { MODES, modeShader } from '../../lib/modes.js';
 import { ProgressiveRenderer, ORDERS } from '../../lib/progressive.js';
+import { shapeClasses } from '../../lib/shapes/index.js';
+import { lightClasses } from '../../lib/lights/index.js';
 
 /**
  * A number in [min, max]: half the time fast-check's own double, drawn to the
@@ -67,7 +69,15 @@ const spotLight = fc.tuple(point(20), point(10), between(1, 89), color, between(
   .map(([position, target, angle, c, intensity, k]) => new SpotLight(position, target, { angle, color: c, intensity, attenuation: k }));
 const areaLight = fc.tuple(point(20), between(0.1, 4), fc.constantFrom(1, 4, 9), direction, color, between(0, 2), attenuation)
   .map(([center, radius, samples, normal, c, intensity, k]) => new AreaLight(center, radius, { samples, normal, color: c, intensity, attenuation: k }));
-const light = fc.oneof({ weight: 3, arbitrary: pointLight }, { weight: 1, arbitrary: spotLight }, { weight: 1, arbitrary: areaLight });
+
+/**
+ * A random one of each listed light class, by its type. The scenes below draw
+ * from every class of the list (lib/lights/index.js), so a light is in the
+ * property the day it is listed; one listed with no entry here fails the test
+ * 'has a random one of every listed shape and light' until it has one.
+ */
+const LIGHTS = { pointLight: { weight: 3, arbitrary: pointLight }, spotLight: { weight: 1, arbitrary: spotLight }, areaLight: { weight: 1, arbitrary: areaLight } };
+const light = fc.oneof(...lightClasses().map((Light) => LIGHTS[Light.type]).filter(Boolean));
 
 /** Cylinders and cones, capped and open. */
 const axial = (Shape) => fc.tuple(place, between(0.1, 3), between(0.1, 4), fc.boolean(), material)
@@ -105,11 +115,16 @@ const sceneOf = (item) => fc.record({
   .reduce((s, it) => s.add(it), new Scene(options)));
 
 const scene = sceneOf(fc.oneof({ weight: 5, arbitrary: sphere }, { weight: 1, arbitrary: plane }, { weight: 3, arbitrary: box }, { weight: 2, arbitrary: light }));
-/** The course's other shapes among spheres, planes and boxes: cylinders, cones, triangles and small meshes. */
-const shapeScene = sceneOf(fc.oneof(
-  { weight: 2, arbitrary: sphere }, { weight: 1, arbitrary: plane }, { weight: 1, arbitrary: box }, { weight: 2, arbitrary: light },
-  { weight: 2, arbitrary: cylinder }, { weight: 2, arbitrary: cone }, { weight: 2, arbitrary: triangle }, { weight: 2, arbitrary: mesh },
-));
+/**
+ * A random one of each listed shape class, by its type, as LIGHTS: the scenes
+ * of every listed shape draw from the list (lib/shapes/index.js).
+ */
+const SHAPES = {
+  sphere: { weight: 2, arbitrary: sphere }, plane: { weight: 1, arbitrary: plane }, box: { weight: 1, arbitrary: box },
+  cylinder: { weight: 2, arbitrary: cylinder }, cone: { weight: 2, arbitrary: cone }, triangle: { weight: 2, arbitrary: triangle }, mesh: { weight: 2, arbitrary: mesh },
+};
+/** Every listed shape (the course's cylinders, cones, triangles and small meshes among spheres, planes and boxes) and every listed light. */
+const shapeScene = sceneOf(fc.oneof(...shapeClasses().map((Shape) => SHAPES[Shape.type]).filter(Boolean), { weight: 2, arbitrary: light }));
 /** The lesson's scenes: spheres only (the fast path then skips asking each shape its kind), lit by their glow and point lights. */
 const sphereScene = sceneOf(fc.oneof({ weight: 3, arbitrary: sphere }, { weight: 1, arbitrary: light }));
 
@@ -182,6 +197,11 @@ function assertFresh(property, params) {
 }
 
 describe('the same bytes as the plain reference, for random scenes and cameras (property)', () => {
+  it('has a random one of every listed shape and light (a new class is in the property the day it is listed)', () => {
+    expect(shapeClasses().map((Shape) => Shape.type).filter((type) => !SHAPES[type])).toEqual([]);
+    expect(lightClasses().map((Light) => Light.type).filter((type) => !LIGHTS[type])).toEqual([]);
+  });
+
   it('render(), and render() of a band of rows', () => {
     assertBoth(fc.property(scene, camera, fc.nat(), fc.nat(), (s, cam, a, b) => {
       const reference = pixelByPixel(s, cam);
@@ -225,7 +245,7 @@ describe('the same bytes as the plain reference, for random scenes and cameras (
     }), RUNS);
   });
 
-  it('render() of scenes with cylinders, cones, triangles and meshes: the fast path, and the same bytes', () => {
+  it('render() of scenes with every listed shape (cylinders, cones, triangles, meshes, …): the fast path, and the same bytes', () => {
     assertBoth(fc.property(shapeScene, camera, (s, cam) => {
       const twice = new Set(s.objects).size !== s.objects.length;
       expect(prepareFrame(s, cam).packed === null).toBe(twice);
