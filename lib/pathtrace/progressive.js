@@ -50,6 +50,9 @@ export class PathProgressiveRenderer {
     this.mode = 'coarse';
     this.current = null;
     this.problem = null;
+    /** As a ProgressiveRenderer's slow motion (which a path-traced picture has not): unused. */
+    this.slowRaysPerStep = 1;
+    this.slowRaysPerSecond = 0;
     this.restart({ scene, camera, path });
   }
 
