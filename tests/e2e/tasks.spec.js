@@ -242,15 +242,15 @@ test('the gallery shows each lesson\'s progress, the achievements and a code the
   await page.goto('/');
   await expect(page.locator('a[href$="01-rays-through-pixels.html"] [data-progress]')).toHaveText('2 of 6');
   await expect(page.locator('a[href$="02-the-quadratic.html"] [data-progress]')).toHaveText('0 of 5');
-  await expect(page.locator('[data-progress]')).toHaveCount(10); // 00–09: the playground has no tasks
+  await expect(page.locator('[data-progress]')).toHaveCount(11); // 00–09 and 16: the playground and 11–14 have no tasks
   await expect(page.locator('[data-achievement="page-03"]')).toContainText('The geometric approach');
   const code = await page.locator('[data-progress-code]').textContent();
-  expect(code).toMatch(/^RT1(-[0-9A-F]{4}){5}-[0-9A-F]{2}$/);
+  expect(code).toMatch(/^RT1(-[0-9A-F]{4}){5}-[0-9A-F]{2}-[0-9A-F]{2}$/); // two hex digits a page, in fours
 
   await page.goto(`/teacher.html#code=${code}`);
   await expect(page.locator('[data-teacher-summary]')).toHaveText('1 of 1 code read.');
   const student = page.locator('[data-student="read"]');
-  await expect(student).toContainText('6 of 43 tasks done.');
+  await expect(student).toContainText('6 of 48 tasks done.');
   await expect(student.locator('[data-page="01"]')).toContainText('Rays through pixels: 2 of 6');
   await expect(student.locator('[data-page="01"]')).toContainText('✓ Find a pixel whose ray hits nothing.');
   await expect(student).toContainText('★ Finished 03');
