@@ -6,6 +6,7 @@
  *
  *   npm run class                 port 5173
  *   npm run class -- --port 8080  another port
+ *   npm run class -- --data DIR   the class board's folder (scripts/board/setup.js)
  *
  * Students' laptops must be on the same network (Wi-Fi) as the teacher's, and
  * the teacher's firewall must let the port in. Ctrl+C stops the server.
@@ -14,6 +15,7 @@ import { spawn } from 'node:child_process';
 import { networkInterfaces } from 'node:os';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
+import { folderFrom, boardKey, boardLines, loadDatabase, FOLDER_VARIABLE } from './board/setup.js';
 
 const ROOT = resolve(import.meta.dirname, '..');
 
@@ -50,13 +52,15 @@ export function portFrom(argv) {
 
 async function main() {
   const port = portFrom(process.argv);
-  const vite = spawn(join(ROOT, 'node_modules/.bin/vite'), ['--host', '--mode', 'class', '--port', String(port), '--strictPort'], { cwd: ROOT, stdio: ['inherit', 'pipe', 'inherit'] });
+  const folder = folderFrom(process.argv); // the class board's (scripts/board/)
+  const env = { ...process.env, [FOLDER_VARIABLE]: folder };
+  const vite = spawn(join(ROOT, 'node_modules/.bin/vite'), ['--host', '--mode', 'class', '--port', String(port), '--strictPort'], { cwd: ROOT, env, stdio: ['inherit', 'pipe', 'inherit'] });
   let said = false;
   vite.stdout.on('data', async (chunk) => {
     process.stdout.write(chunk);
     if (said || !/ready in/i.test(String(chunk))) return;
     said = true;
-    setTimeout(() => sayWhereToGo(port), 200); // after Vite's own list of addresses
+    setTimeout(() => sayWhereToGo(port).then(() => sayWhereTheBoardIs(folder, port)), 200); // after Vite's own list of addresses
   });
   for (const signal of ['SIGINT', 'SIGTERM']) process.on(signal, () => vite.kill(signal));
   vite.on('exit', (code) => process.exit(code ?? 0));
@@ -80,6 +84,11 @@ async function sayWhereToGo(port) {
   }
   console.log('  If a laptop cannot reach it: the firewall of this computer must let port ' +
     `${port} in (the computer may ask the first time). Ctrl+C stops the server.\n`);
+}
+
+async function sayWhereTheBoardIs(folder, port) {
+  const { problem } = await loadDatabase();
+  console.log(problem ? `  ${problem}\n` : `${boardLines(folder, boardKey(folder), port)}\n`);
 }
 
 if (import.meta.url === pathToFileURL(process.argv[1] ?? '').href) main();
