@@ -12,6 +12,7 @@
 import { valueBox } from './value-box.js';
 import { element, resolveParent, sketchNode, copyText } from './dom.js';
 import { checkOptions } from '../check.js';
+import { createAnnouncer } from './announce.js';
 
 /**
  * Reads every box (each bad one shows its message): `{ name: value }`, or
@@ -54,12 +55,20 @@ export function createAnswerForm(p, options) {
   }
 
   const answer = element('code', { class: 'answer', 'data-answer-line': '' });
-  const result = element('span', { class: 'result', 'data-result': '', role: 'status' });
+  const result = element('span', { class: 'result', 'data-result': '' });
   const detail = element('p', { class: 'detail', 'data-answer-detail': '' });
-  const copyButton = element('button', { type: 'button', class: 'rt-button' }, 'Copy answer');
-  copyButton.addEventListener('click', () => copyText(answer.textContent));
+  // The verdict is said with the answer line, as the line to type: it speaks for the
+  // selected pixel too (the inspector's line gives the ray's own angles, not an answer).
+  const verdict = createAnnouncer({ name: 'verdict', order: 1, speaksFor: 'pixel' });
+  const copied = createAnnouncer({ name: 'copy', order: 3 });
+  const copyButton = element('button', { type: 'button', class: 'rt-button', 'data-copy-answer': '' }, 'Copy answer');
+  copyButton.addEventListener('click', async () => {
+    const line = answer.textContent;
+    if (!line) return copied.say('Nothing to copy yet: check an answer first.');
+    copied.say(await copyText(line) ? `Copied: ${line}` : `Not copied: the browser refused. The answer is ${line}`);
+  });
   const section = element('section', { class: 'task' },
-    element('h2', {}, title), form, element('div', { class: 'answer-row' }, answer, result, copyButton), detail,
+    element('h2', {}, title), form, element('div', { class: 'answer-row' }, answer, result, copyButton), detail, verdict.element, copied.element,
     note && (note instanceof Node ? note : element('p', { class: 'note' }, note)));
   resolveParent(parent, sketchNode(p)).append(section);
 
@@ -81,6 +90,7 @@ export function createAnswerForm(p, options) {
         const bad = Object.values(boxes).filter((b) => b.message.textContent).map((b) => b.input.getAttribute('aria-label'));
         result.replaceChildren(`Fix ${bad.length === 1 ? 'the box' : 'the boxes'} ${bad.join(', ')} (marked in red, the reason beside it), then Check again.`);
         result.dataset.result = 'error';
+        verdict.say(result.textContent);
       }
       return values;
     },
@@ -95,6 +105,8 @@ export function createAnswerForm(p, options) {
       Object.assign(result.dataset, data);
       if (line !== undefined) answer.textContent = line;
       if (more !== undefined) detail.textContent = more;
+      // words, not ✔ / ✘ (read as "heavy check mark"); the line first: it is the one to type
+      verdict.say(`${answer.textContent ? `${answer.textContent}. ` : ''}${ok ? 'Right' : 'Wrong'}: ${message}`);
       // The page's tasks (task-list.js) hear of each verdict.
       section.dispatchEvent(new CustomEvent('rt-answer', { bubbles: true, detail: { ok: Boolean(ok), answer: answer.textContent } }));
     },
