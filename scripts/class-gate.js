@@ -32,6 +32,7 @@ export const STUDENT_ROUTES = [
   { path: /^\/@vite\/(client|env)$/, why: 'live reload: a teacher\'s save reaches the students\' pages' },
   { path: /^\/@id\/[\w.@/:+-]+$/, why: 'modules Vite names itself (the stand-in for a solution)' },
   { path: /^\/api\/?(index\.html)?$/, why: 'the API reference' },
+  { path: /^\/bench\/live\/[\w./-]+$/, why: 'a sketch written while the class watches, outside the gallery (the live-coding tests write theirs there)' },
   { path: /^\/tests\/e2e\/__screenshots__\/gallery\.spec\.js\/[\w-]+\.png$/, why: 'the gallery\'s thumbnails' },
 ];
 
