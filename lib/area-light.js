@@ -8,9 +8,9 @@
  * hit point lights up by the share of the disc its shadow rays reach.
  */
 import { toVec3, Vec3, normalize, cross } from './vec3.js';
-import { toColor, MAX_COLOR } from './color.js';
 import { finiteNumber, checkOptions, show } from './check.js';
-import { checkAttenuation } from './lights.js';
+import { vector } from './shapes/json.js';
+import { lightColor, lightIntensity, checkAttenuation, lightName, fading, definedOnly } from './lights/checks.js';
 
 /** Shadow rays per hit an area light may ask for: an n × n grid, n from 1 to 8. */
 export const AREA_SAMPLES = [1, 4, 9, 16, 25, 36, 49, 64];
@@ -38,18 +38,32 @@ export class AreaLight {
     finiteNumber(radius, 'radius');
     if (!(radius > 0)) throw new RangeError(`radius must be greater than 0, got ${radius}`);
     this.radius = radius;
-    this.color = toColor(color, 'color');
-    finiteNumber(intensity, 'intensity');
-    if (intensity < 0 || intensity > MAX_COLOR) throw new RangeError(`intensity must be between 0 and ${MAX_COLOR}, got ${intensity}`);
-    this.intensity = intensity;
+    this.color = lightColor(color);
+    this.intensity = lightIntensity(intensity);
     if (!AREA_SAMPLES.includes(samples)) throw new RangeError(`samples must be a square number of shadow rays, 1, 4, 9, … 64 (an n × n grid), got ${show(samples)}`);
     this.samples = samples;
     this.normal = toVec3(normal, 'normal');
     if (this.normal.x === 0 && this.normal.y === 0 && this.normal.z === 0) throw new RangeError('normal must not be (0, 0, 0): it says which way the disc faces');
     normalize(this.normal, this.normal);
     this.attenuation = checkAttenuation(attenuation);
-    if (typeof name !== 'string') throw new TypeError(`name must be text, got ${show(name)}`);
-    this.name = name;
+    this.name = lightName(name);
+  }
+
+  static get type() { return 'areaLight'; }
+  static get codeName() { return 'AreaLight'; }
+  static get label() { return 'area light'; }
+  /** The inspector shows its shadow rays as one group (one per point of its disc). */
+  static get grouped() { return true; }
+  static get fields() { return ['center', 'radius', 'color', 'intensity', 'samples', 'normal', 'attenuation']; }
+  static build(o) {
+    return new AreaLight(o.center, o.radius, definedOnly({ color: o.color, intensity: o.intensity, samples: o.samples, normal: o.normal, attenuation: o.attenuation }));
+  }
+  static codeArguments(o) {
+    return [o.center, o.radius, { color: o.color, intensity: o.intensity, samples: o.samples, normal: o.normal, ...fading(o.attenuation) }];
+  }
+
+  toJSON() {
+    return { type: 'areaLight', name: this.name, center: vector(this.center), radius: this.radius, color: [...this.color], intensity: this.intensity, samples: this.samples, normal: vector(this.normal), ...fading(this.attenuation) };
   }
 
   /** What the whole disc gives off: colour × intensity. */
@@ -65,7 +79,7 @@ export class AreaLight {
    * @returns {Vec3[]}
    */
   points() {
-    const n = Math.sqrt(this.samples), { u, v } = discAxes(this.normal), c = this.center, r = this.radius;
+    const n = Math.sqrt(this.samples), { u, v } = this.axes(), c = this.center, r = this.radius;
     const points = [];
     for (let j = 0; j < n; j++) {
       for (let i = 0; i < n; i++) {
@@ -74,6 +88,28 @@ export class AreaLight {
       }
     }
     return points;
+  }
+
+  /** Two unit vectors across the disc, `{ u, v }`, at right angles to each other and to its normal: the sample points and the rim are laid out along them. */
+  axes() {
+    return discAxes(this.normal);
+  }
+
+  /** The disc's rim, `n` points round it in its plane: what the 3D view draws of it (beside a glow per point). */
+  outlines(n = 48) {
+    const c = this.center, r = this.radius, { u, v } = this.axes();
+    const rim = [];
+    for (let i = 0; i < n; i++) {
+      const a = (2 * Math.PI * i) / n, cu = r * Math.cos(a), sv = r * Math.sin(a);
+      rim.push(new Vec3(c.x + cu * u.x + sv * v.x, c.y + cu * u.y + sv * v.y, c.z + cu * u.z + sv * v.z));
+    }
+    return [rim];
+  }
+
+  /** What its drawing in the 3D view depends on: the disc (its glows sit at its points). */
+  viewKey() {
+    const { center: c, normal: n } = this;
+    return `${c.x},${c.y},${c.z},${this.radius},${n.x},${n.y},${n.z},${this.samples}`;
   }
 
   /**

@@ -10,7 +10,7 @@ import { pixelCoordinate } from './check.js';
 import { shapeName, shapeNames } from './scene.js';
 import { sampleOffsets } from './camera.js';
 import { clamp } from './numbers.js';
-import { AreaLight } from './area-light.js';
+import { lightClassOf } from './lights/index.js';
 
 const _bytes = new Uint8ClampedArray(4);
 
@@ -82,7 +82,7 @@ function addSamples(record, scene, camera) {
 /**
  * An area light casts one shadow ray per sample point, so the hit record has
  * one `lights` entry per point. `hit.areaLights` gathers them, one entry per
- * AreaLight, in the order it first appears: `{ light, samples, reached,
+ * light whose class is `grouped` (an AreaLight), in the order it first appears: `{ light, label, samples, reached,
  * transmission, contribution, rays }` — `reached` the shadow rays that got to
  * the light (some light through), `transmission` their sum (the share of the
  * disc seen, × samples), `contribution` the sum of what they added, `rays` the
@@ -94,9 +94,10 @@ export function groupAreaLights(hit) {
   if (!hit) return;
   const groups = new Map();
   hit.lights.forEach((l, index) => {
-    if (!(l.light instanceof AreaLight)) return; // a point or spot light: its own row
+    const Light = /** @type {any} */ (lightClassOf(l.light));
+    if (!Light?.grouped) return; // a point or spot light: its own row
     let g = groups.get(l.light);
-    if (!g) groups.set(l.light, g = { light: l.light, samples: 0, reached: 0, transmission: 0, contribution: [0, 0, 0], rays: [], indices: [] });
+    if (!g) groups.set(l.light, g = { light: l.light, label: Light.label, samples: 0, reached: 0, transmission: 0, contribution: [0, 0, 0], rays: [], indices: [] });
     l.sample = g.samples++; // its point's number: scene.lights holds them in the disc's order
     if (l.transmission > 0) g.reached++;
     g.transmission += l.transmission;

@@ -17,19 +17,13 @@
  */
 import { plainClassOf, ballOf } from './shapes/index.js';
 import { SHAPE, KIND, P, N, scratchNumbers, sideTables } from './shapes/packed.js';
+import { LIGHT, LIGHT_EMISSION, LIGHT_SHAPE, ATTENUATION, IS_SPOT, AXIS, COS_OUTER, COS_INNER, packSource } from './lights/packed.js';
 import { reflectInto } from './vec3.js';
 import { lambert, specular, lightShare, spotShare, falloff, refract, fresnel as fresnelShare, mix } from './optics.js';
 
 /** Numbers per material, and where each lies among them: r g b, emission r g b, reflection, transparency, ior, specular, shininess. */
 export const MATERIAL = 11;
 export const EMISSION = 3, REFLECTION = 6, TRANSPARENCY = 7, IOR = 8, SPECULAR = 9, SHININESS = 10;
-/**
- * Numbers per light: x y z, emission r g b (at EMISSION), the index of its
- * shape (−1 for a point light), its attenuation, then for a spot light 1, its
- * axis x y z, cosOuter and cosInner (0 and unused for any other light).
- */
-export const LIGHT = 14;
-export const LIGHT_SHAPE = 6, ATTENUATION = 7, IS_SPOT = 8, AXIS = 9, COS_OUTER = 12, COS_INNER = 13;
 
 /** The deepest bounce a scene allows (Scene's maxDepth is 0–16), plus the primary ray. */
 const LEVELS = 17;
@@ -75,11 +69,7 @@ export class PackedScene {
     objects.forEach((object, i) => this.#packShape(object, i));
     this.lightCount = lights.length;
     this.lights = new Float64Array(lights.length * LIGHT);
-    lights.forEach((light, i) => {
-      const { position: p, emission: e, spot } = light;
-      const cone = spot ? [1, spot.axis.x, spot.axis.y, spot.axis.z, spot.cosOuter, spot.cosInner] : [0, 0, 0, 0, 0, 0];
-      this.lights.set([p.x, p.y, p.z, e[0], e[1], e[2], light.object ? this.index.get(light.object) ?? -1 : -1, light.attenuation, ...cone], i * LIGHT);
-    });
+    lights.forEach((light, i) => packSource(light, light.object ? this.index.get(light.object) ?? -1 : -1, this.lights, i * LIGHT)); // layout: lib/lights/packed.js
     this.apart = this.#apart(objects, lights);
     this.background = Float64Array.from(scene.background);
     this.ambient = scene.ambient;
@@ -262,7 +252,7 @@ function lightPoint(k, object, out) {
     const highlight = k.specular
       ? specular(mat[m + SPECULAR], mat[m + SHININESS], cos, Lx, Ly, Lz, Nx, Ny, Nz, surface[D], surface[D + 1], surface[D + 2]) * reach
       : 0;
-    const glow = l + EMISSION; // the light's colour
+    const glow = l + LIGHT_EMISSION; // the light's colour
     cr += lightShare(lights[glow], red, diffuse, highlight);
     cg += lightShare(lights[glow + 1], green, diffuse, highlight);
     cb += lightShare(lights[glow + 2], blue, diffuse, highlight);

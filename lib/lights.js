@@ -1,11 +1,18 @@
 /**
  * Lights. A point light is a position and a colour; an emissive object (a
  * sphere whose material has an emission) is a light too, at its centre.
+ *
+ * Every light class answers for itself (the light protocol, lib/lights/index.js,
+ * docs/ARCHITECTURE.md "A new light"): its sources for the tracer, its JSON
+ * and checks, its code, its 3D drawing and how the inspector shows it.
  */
 import { toVec3 } from './vec3.js';
 import { middleOf } from './shapes/index.js';
-import { toColor, MAX_COLOR } from './color.js';
-import { finiteNumber, checkOptions, show } from './check.js';
+import { vector } from './shapes/json.js';
+import { checkOptions } from './check.js';
+import { lightColor, lightIntensity, checkAttenuation, lightName, fading, definedOnly } from './lights/checks.js';
+
+export { checkAttenuation } from './lights/checks.js';
 
 /** The options a point light takes as its second argument. */
 const OPTIONS = ['color', 'intensity', 'attenuation', 'name'];
@@ -29,13 +36,11 @@ export class PointLight {
     if (isOptions(color)) {
       if (arguments.length > 2) throw new TypeError('a point light takes (position, { color, intensity }) or (position, color, intensity), not both');
       ({ color = [1, 1, 1], intensity = 1, attenuation = 0, name = '' } = checkOptions(color, OPTIONS, 'point light'));
-      if (typeof name !== 'string') throw new TypeError(`name must be text, got ${show(name)}`);
+      lightName(name);
     }
     this.position = toVec3(position, 'position');
-    finiteNumber(intensity, 'intensity');
-    if (intensity < 0) throw new RangeError(`intensity must not be negative, got ${intensity}`);
-    if (intensity > MAX_COLOR) throw new RangeError(`intensity must be at most ${MAX_COLOR}, got ${intensity}`);
-    this.color = toColor(color, 'color');
+    lightIntensity(intensity);
+    this.color = lightColor(color);
     this.intensity = intensity;
     /** What it gives off: colour × intensity. */
     this.emission = this.color.map((c) => c * intensity);
@@ -43,17 +48,49 @@ export class PointLight {
     this.attenuation = checkAttenuation(attenuation);
     this.name = name;
   }
+
+  /** Its name in scene JSON, and in the code that builds it. */
+  static get type() { return 'pointLight'; }
+  static get codeName() { return 'PointLight'; }
+  /** What the inspector calls it. */
+  static get label() { return 'point light'; }
+  /** Its fields in scene JSON (besides type and name). */
+  static get fields() { return ['position', 'color', 'intensity', 'attenuation']; }
+  /** Built from its JSON fields (or its own, to check them again), with the constructor's checks. */
+  static build(o) {
+    return o.attenuation === undefined ? new PointLight(o.position, o.color, o.intensity)
+      : new PointLight(o.position, definedOnly({ color: o.color, intensity: o.intensity, attenuation: o.attenuation }));
+  }
+  /** Built from its JSON to the last bit (the scene form need not build it again). */
+  static get roundTrips() { return true; }
+
+  /**
+   * Its constructor's arguments for the code, from its JSON: positional,
+   * defaults left out; the options form when it fades (only that form takes attenuation).
+   * @param {object} o its JSON
+   * @param {{ color: (rgb: number[]) => object }} code writes a colour argument as the code does
+   */
+  static codeArguments(o, code) {
+    if (o.attenuation) return [o.position, { ...(isWhite(o.color) ? {} : { color: o.color }), ...(o.intensity === 1 ? {} : { intensity: o.intensity }), attenuation: o.attenuation }];
+    return [o.position, isWhite(o.color) && o.intensity === 1 ? undefined : code.color(o.color), o.intensity === 1 ? undefined : o.intensity];
+  }
+
+  toJSON() {
+    return { type: 'pointLight', name: this.name ?? '', position: vector(this.position), color: [...this.color], intensity: this.intensity, ...fading(this.attenuation) };
+  }
+
+  /** The scene's light sources for it: one, itself. */
+  sources() {
+    return [{ position: this.position, emission: this.emission, object: null, source: this, attenuation: this.attenuation }];
+  }
+
+  /** What its drawing in the 3D view depends on (a glow at its position). */
+  viewKey() {
+    return `${this.position.x},${this.position.y},${this.position.z}`;
+  }
 }
 
-/**
- * A light's `attenuation`, k in 1 / (1 + k·d²) (lib/optics.js's falloff): a
- * finite number ≥ 0; 0 (the default) keeps the light as strong at any distance.
- */
-export function checkAttenuation(value) {
-  finiteNumber(value, 'attenuation');
-  if (value < 0) throw new RangeError(`attenuation must not be negative (0: no falloff), got ${value}`);
-  return value;
-}
+const isWhite = (c) => c[0] === 1 && c[1] === 1 && c[2] === 1;
 
 /** A plain object (not a colour array or string): the options form. */
 function isOptions(value) {
@@ -61,12 +98,11 @@ function isOptions(value) {
 }
 
 /**
- * The scene's light sources as `{ position, emission, object, attenuation }`: point lights
- * (object null) and emissive objects (their `middle()`: a sphere's centre, a
- * box's middle; object is the shape itself, which a shadow ray may not block;
- * they do not fade with distance).
+ * An emissive shape's light source, `{ position, emission, object, source, attenuation }`:
+ * at its `middle()` (a sphere's centre, a box's middle); `object` is the shape
+ * itself, which a shadow ray may not block; it does not fade with distance.
+ * (A light's own sources are its `sources()`.)
  */
-export function lightSource(item) {
-  if (item instanceof PointLight) return { position: item.position, emission: item.emission, object: null, source: item, attenuation: item.attenuation };
-  return { position: middleOf(item), emission: item.material.emission, object: item, source: item, attenuation: 0 };
+export function lightSource(shape) {
+  return { position: middleOf(shape), emission: shape.material.emission, object: shape, source: shape, attenuation: 0 };
 }

@@ -15,7 +15,6 @@ import { ballOf } from './shapes/index.js';
 import { nearestHit } from './trace.js';
 import { Ray } from './ray.js';
 import { show } from './check.js';
-import { AreaLight } from './area-light.js';
 
 /**
  * Spheres bigger than this are drawn as a patch of ground, not a ball. Higher
@@ -130,7 +129,7 @@ function addRay(out, scene, kind, depth, origin, direction, hit, opts) {
   for (const l of hit.lights) {
     out.push({
       kind: 'shadow', depth, from: hit.point, to: l.position, light: l.light,
-      facing: l.facing, lit: l.facing && !l.inShadow, transmission: l.transmission, ...(l.light instanceof AreaLight && { sample: l.sample }),
+      facing: l.facing, lit: l.facing && !l.inShadow, transmission: l.transmission, ...(l.sample !== undefined && { sample: l.sample }),
       blockedAt: l.facing && l.inShadow ? blocker(scene, hit, l) : null,
     });
   }
@@ -155,24 +154,6 @@ export function sampleSegments(record, { missLength = 40 } = {}) {
     kind: 'sample', depth: 0, hit: s.t !== null, dx: s.dx, dy: s.dy, color: s.color,
     from: s.ray.origin, to: scaleAndAdd(new Vec3(), s.ray.origin, s.ray.direction, s.t ?? missLength),
   }));
-}
-
-/** The area lights of a scene, each once, in the order of their first point in `scene.lights`. */
-export function areaLightsOf(scene) {
-  return [...new Set(scene.lights.map((l) => l.source).filter((s) => s instanceof AreaLight))];
-}
-
-/** An area light's rim: `n` points round its disc, in its plane (the disc's outline in the 3D view). */
-export function discOutline(light, n = 48) {
-  const c = light.center, r = light.radius, nl = light.normal;
-  const helper = Math.abs(nl.y) < 0.9 ? new Vec3(0, 1, 0) : new Vec3(1, 0, 0);
-  const u = normalize(new Vec3(), cross(new Vec3(), helper, nl)), v = cross(new Vec3(), nl, u);
-  const out = [];
-  for (let i = 0; i < n; i++) {
-    const a = (2 * Math.PI * i) / n, cu = r * Math.cos(a), sv = r * Math.sin(a);
-    out.push(new Vec3(c.x + cu * u.x + sv * v.x, c.y + cu * u.y + sv * v.y, c.z + cu * u.z + sv * v.z));
-  }
-  return out;
 }
 
 const _shadow = new Ray();

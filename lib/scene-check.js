@@ -10,16 +10,15 @@
 import { Scene } from './scene.js';
 import { Camera } from './camera.js';
 import { Material } from './material.js';
-import { PointLight } from './lights.js';
-import { SpotLight } from './spot-light.js';
-import { AreaLight } from './area-light.js';
+import { lightsOf, lightClassOf } from './lights/index.js';
+import { lightName } from './lights/checks.js';
 import { classOf } from './shapes/index.js';
 import { toColor } from './color.js';
 import { show, withPath } from './check.js';
 
 /**
  * Checks every field of the scene, its shapes, their materials and its
- * lights (point, spot and area). A colour given as text or one number ('red', 0.5) is turned into
+ * lights. A colour given as text or one number ('red', 0.5) is turned into
  * [r, g, b] in place, as the constructors do; anything else bad throws.
  * @param {Scene} scene
  */
@@ -27,15 +26,12 @@ export function checkScene(scene) {
   withPath(() => new Scene(sceneOptions(scene)), 'scene.');
   scene.background = asColor(scene.background, 'scene.background');
   scene.objects.forEach((o, i) => checkShape(o, `objects[${i}]`));
-  scene.lights.forEach(({ source: s }, i) => withPath(() => rebuildLight(s), `lights[${i}].`));
-}
-
-/** A point, spot or area light built again from its fields as they are now (a light of the sketch's own is left as it is). */
-function rebuildLight(s) {
-  const { color, intensity, attenuation } = s;
-  if (s instanceof PointLight) new PointLight(s.position, { color, intensity, attenuation });
-  else if (s instanceof SpotLight) new SpotLight(s.position, s.target, { angle: s.angle, color, intensity, attenuation, name: s.name });
-  else if (s instanceof AreaLight) new AreaLight(s.center, s.radius, { color, intensity, attenuation, samples: s.samples, normal: s.normal, name: s.name });
+  for (const light of lightsOf(scene)) { // rebuilt by its class from its fields as they are now; named by its first place in scene.lights
+    withPath(() => {
+      lightClassOf(light).build(light);
+      if (light.name !== undefined) lightName(light.name);
+    }, `lights[${scene.lights.findIndex((l) => l.source === light)}].`);
+  }
 }
 
 /**

@@ -21,9 +21,6 @@
  */
 import { Scene } from './scene.js';
 import { sceneToJSON, sceneFromJSON, objectToJSON, objectFromJSON, addOrder } from './serialize.js';
-import { Sphere } from './shapes/sphere.js';
-import { Box } from './shapes/box.js';
-import { PointLight } from './lights.js';
 import { withValue } from './scene-fields.js';
 import { show } from './check.js';
 
@@ -36,9 +33,9 @@ export class SceneEdits {
     /** The scene's JSON, every field present (as sceneToJSON writes it). */
     const first = sceneFromJSON(json);
     this.json = sceneToJSON(first);
-    // A sphere, box or point light built from this.json would be the same to the bit: checked once, not twice. Any other
-    // shape is built again from its JSON (a plane's normal, for one, is normalised again).
-    const same = (item) => item instanceof Sphere || item instanceof Box || item instanceof PointLight;
+    // A shape or light whose class `roundTrips` (a sphere, a box, a point light) built from this.json would be the same
+    // to the bit: checked once, not twice. Any other is built again from its JSON (a plane's normal, for one, is normalised again).
+    const same = (item) => item.constructor.roundTrips === true;
     this.#items = addOrder(first).map((item, i) => (same(item) ? item : objectFromJSON(this.json.objects[i], `objects[${i}]`)));
     /** The scene: what sceneFromJSON(this.json) builds. */
     this.scene = sceneOf(this.json, this.#items);

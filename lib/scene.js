@@ -6,9 +6,8 @@ import { toColor } from './color.js';
 import { numberInRange, bool, show, checkOptions } from './check.js';
 import { EPSILON } from './constants.js';
 import { isShape, ballOf, kindOf } from './shapes/index.js';
-import { PointLight, lightSource } from './lights.js';
-import { AreaLight } from './area-light.js';
-import { SpotLight } from './spot-light.js';
+import { lightSource } from './lights.js';
+import { isLight } from './lights/index.js';
 
 /** The options a scene takes. */
 const OPTIONS = ['background', 'ambient', 'shadows', 'bias', 'epsilon', 'maxDepth', 'specular'];
@@ -46,14 +45,13 @@ export class Scene {
     this.lights = [];
   }
 
-  /** Adds a shape (a Sphere, Plane, Box or any object with the shape protocol, lib/shapes/index.js) or a PointLight; returns the scene (chainable). */
+  /**
+   * Adds a shape (a Sphere, Plane, Box or any object with the shape protocol, lib/shapes/index.js)
+   * or a light (a PointLight, SpotLight, AreaLight or any listed light, lib/lights/index.js); returns the scene (chainable).
+   */
   add(item) {
-    if (item instanceof PointLight) {
-      this.lights.push(lightSource(item));
-    } else if (item instanceof SpotLight) {
-      this.lights.push(item.source()); // a point light with a cone
-    } else if (item instanceof AreaLight) {
-      this.lights.push(...item.sources()); // one point light per sample of the disc
+    if (isLight(item)) {
+      this.lights.push(...item.sources()); // a point light's one source, an area light's one per point of its disc
     } else if (isShape(item)) {
       this.objects.push(item);
       if (item.material.isEmissive) this.lights.push(lightSource(item));

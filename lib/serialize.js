@@ -9,7 +9,7 @@
  *   `{ type: 'sphere', name, center, radius, material }`
  *   `{ type: 'plane', name, point, normal, material }`
  *   `{ type: 'box', name, min, max, material }`
- * or `{ type: 'pointLight', name, position, color, intensity }`,
+ * or a light's own `toJSON()` (lib/lights/index.js), e.g. `{ type: 'pointLight', name, position, color, intensity }`,
  * with `material` = `{ color, emission, reflection, transparency, ior, specular, shininess }`.
  */
 import { Scene } from './scene.js';
@@ -17,10 +17,8 @@ import { Camera } from './camera.js';
 import { Material } from './material.js';
 import { tooDeepAt } from './json-depth.js';
 import { checkWork } from './scene-work.js';
-import { PointLight } from './lights.js';
-import { AreaLight } from './area-light.js';
-import { SpotLight } from './spot-light.js';
-import { shapeClass, shapeClasses, className } from './shapes/index.js';
+import { lightClass, lightClasses, lightClassOf } from './lights/index.js';
+import { shapeClass, shapeClasses, codeNameOf } from './shapes/index.js';
 import { vector } from './shapes/json.js';
 import { checkOptions, show, withPath as named } from './check.js';
 
@@ -28,40 +26,9 @@ const SCENE_FIELDS = ['background', 'ambient', 'shadows', 'bias', 'epsilon', 'ma
 const MATERIAL_FIELDS = ['color', 'emission', 'reflection', 'transparency', 'ior', 'specular', 'shininess'];
 const CAMERA_FIELDS = ['width', 'height', 'fov', 'position', 'yaw', 'pitch', 'samples'];
 
-/** The point light's JSON fields, and how to build it from them (each shape class says its own). */
-const POINT_LIGHT = {
-  type: 'pointLight', fields: ['position', 'color', 'intensity', 'attenuation'],
-  build: (o) => (o.attenuation === undefined ? new PointLight(o.position, o.color, o.intensity)
-    : new PointLight(o.position, definedOnly({ color: o.color, intensity: o.intensity, attenuation: o.attenuation }))),
-};
-
-/** `{ attenuation }` when a light fades with distance, else nothing: a light that does not is written as before. */
-const fading = (attenuation) => (attenuation ? { attenuation } : {});
-
-/** The other lights, as JSON: their fields (options among them), how to build them and their JSON. */
-const LIGHTS = [
-  {
-    type: 'areaLight', Light: AreaLight, fields: ['center', 'radius', 'color', 'intensity', 'samples', 'normal', 'attenuation'],
-    build: (o) => new AreaLight(o.center, o.radius, definedOnly({ color: o.color, intensity: o.intensity, samples: o.samples, normal: o.normal, attenuation: o.attenuation })),
-    toJSON: (l) => ({ type: 'areaLight', name: l.name, center: vector(l.center), radius: l.radius, color: [...l.color], intensity: l.intensity, samples: l.samples, normal: vector(l.normal), ...fading(l.attenuation) }),
-    codeArguments: (o) => [o.center, o.radius, { color: o.color, intensity: o.intensity, samples: o.samples, normal: o.normal, ...fading(o.attenuation) }],
-  },
-  {
-    type: 'spotLight', Light: SpotLight, fields: ['position', 'target', 'angle', 'color', 'intensity', 'attenuation'],
-    build: (o) => new SpotLight(o.position, o.target, definedOnly({ angle: o.angle, color: o.color, intensity: o.intensity, attenuation: o.attenuation })),
-    toJSON: (l) => ({ type: 'spotLight', name: l.name, position: vector(l.position), target: vector(l.target), angle: l.angle, color: [...l.color], intensity: l.intensity, ...fading(l.attenuation) }),
-    codeArguments: (o) => [o.position, o.target, { angle: o.angle, color: o.color, intensity: o.intensity, ...fading(o.attenuation) }],
-  },
-];
-
-/** `options` without its undefined entries (the constructors' defaults then apply). */
-function definedOnly(options) {
-  return Object.fromEntries(Object.entries(options).filter(([, v]) => v !== undefined));
-}
-
-/** The kind of object a JSON `type` names: a listed shape class or a light; undefined for none. */
+/** The class a JSON `type` names: a listed light or shape class; undefined for none. */
 function kindOfType(type) {
-  return type === POINT_LIGHT.type ? POINT_LIGHT : LIGHTS.find((l) => l.type === type) ?? shapeClass(type);
+  return lightClass(type) ?? shapeClass(type);
 }
 
 /**
@@ -143,7 +110,7 @@ export function* sceneCodeLines(scene, { importFrom = '../lib/index.js' } = {}) 
   if (!(scene instanceof Scene)) throw new TypeError(`scene must be a Scene, got ${show(scene)}`);
   const items = addOrder(scene);
   const used = new Set(['Scene', ...items.map(itemClassName)]);
-  const order = ['Scene', ...shapeClasses().map((Shape) => className(Shape.type)), 'PointLight', 'AreaLight', 'SpotLight'].filter((n) => used.has(n));
+  const order = ['Scene', ...[...shapeClasses(), ...lightClasses()].map(codeNameOf)].filter((n) => used.has(n));
   const fields = sceneFieldsOf(scene);
   yield `import { ${order.join(', ')} } from ${quote(importFrom)};\n`;
   yield '\n';
@@ -163,10 +130,9 @@ export function* sceneCodeLines(scene, { importFrom = '../lib/index.js' } = {}) 
 
 /** The class an item is built with in the code ('Sphere', 'PointLight'), read without writing its JSON where its class says it. */
 function itemClassName(item) {
-  if (item instanceof PointLight) return 'PointLight';
-  const light = LIGHTS.find((l) => item instanceof l.Light);
-  if (light) return className(light.type);
-  return className(shapeClasses().includes(item?.constructor) ? item.constructor.type : objectToJSON(item).type);
+  const Light = lightClassOf(item);
+  if (Light) return codeNameOf(Light);
+  return codeNameOf(shapeClasses().includes(item?.constructor) ? item.constructor : shapeClass(objectToJSON(item).type));
 }
 
 /** A scene's own fields as JSON (all but its objects). */
@@ -203,11 +169,9 @@ export function addOrder(scene) {
   return items;
 }
 
-/** One shape's or point light's JSON, as sceneToJSON writes it. */
+/** One shape's or light's JSON, as sceneToJSON writes it. */
 export function objectToJSON(item) {
-  if (item instanceof PointLight) return { type: 'pointLight', name: item.name ?? '', position: vector(item.position), color: [...item.color], intensity: item.intensity, ...fading(item.attenuation) };
-  const light = LIGHTS.find((l) => item instanceof l.Light);
-  if (light) return light.toJSON(item);
+  if (lightClassOf(item)) return item.toJSON();
   const json = typeof item?.toJSON === 'function' ? item.toJSON() : null;
   if (json && shapeClass(json.type)) return json;
   throw new TypeError(`scene objects must be spheres, planes, boxes or point lights (or other listed shapes, with a toJSON), got ${show(item)}`);
@@ -287,7 +251,7 @@ export function objectFromJSON(given, path) {
   const type = Object.hasOwn(given, 'type') ? given.type : undefined;
   const kind = typeof type === 'string' ? kindOfType(type) : undefined; // ["sphere"] is not "sphere"
   if (!kind) {
-    const types = [...shapeClasses().map((Shape) => Shape.type), POINT_LIGHT.type, ...LIGHTS.map((l) => l.type)];
+    const types = [...shapeClasses(), ...lightClasses()].map((Kind) => Kind.type);
     throw new TypeError(`${path}.type must be one of ${types.map((t) => `"${t}"`).join(', ')}, got ${show(type)}`);
   }
   const o = onlyFields(given, ['type', 'name', ...kind.fields], path);
@@ -314,20 +278,21 @@ function sceneOptions(data) {
   return withoutDefaults(data, SCENE_DEFAULTS);
 }
 
-/** `new Sphere(…)` for one object's JSON: its class's fields in the order the constructor takes them, defaults left out. */
+/** `new Sphere(…)` for one object's JSON: its class's own code name and arguments (a light's `codeArguments`; a shape's, else its fields in order), defaults left out. */
 function constructorCall(o) {
-  if (o.type === POINT_LIGHT.type && o.attenuation) return `new PointLight(${literal(o.position)}, ${literal(fadingPointLight(o))})`;
-  const args = o.type === POINT_LIGHT.type
-    ? [o.position, isWhite(o.color) && o.intensity === 1 ? undefined : o.color, o.intensity === 1 ? undefined : o.intensity]
-    : shapeArguments(kindOfType(o.type), o);
+  const Kind = /** @type {any} */ (kindOfType(o.type));
+  const args = lightClass(o.type) ? Kind.codeArguments(o, CODE) : shapeArguments(Kind, o);
   while (args.length && args.at(-1) === undefined) args.pop();
-  return `new ${className(o.type)}(${args.map((a, i) => literal(a, o.type === POINT_LIGHT.type && i === 1)).join(', ')})`;
+  return `new ${codeNameOf(Kind)}(${args.map((a) => literal(a)).join(', ')})`;
 }
 
-/** A fading point light's options, `{ color, intensity, attenuation }`, defaults left out (only the options form takes attenuation). */
-function fadingPointLight(o) {
-  return { ...(isWhite(o.color) ? {} : { color: o.color }), ...(o.intensity === 1 ? {} : { intensity: o.intensity }), attenuation: o.attenuation };
+/** Source text as it stands, for an argument its class wants written a particular way. */
+class Code {
+  constructor(text) { this.text = text; }
 }
+
+/** What a light's `codeArguments` may ask of the code: a colour argument written as colours are ('#ff5160' when that says it exactly). */
+const CODE = { color: (rgb) => new Code(colorLiteral(rgb)) };
 
 /** A shape's constructor arguments: its class's own `codeArguments`, else its fields in order. */
 function shapeArguments(Shape, o) {
@@ -343,7 +308,6 @@ function materialArgument(material) {
   return Object.keys(m).length ? m : undefined;
 }
 
-const isWhite = (c) => c[0] === 1 && c[1] === 1 && c[2] === 1;
 const isGrey = (c) => c[0] === c[1] && c[1] === c[2];
 
 function withoutDefaults(data, defaults) {
@@ -361,6 +325,7 @@ const COLOR_KEYS = new Set(['background', 'color', 'emission']);
 
 /** Source text for a value: numbers exact, objects on one line like `{ color: [1, 0, 0] }`. */
 function literal(value, isColor = false) {
+  if (value instanceof Code) return value.text;
   if (Array.isArray(value)) return isColor ? colorLiteral(value) : `[${value.map((v) => literal(v)).join(', ')}]`;
   if (value && typeof value === 'object') {
     const entries = Object.entries(value).map(([k, v]) => `${k}: ${k === 'emission' && isGrey(v) ? literal(v[0]) : literal(v, COLOR_KEYS.has(k))}`);
@@ -388,7 +353,7 @@ function colorLiteral(rgb) {
 function identifier(name, taken) {
   const words = name.replace(/[^A-Za-z0-9_$ ]+/g, ' ').trim().split(/\s+/).filter(Boolean);
   let id = words.map((w, i) => (i ? w[0].toUpperCase() + w.slice(1) : w.toLowerCase())).join('') || 'object';
-  if (/^[0-9]/.test(id) || RESERVED.has(id) || shapeClasses().some((Shape) => className(Shape.type) === id)) id = `_${id}`;
+  if (/^[0-9]/.test(id) || RESERVED.has(id) || [...shapeClasses(), ...lightClasses()].some((Kind) => codeNameOf(Kind) === id)) id = `_${id}`;
   let unique = id;
   for (let n = 2; taken.has(unique); n++) unique = `${id}${n}`;
   taken.add(unique);
@@ -400,4 +365,4 @@ const RESERVED = new Set(['implements', 'interface', 'package', 'private', 'prot
   'break', 'case', 'catch', 'class', 'const', 'continue', 'debugger', 'default', 'delete', 'do',
   'else', 'export', 'extends', 'false', 'finally', 'for', 'function', 'if', 'import', 'in', 'instanceof', 'let', 'new',
   'null', 'return', 'static', 'super', 'switch', 'this', 'throw', 'true', 'try', 'typeof', 'var', 'void', 'while',
-  'with', 'yield', 'await', 'enum', 'Scene', 'Sphere', 'Plane', 'Box', 'PointLight', 'AreaLight', 'SpotLight', 'undefined', 'NaN', 'Infinity']);
+  'with', 'yield', 'await', 'enum', 'Scene', 'undefined', 'NaN', 'Infinity']);

@@ -5,10 +5,10 @@
  * so its circle of light on a floor has a soft rim, as a real spot does.
  */
 import { toVec3, Vec3, normalize } from './vec3.js';
-import { toColor, MAX_COLOR } from './color.js';
-import { finiteNumber, checkOptions, show } from './check.js';
+import { finiteNumber, checkOptions } from './check.js';
 import { RAD_PER_DEG } from './constants.js';
-import { checkAttenuation } from './lights.js';
+import { vector } from './shapes/json.js';
+import { lightColor, lightIntensity, checkAttenuation, lightName, fading, definedOnly } from './lights/checks.js';
 
 const OPTIONS = ['angle', 'color', 'intensity', 'attenuation', 'name'];
 
@@ -43,25 +43,39 @@ export class SpotLight {
     /** cos of the rim (no light past it) and of where the fading starts (full light inside it). */
     this.cosOuter = Math.cos(angle * RAD_PER_DEG);
     this.cosInner = Math.cos(angle * (1 - SPOT_EDGE) * RAD_PER_DEG);
-    finiteNumber(intensity, 'intensity');
-    if (intensity < 0 || intensity > MAX_COLOR) throw new RangeError(`intensity must be between 0 and ${MAX_COLOR}, got ${intensity}`);
-    this.color = toColor(color, 'color');
-    this.intensity = intensity;
+    this.intensity = lightIntensity(intensity);
+    this.color = lightColor(color);
     /** What it gives off at full strength: colour × intensity. */
     this.emission = this.color.map((c) => c * intensity);
     this.attenuation = checkAttenuation(attenuation);
-    if (typeof name !== 'string') throw new TypeError(`name must be text, got ${show(name)}`);
-    this.name = name;
+    this.name = lightName(name);
+  }
+
+  static get type() { return 'spotLight'; }
+  static get codeName() { return 'SpotLight'; }
+  static get label() { return 'spot light'; }
+  static get fields() { return ['position', 'target', 'angle', 'color', 'intensity', 'attenuation']; }
+  static build(o) {
+    return new SpotLight(o.position, o.target, definedOnly({ angle: o.angle, color: o.color, intensity: o.intensity, attenuation: o.attenuation }));
+  }
+  static codeArguments(o) {
+    return [o.position, o.target, { angle: o.angle, color: o.color, intensity: o.intensity, ...fading(o.attenuation) }];
+  }
+
+  toJSON() {
+    return { type: 'spotLight', name: this.name, position: vector(this.position), target: vector(this.target), angle: this.angle, color: [...this.color], intensity: this.intensity, ...fading(this.attenuation) };
+  }
+
+  /** What its drawing in the 3D view depends on (a glow at its position). */
+  viewKey() {
+    return `${this.position.x},${this.position.y},${this.position.z}`;
   }
 
   /**
-   * The scene's light source for it: a point light that knows its cone (Scene.add keeps it in `scene.lights`).
-   * @returns {{ position: Vec3, emission: number[], object: null, source: SpotLight, spot: SpotLight, attenuation: number }}
+   * The scene's light source for it: a point light that knows its cone, `spot` (its axis, cosOuter and cosInner).
+   * @returns {{ position: Vec3, emission: number[], object: null, source: SpotLight, spot: SpotLight, attenuation: number }[]}
    */
-  source() {
-    return { position: this.position, emission: this.emission, object: null, source: this, spot: this, attenuation: this.attenuation };
+  sources() {
+    return [{ position: this.position, emission: this.emission, object: null, source: this, spot: this, attenuation: this.attenuation }];
   }
 }
-
-/** How much of a spot light's cone reaches a point: lib/optics.js, where trace.js and kernel.js both find it. */
-export { spotShare } from './optics.js';

@@ -3,8 +3,8 @@
  * surfaceAt, lightPoint (with shadowRay), mirrorAndGlass, step for step with
  * the same names, reading the packed scene the kernel reads (uploaded by
  * lib/gpu/upload.js as float textures) with its layout's own constants: the
- * offsets below come from lib/shapes/packed.js and lib/kernel.js, so a change
- * of layout there is one edit.
+ * offsets below come from lib/shapes/packed.js, lib/lights/packed.js and
+ * lib/kernel.js, so a change of layout there is one edit.
  *
  * GLSL has no recursion, so the tree of mirror and glass rays that
  * kernel.js walks by calling traceRay again is a stack of rays here, each
@@ -26,10 +26,8 @@
  * tested), y, the sphere it runs inside (its far root only); −1 for none.
  */
 import { SHAPE, KIND } from '../shapes/packed.js';
-import {
-  MATERIAL, EMISSION, REFLECTION, TRANSPARENCY, IOR, SPECULAR, SHININESS,
-  LIGHT, LIGHT_SHAPE, ATTENUATION, IS_SPOT, AXIS, COS_OUTER, COS_INNER,
-} from '../kernel.js';
+import { MATERIAL, EMISSION, REFLECTION, TRANSPARENCY, IOR, SPECULAR, SHININESS } from '../kernel.js';
+import { LIGHT, POSITION, LIGHT_EMISSION, LIGHT_SHAPE, ATTENUATION, IS_SPOT, AXIS, COS_OUTER, COS_INNER } from '../lights/packed.js';
 import { OPTICS_GLSL } from './glsl-optics.js';
 import { SHAPES_GLSL } from './glsl-shapes.js';
 
@@ -52,7 +50,7 @@ export const ROW = 1024;
 function layout() {
   const defines = {
     SHAPE, KIND, MATERIAL, EMISSION, REFLECTION, TRANSPARENCY, IOR, SPECULAR, SHININESS,
-    LIGHT, LIGHT_SHAPE, ATTENUATION, IS_SPOT, AXIS, COS_OUTER, COS_INNER, MAX_KINDS, BVH_STACK, RAY_STACK,
+    LIGHT, POSITION, LIGHT_EMISSION, LIGHT_SHAPE, ATTENUATION, IS_SPOT, AXIS, COS_OUTER, COS_INNER, MAX_KINDS, BVH_STACK, RAY_STACK,
     ROW_SHIFT: Math.log2(ROW), ROW_MASK: ROW - 1,
     ...Object.fromEntries(Object.entries(SHAPE_CODES).map(([type, code]) => [type.toUpperCase(), code])),
   };
@@ -156,7 +154,7 @@ vec3 lightPoint(int object, vec3 P, vec3 N, vec3 D, ivec2 self) {
   vec3 color = vec3(material(m + EMISSION), material(m + EMISSION + 1), material(m + EMISSION + 2)) + uAmbient * surface;
   for (int at = 0; at < uLightCount * LIGHT; at += LIGHT) {
     if (int(light(at + LIGHT_SHAPE)) == object) continue; // a light does not light itself
-    vec3 toLight = vec3(light(at), light(at + 1), light(at + 2)) - P;
+    vec3 toLight = vec3(light(at + POSITION), light(at + POSITION + 1), light(at + POSITION + 2)) - P;
     float distance = sqrt(dot(toLight, toLight)), inverse = 1.0 / distance;
     vec3 L = toLight * inverse;
     float cosTheta = lambert(N, L);
@@ -170,7 +168,7 @@ vec3 lightPoint(int object, vec3 P, vec3 N, vec3 D, ivec2 self) {
     float reach = transmission * falloff(light(at + ATTENUATION), distance);
     float diffuse = cosTheta * reach;
     float highlight = uSpecular ? specular(material(m + SPECULAR), material(m + SHININESS), cosTheta, L, N, D) * reach : 0.0;
-    vec3 glow = vec3(light(at + EMISSION), light(at + EMISSION + 1), light(at + EMISSION + 2)); // the light's colour
+    vec3 glow = vec3(light(at + LIGHT_EMISSION), light(at + LIGHT_EMISSION + 1), light(at + LIGHT_EMISSION + 2)); // the light's colour
     color += vec3(lightShare(glow.r, surface.r, diffuse, highlight), lightShare(glow.g, surface.g, diffuse, highlight),
       lightShare(glow.b, surface.b, diffuse, highlight));
   }

@@ -330,7 +330,7 @@ function addedCell(added, at) {
  */
 function areaLightBlock(hit, g, a) {
   const at = { 'data-area-light': String(a) };
-  const name = g.light.name ? `area light '${shownName(g.light.name)}'` : `area light ${a + 1}`, rows = g.indices;
+  const name = g.light.name ? `${g.label} '${shownName(g.light.name)}'` : `${g.label} ${a + 1}`, rows = g.indices;
   const percent = Math.round((100 * g.reached) / g.samples);
   return element('div', { class: 'rt-area-light', ...at },
     element('p', {},

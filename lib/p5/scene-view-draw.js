@@ -6,8 +6,8 @@
  */
 import p5 from 'p5';
 import { Vec3, sub, dot } from '../vec3.js';
-import { imagePlane, areaLightsOf, discOutline } from '../rays3d.js';
-import { buildMeshes, shapesKey } from './scene-view-mesh.js';
+import { imagePlane } from '../rays3d.js';
+import { buildMeshes, shapesKey, lightLoops } from './scene-view-mesh.js';
 import { INK, MUTED, RAY, NORMAL, LIT, SHADOW, CONSTRUCT } from './diagrams/style.js';
 
 /** Colours of the kinds of ray (shadow rays as in the 2D diagrams). */
@@ -140,14 +140,9 @@ export function drawSegment(g, s, radius) {
   if (s.hit) dot3(g, s.to, color, radius * 0.012);
 }
 
-const _rims = new WeakMap();
-
-/** Each area light of the scene as the outline of its disc (its rim, worked out once per light). */
-export function drawAreaLights(g, scene) {
-  for (const light of areaLightsOf(scene)) {
-    if (!_rims.has(light)) _rims.set(light, discOutline(light));
-    outline(g, _rims.get(light), RAY_COLORS.area, 2);
-  }
+/** What each light of the scene draws of itself beyond a glow per source (lightLoops: an area light's rim). */
+export function drawLightOutlines(g, scene) {
+  for (const loop of lightLoops(scene)) outline(g, loop, RAY_COLORS.area, 2);
 }
 
 /** The image plane at `planeDistance`, textured with `picture` (a p5.Graphics), and its outline. */

@@ -12,6 +12,7 @@
 import { ballOf } from '../shapes/index.js';
 import { Vec3, sub, dot, normalize, cross } from '../vec3.js';
 import { HUGE_RADIUS } from '../rays3d.js';
+import { lightsOf } from '../lights/index.js';
 
 /** Emissive shapes and point lights: a warm glow. */
 export const GLOW = [1, 0.84, 0.3];
@@ -85,16 +86,39 @@ class MeshBuilder {
   }
 }
 
-/** What the still part depends on: the shapes, their colours, the lights, the eye and the framing. */
+/**
+ * What the still part depends on: the shapes (each says its own key, its
+ * `viewKey()`; one without says its JSON), their colours, the lights (their
+ * `viewKey()`), the eye and the framing.
+ */
 export function shapesKey({ scene, camera, bounds, constructionSphere }) {
   const parts = [camera.position.x, camera.position.y, camera.position.z, bounds.radius, constructionSphere ? 1 : 0];
   for (const o of scene.objects) {
     const m = o.material;
-    parts.push(o.center?.x, o.center?.y, o.center?.z, o.radius, o.point?.x, o.point?.y, o.point?.z, o.normal?.x, o.normal?.y, o.normal?.z,
-      o.min?.x, o.min?.y, o.min?.z, o.max?.x, o.max?.y, o.max?.z, ...m.color, m.isEmissive ? 1 : 0, m.transparency);
+    parts.push(`${o.constructor.type}(${typeof o.viewKey === 'function' ? o.viewKey() : JSON.stringify(o.toJSON?.() ?? null)})`, ...m.color, m.isEmissive ? 1 : 0, m.transparency);
   }
-  for (const l of scene.lights) parts.push(l.position.x, l.position.y, l.position.z);
+  for (const light of lightsOf(scene)) parts.push(`${light.constructor.type}(${light.viewKey()})`);
   return parts.join(',');
+}
+
+/** Each light's outlines as it last gave them, with the key they were made for: `{ key, loops }`. */
+const _outlines = new WeakMap();
+
+/**
+ * The loops of points the scene's lights draw of themselves in the 3D view,
+ * beyond a glow per source: each light's `outlines()` (an area light's rim),
+ * made again only when its `viewKey()` changes.
+ * @returns {import('../vec3.js').Vec3[][]}
+ */
+export function lightLoops(scene) {
+  const loops = [];
+  for (const light of lightsOf(scene)) {
+    if (typeof light.outlines !== 'function') continue;
+    const key = light.viewKey();
+    if (_outlines.get(light)?.key !== key) _outlines.set(light, { key, loops: light.outlines() });
+    loops.push(..._outlines.get(light).loops);
+  }
+  return loops;
 }
 
 /** A sphere as latitude/longitude triangles, each vertex coloured by its normal (flat glow when not lit). */

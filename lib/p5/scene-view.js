@@ -29,7 +29,7 @@ import { show, checkOptions } from '../check.js';
 import { pixelCenter, sceneBounds, orbitCamera, projectToScreen } from '../rays3d.js';
 import { useStyle, resolveParent } from './dom.js';
 import { nearestAhead } from './scene-view-mesh.js';
-import { RAY_COLORS, StillGeometry, PlaneTexture, wireSphere, line3, drawSegment, drawImagePlane, drawFrustum, drawAreaLights } from './scene-view-draw.js';
+import { RAY_COLORS, StillGeometry, PlaneTexture, wireSphere, line3, drawSegment, drawImagePlane, drawFrustum, drawLightOutlines } from './scene-view-draw.js';
 import { Flight, legSeconds, checkSpeed } from './scene-view-flight.js';
 import { pixelStory, shotStory, fanRays } from './scene-view-rays.js';
 import { constructionOf, placeLabels, drawLabels } from './scene-view-labels.js';
@@ -383,7 +383,7 @@ export class SceneView {
     this.#texture.update(this.#view.canvas, this.#view.width, this.#view.height, this.#selected);
     drawImagePlane(g, camera, this.#planeDistance, this.#texture.graphics);
     if (this.#frustum) drawFrustum(g, camera, this.#planeDistance, this.#bounds);
-    drawAreaLights(g, scene);
+    drawLightOutlines(g, scene);
     for (const s of this.#segments) drawSegment(g, s, r);
     for (const e of this.#extra) line3(g, e.from, e.to, e.color, e.weight ?? 1.5);
     for (const f of this.#fanSegments) line3(g, f.from, f.to, RAY_COLORS.primary, 1);

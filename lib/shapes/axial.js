@@ -165,6 +165,12 @@ export class AxialShape {
     this.material = checked.material;
   }
 
+  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
+  viewKey() {
+    const c = this.center;
+    return `${c.x},${c.y},${c.z},${this.radius},${this.height},${this.capped}`;
+  }
+
   /** The world-space box around it. */
   bounds() {
     return axialBounds(this.center, this.radius, this.height);

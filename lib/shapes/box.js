@@ -116,6 +116,12 @@ export class Box {
 
   /** Its type in scene JSON. */
   static get type() { return 'box'; }
+  /** The class's name in the code that builds it (lib/serialize.js, sceneToCode). */
+  static get codeName() { return 'Box'; }
+  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
+  viewKey() { const a = this.min, b = this.max; return `${a.x},${a.y},${a.z},${b.x},${b.y},${b.z}`; }
+  /** Built again from its JSON, the same to the bit (lib/scene-edits.js need not build it twice). */
+  static get roundTrips() { return true; }
 
   /** Its JSON fields, in the order the constructor takes them. */
   static get fields() { return ['min', 'max', 'material']; }

@@ -85,6 +85,8 @@ export class Cone extends AxialShape {
 
   /** Its type in scene JSON. */
   static get type() { return 'cone'; }
+  /** The class's name in the code that builds it (lib/serialize.js, sceneToCode). */
+  static get codeName() { return 'Cone'; }
 
   /** Its packed form for render()'s kernel (lib/shapes/packed.js): cx cy cz radius height capped (1 or 0). */
   static get packed() { return PACKED; }

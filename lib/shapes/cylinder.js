@@ -76,6 +76,8 @@ export class Cylinder extends AxialShape {
 
   /** Its type in scene JSON. */
   static get type() { return 'cylinder'; }
+  /** The class's name in the code that builds it (lib/serialize.js, sceneToCode). */
+  static get codeName() { return 'Cylinder'; }
 
   /** Its packed form for render()'s kernel (lib/shapes/packed.js): cx cy cz radius height capped (1 or 0). */
   static get packed() { return PACKED; }

@@ -91,9 +91,13 @@ export function kindOf(shape) {
   return classOf(shape)?.type ?? 'object';
 }
 
-/** A shape's class name as the code writes it: 'sphere' → 'Sphere'. */
-export function className(type) {
-  return type.charAt(0).toUpperCase() + type.slice(1);
+/**
+ * The name the code builds a shape or light class by (`new Sphere(…)`): its own
+ * static `codeName`, else the class's own name (a subclass does not take its parent's).
+ * @param {Function & { codeName?: string }} Class
+ */
+export function codeNameOf(Class) {
+  return Object.hasOwn(Class, 'codeName') ? Class.codeName : Class.name;
 }
 
 /** True when `item` implements the shape protocol: its core methods and a Material. */

@@ -179,6 +179,10 @@ export class Mesh {
 
   /** Its type in scene JSON. */
   static get type() { return 'mesh'; }
+  /** The class's name in the code that builds it (lib/serialize.js, sceneToCode). */
+  static get codeName() { return 'Mesh'; }
+  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
+  viewKey() { return meshKey(this); }
 
   /** Its JSON fields. */
   static get fields() { return ['positions', 'cells', 'material']; }
@@ -361,4 +365,12 @@ function toSegment(p, v, i, j) {
   const apx = p.x - v[i], apy = p.y - v[i + 1], apz = p.z - v[i + 2];
   const s = Math.min(1, Math.max(0, (apx * abx + apy * aby + apz * abz) / (abx * abx + aby * aby + abz * abz)));
   return Math.hypot(apx - s * abx, apy - s * aby, apz - s * abz);
+}
+
+/** Each mesh's number, in the order they were first drawn: a mesh's triangles are fixed once built (its tree is built on them), so the mesh itself is its key. */
+const MESH_KEYS = new WeakMap();
+let meshes = 0;
+function meshKey(mesh) {
+  if (!MESH_KEYS.has(mesh)) MESH_KEYS.set(mesh, `mesh ${++meshes}`);
+  return MESH_KEYS.get(mesh);
 }

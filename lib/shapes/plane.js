@@ -81,6 +81,10 @@ export class Plane {
 
   /** Its type in scene JSON. */
   static get type() { return 'plane'; }
+  /** The class's name in the code that builds it (lib/serialize.js, sceneToCode). */
+  static get codeName() { return 'Plane'; }
+  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
+  viewKey() { const p = this.point, n = this.normal; return `${p.x},${p.y},${p.z},${n.x},${n.y},${n.z}`; }
 
   /** Its JSON fields, in the order the constructor takes them. */
   static get fields() { return ['point', 'normal', 'material']; }

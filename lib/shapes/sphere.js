@@ -97,6 +97,12 @@ export class Sphere {
 
   /** Its type in scene JSON. */
   static get type() { return 'sphere'; }
+  /** The class's name in the code that builds it (lib/serialize.js, sceneToCode). */
+  static get codeName() { return 'Sphere'; }
+  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
+  viewKey() { const c = this.center; return `${c.x},${c.y},${c.z},${this.radius}`; }
+  /** Built again from its JSON, the same to the bit (lib/scene-edits.js need not build it twice). */
+  static get roundTrips() { return true; }
 
   /** Its JSON fields, in the order the constructor takes them. */
   static get fields() { return ['center', 'radius', 'material']; }

@@ -108,6 +108,10 @@ export class Triangle {
 
   /** Its type in scene JSON. */
   static get type() { return 'triangle'; }
+  /** The class's name in the code that builds it (lib/serialize.js, sceneToCode). */
+  static get codeName() { return 'Triangle'; }
+  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
+  viewKey() { return [this.a, this.b, this.c].map((p) => `${p.x},${p.y},${p.z}`).join(','); }
 
   /** Its JSON fields, in the order the constructor takes them. */
   static get fields() { return ['a', 'b', 'c', 'material']; }

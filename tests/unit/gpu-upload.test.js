@@ -5,7 +5,8 @@
 import { describe, it, expect } from 'vitest';
 import { classScene, Scene, Sphere, Mesh, Triangle, PointLight, Camera, renderGPU } from '../../lib/index.js';
 import { gpuScene, inRows } from '../../lib/gpu/upload.js';
-import { packScene, LIGHT } from '../../lib/kernel.js';
+import { packScene } from '../../lib/kernel.js';
+import { LIGHT } from '../../lib/lights/packed.js';
 import { SHAPE, KIND } from '../../lib/shapes/packed.js';
 import { SHAPE_CODES, ROW, kernelSource } from '../../lib/gpu/glsl-kernel.js';
 

@@ -9,8 +9,9 @@ import { Vec3, sub, normalize, length, dot, distance } from '../../lib/vec3.js';
 import {
   imagePoint, pixelCenter, imagePlane, pixelGrid, frustum, pickImagePlane, raySegments,
   geometricConstruction, orbitCamera, screenRay, projectToScreen, sceneBounds,
-  sampleSegments, areaLightsOf, discOutline,
+  sampleSegments,
 } from '../../lib/rays3d.js';
+import { lightsOf } from '../../lib/lights/index.js';
 import { penumbraScene, penumbraCamera, pointsSeen, penumbraPixel, BALL } from './penumbra-scene.js';
 
 const close = (a, b, digits = 9) => {
@@ -180,10 +181,10 @@ describe('an area light in 3D: its disc and a pixel\'s shadow rays to each of it
     expect(pointsSeen(record.hit.point, record.hit.normal, lamp, scene.bias)).toBe(seen);
   });
 
-  it('the disc\'s outline: on its rim, in its plane; the scene\'s area lights each once', () => {
-    expect(areaLightsOf(scene)).toEqual([lamp]);
-    expect(areaLightsOf(classScene())).toEqual([]);
-    const rim = discOutline(lamp, 32);
+  it('the disc\'s outline: on its rim, in its plane; the scene\'s lights each once', () => {
+    expect(lightsOf(scene)).toEqual([lamp]);
+    expect(lightsOf(classScene())).toEqual([]); // its lights are emissive spheres
+    const [rim] = lamp.outlines(32);
     expect(rim).toHaveLength(32);
     for (const p of rim) {
       const d = sub(new Vec3(), p, lamp.center);

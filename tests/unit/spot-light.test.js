@@ -1,7 +1,7 @@
 import { describe, it, expect } from 'vitest';
 import { Scene, Sphere, Plane, PointLight, SpotLight, AreaLight, Camera, render, inspectPixel, sceneToJSON, sceneFromJSON, sceneToCode } from '../../lib/index.js';
 import * as lib from '../../lib/index.js';
-import { spotShare } from '../../lib/spot-light.js';
+import { spotShare } from '../../lib/optics.js';
 import { packScene } from '../../lib/kernel.js';
 
 const camera = new Camera({ width: 48, height: 36, position: [0, 8, 6], pitch: -30 });
@@ -24,7 +24,7 @@ describe('SpotLight: a cone of light with a smooth edge', () => {
     [() => new SpotLight([0, 10, 0], [0, 0, 0], { angle: -5 }), /angle must be between 0 and 90/],
     [() => new SpotLight([0, 10, 0], [0, 10, 0]), /target must not be the light's own position/],
     [() => new SpotLight([0, 10, 0], [0, 0, 0], { angle: 'wide' }), /angle/],
-    [() => new SpotLight([0, 10, 0], [0, 0, 0], { intensity: -1 }), /intensity must be between/],
+    [() => new SpotLight([0, 10, 0], [0, 0, 0], { intensity: -1 }), 'intensity must not be negative, got -1'],
     [() => new SpotLight([0, 10, 0], null), /target/],
   ])('refuses bad values, naming the field (%#)', (make, message) => {
     expect(make).toThrow(message);
