@@ -107,10 +107,30 @@ export class PackedScene {
   /** Shape i's numbers (its class packs them) and its material's into `shapes` and `materials`. */
   #packShape(object, i) {
     const s = i * SHAPE, m = object.material, kind = kindIndex(object.constructor);
-    KINDS[kind].pack(object, this.shapes, s, this.tables);
+    packInSlot(KINDS[kind], object, i, this.shapes, s, this.tables);
     this.shapes[s + KIND] = kind;
     this.materials.set([...m.color, ...m.emission, m.reflection, m.transparency, m.ior, m.specular, m.shininess], i * MATERIAL);
   }
+}
+
+/**
+ * A shape's packed numbers go first to a slot with room to spare, every spare
+ * number NaN: a packed form that writes past its KIND numbers would
+ * otherwise overwrite its kind (or the next shape's numbers) and give a wrong
+ * picture with no error. It throws instead, naming the shape.
+ */
+const _slot = new Float64Array(4 * SHAPE);
+
+function packInSlot(packed, object, i, shapes, at, tables) {
+  _slot.fill(NaN);
+  packed.pack(object, _slot, 0, tables);
+  let past = _slot.length;
+  while (past > KIND && Number.isNaN(_slot[past - 1])) past--;
+  if (past > KIND) {
+    const name = object.name ? ` '${object.name}'` : '';
+    throw new RangeError(`objects[${i}] (${object.constructor.type}${name}): its packed form wrote ${past} numbers, more than the ${KIND} a shape's slot holds (lib/shapes/packed.js: a shape of more numbers keeps them in a side table)`);
+  }
+  for (let n = 0; n < KIND; n++) shapes[at + n] = Number.isNaN(_slot[n]) ? 0 : _slot[n]; // numbers it did not write stay 0
 }
 
 /** The packed form of every shape class the kernel has met, by kind: `shapes[at + KIND]` indexes this. */

@@ -86,6 +86,25 @@ class PlainDisc extends Disc {
 }
 registerShape(PlainDisc);
 
+/** The same disc whose packed form writes seven numbers into its slot of six: a mistake the kernel must name, not draw. */
+class LongDisc extends Disc {
+  static get type() { return 'longDisc'; }
+  static build(o, material) { return new LongDisc(o.center, o.radius, material); }
+  static get packed() {
+    return { ...PACKED_DISC, pack: (disc, shapes, at) => shapes.set([disc.center.x, disc.center.y, disc.center.z, disc.radius, 0, 0, 1], at) };
+  }
+  toJSON() { return { ...super.toJSON(), type: 'longDisc' }; }
+}
+registerShape(LongDisc);
+
+/** A disc whose class is not named as its capitalised type ('top'): the code says the class's own name. */
+class TableTop extends Disc {
+  static get type() { return 'top'; }
+  static build(o, material) { return new TableTop(o.center, o.radius, material); }
+  toJSON() { return { ...super.toJSON(), type: 'top' }; }
+}
+registerShape(TableTop);
+
 const camera = new Camera({ width: 48, height: 36, position: [0, 3, 0], pitch: -15 });
 
 function tableScene(Shape) {
@@ -119,6 +138,12 @@ describe('a shape written in a test, listed from the test', () => {
     expect([...picture.slice((22 * 48 + 24) * 4, (22 * 48 + 24) * 4 + 3)]).toEqual(color);
   });
 
+  it('a packed form that writes past its slot throws when packed, naming the shape', () => {
+    const scene = tableScene(LongDisc);
+    expect(() => packScene(scene)).toThrow(new RangeError("objects[0] (longDisc 'table'): its packed form wrote 7 numbers, more than the 6 a shape's slot holds (lib/shapes/packed.js: a shape of more numbers keeps them in a side table)"));
+    expect(() => render(scene, camera)).toThrow(/objects\[0\] \(longDisc 'table'\)/);
+  });
+
   it('renders with no packed form through trace.js, the same picture', () => {
     const scene = tableScene(PlainDisc);
     expect(packScene(scene)).toBeNull();
@@ -143,12 +168,13 @@ describe('a shape written in a test, listed from the test', () => {
     expect(render(copy, camera)).toEqual(render(scene, camera));
     expect(() => sceneFromJSON({ objects: [{ type: 'disc', center: [0, 0, 0], radius: -2 }] })).toThrow('objects[0].radius must be greater than 0, got -2');
     expect(sceneToCode(scene)).toContain('new Disc([0, -1, -14], 3, { color: [0.9, 0.6, 0.2] })');
+    expect(sceneToCode(tableScene(TableTop))).toMatch(/^import \{ Scene, Sphere, TableTop, PointLight \} from [^]*new TableTop\(\[0, -1, -14\], 3, /);
     scene.objects[0].radius = 0;
     expect(() => checkScene(scene)).toThrow('objects[0].radius must be greater than 0, got 0');
   });
 
   it('has a table of its own in the scene form, after the kit\'s', () => {
-    expect(formTypes()).toEqual(['sphere', 'pointLight', 'plane', 'box', 'disc', 'plainDisc']); // PlainDisc inherits Disc's form
+    expect(formTypes()).toEqual(['sphere', 'pointLight', 'plane', 'box', 'disc', 'plainDisc', 'longDisc', 'top']); // the others inherit Disc's form
     const json = sceneToJSON(tableScene(Disc)).objects[0];
     expect(tableColumns('disc').map((column) => fieldText(json, column))).toEqual(['0', '-1', '-14', '3']);
   });

@@ -15,9 +15,10 @@ import { trace } from '../../lib/trace.js';
 import { Ray } from '../../lib/ray.js';
 import { Vec3 } from '../../lib/vec3.js';
 import { MODES, modeShader } from '../../lib/modes.js';
-import { between, point, direction, scene, shapeScene, sphereScene, camera } from '../shared/random-scenes.js';
+import { between, point, direction, scene, shapeScene, sphereScene, camera, SHAPES, LIGHTS } from '../shared/random-scenes.js';
 import { ProgressiveRenderer, ORDERS } from '../../lib/progressive.js';
-
+import { shapeClasses } from '../../lib/shapes/index.js';
+import { lightClasses } from '../../lib/lights/index.js';
 
 /** The plain reference: `shader` called for every pixel, in reading order, each primary ray against every shape. */
 function pixelByPixel(scene, cam, shader = renderPixel) {
@@ -78,6 +79,11 @@ function assertFresh(property, params) {
 }
 
 describe('the same bytes as the plain reference, for random scenes and cameras (property)', () => {
+  it('has a random one of every listed shape and light (a new class is in the property the day it is listed)', () => {
+    expect(shapeClasses().map((Shape) => Shape.type).filter((type) => !SHAPES[type])).toEqual([]);
+    expect(lightClasses().map((Light) => Light.type).filter((type) => !LIGHTS[type])).toEqual([]);
+  });
+
   it('render(), and render() of a band of rows', () => {
     assertBoth(fc.property(scene, camera, fc.nat(), fc.nat(), (s, cam, a, b) => {
       const reference = pixelByPixel(s, cam);
@@ -121,7 +127,7 @@ describe('the same bytes as the plain reference, for random scenes and cameras (
     }), RUNS);
   });
 
-  it('render() of scenes with cylinders, cones, triangles and meshes: the fast path, and the same bytes', () => {
+  it('render() of scenes with every listed shape (cylinders, cones, triangles, meshes, …): the fast path, and the same bytes', () => {
     assertBoth(fc.property(shapeScene, camera, (s, cam) => {
       const twice = new Set(s.objects).size !== s.objects.length;
       expect(prepareFrame(s, cam).packed === null).toBe(twice);

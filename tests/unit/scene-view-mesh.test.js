@@ -5,6 +5,10 @@ import { Scene } from '../../lib/scene.js';
 import { Sphere } from '../../lib/shapes/sphere.js';
 import { Plane } from '../../lib/shapes/plane.js';
 import { Box } from '../../lib/shapes/box.js';
+import { Cylinder } from '../../lib/shapes/cylinder.js';
+import { Cone } from '../../lib/shapes/cone.js';
+import { Triangle } from '../../lib/shapes/triangle.js';
+import { AreaLight } from '../../lib/area-light.js';
 import { PointLight } from '../../lib/lights.js';
 import { Camera } from '../../lib/camera.js';
 import { Vec3 } from '../../lib/vec3.js';
@@ -81,6 +85,31 @@ describe('shapesKey', () => {
     expect(shapesKey({ scene, camera, bounds, constructionSphere: pink })).not.toBe(key);
     pink.center.x += 1;
     expect(shapesKey({ scene, camera, bounds, constructionSphere: null })).not.toBe(key);
+  });
+
+  const keyOf = (...items) => {
+    const scene = new Scene();
+    for (const item of items) scene.add(item);
+    const camera = new Camera({ width: 8, height: 6 });
+    return shapesKey({ scene, camera, bounds: sceneBounds(scene, camera, 1), constructionSphere: null });
+  };
+
+  it.each([
+    ['a cylinder\'s height', () => new Cylinder([0, 0, -10], 1, 2), (c) => { c.height = 3; }],
+    ['a cylinder\'s caps', () => new Cylinder([0, 0, -10], 1, 2), (c) => { c.capped = false; }],
+    ['a cone\'s height', () => new Cone([0, 0, -10], 1, 2), (c) => { c.height = 4; }],
+    ['a cone\'s caps', () => new Cone([0, 0, -10], 1, 2), (c) => { c.capped = false; }],
+    ['a triangle\'s corner', () => new Triangle([0, 0, -10], [1, 0, -10], [0, 1, -10]), (t) => { t.c.x = 0.5; }],
+    ['an area light\'s radius', () => new AreaLight([0, 5, -10], 1), (l) => { l.radius = 2; }],
+  ])('changes with %s (each shape and light says its own key)', (_, make, change) => {
+    const item = make(), before = keyOf(item);
+    change(item);
+    expect(keyOf(item)).not.toBe(before);
+  });
+
+  it('tells two triangles apart, and a cylinder from a cone of the same numbers', () => {
+    expect(keyOf(new Triangle([0, 0, -10], [1, 0, -10], [0, 1, -10]))).not.toBe(keyOf(new Triangle([0, 0, -10], [1, 0, -10], [0, 2, -10])));
+    expect(keyOf(new Cylinder([0, 0, -10], 1, 2))).not.toBe(keyOf(new Cone([0, 0, -10], 1, 2)));
   });
 });
 

@@ -1,6 +1,11 @@
 import { describe, it, expect } from 'vitest';
 import { sceneToJSON, sceneFromJSON, cameraToJSON, cameraFromJSON, sceneToCode } from '../../lib/serialize.js';
 import { render, Camera, Scene, Sphere, Plane, Box, PointLight, classScene } from '../../lib/index.js';
+import { shapeClasses } from '../../lib/shapes/index.js';
+import { lightClasses } from '../../lib/lights/index.js';
+
+/** Every type scene JSON takes, as its message lists them: the listed shapes', then the listed lights' (a new class joins by being listed). */
+const LISTED_TYPES = [...shapeClasses(), ...lightClasses()].map((Kind) => `"${Kind.type}"`).join(', ');
 
 /** A plane, a box, glass, an emissive sphere and point lights added between shapes. */
 function roomScene() {
@@ -89,7 +94,7 @@ describe('bad scene JSON names the field', () => {
     [{ objects: [sphere({ material: 'red' })] }, TypeError, 'objects[0].material must be an object, got "red"'],
     [{ objects: [sphere({ radious: 2 })] }, TypeError, 'objects[0] has no field "radious"'],
     [{ objects: [sphere({ name: 7 })] }, TypeError, 'objects[0].name must be a string, got 7'],
-    [{ objects: [sphere(), { type: 'cube' }] }, TypeError, 'objects[1].type must be one of "sphere", "plane", "box", "cylinder", "cone", "triangle", "mesh", "pointLight", "areaLight", "spotLight", got "cube"'],
+    [{ objects: [sphere(), { type: 'cube' }] }, TypeError, `objects[1].type must be one of ${LISTED_TYPES}, got "cube"`],
     [{ objects: [{ type: 'constructor' }] }, TypeError, 'objects[0].type must be one of'],
     [{ objects: [sphere(), null] }, TypeError, 'objects[1] must be an object, got null'],
     [{ objects: [{ type: 'plane', normal: [0, 0, 0] }] }, RangeError, 'objects[0].normal must not be zero-length'],
