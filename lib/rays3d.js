@@ -10,10 +10,9 @@
  * centre also passes through the same pixel of a plane at any other distance,
  * so the view may show it further out, where it is big enough to see.
  */
-import { Vec3, dot, cross, normalize, scaleAndAdd, sub, reflect, length } from './vec3.js';
+import { Vec3, dot, cross, normalize, scaleAndAdd, sub, length } from './vec3.js';
 import { ballOf } from './shapes/index.js';
 import { nearestHit } from './trace.js';
-import { Ray } from './ray.js';
 import { show } from './check.js';
 
 /**
@@ -130,17 +129,23 @@ function addRay(out, scene, kind, depth, origin, direction, hit, opts) {
     out.push({
       kind: 'shadow', depth, from: hit.point, to: l.position, light: l.light,
       facing: l.facing, lit: l.facing && !l.inShadow, transmission: l.transmission, ...(l.sample !== undefined && { sample: l.sample }),
-      blockedAt: l.facing && l.inShadow ? blocker(scene, hit, l) : null,
+      blockedAt: l.blockedAt,
     });
   }
-  if (hit.reflection) {
-    const d = reflect(new Vec3(), direction, hit.normal);
-    addRay(out, scene, 'reflection', depth + 1, hit.point, d, hit.reflection.hit, opts);
-  }
-  if (hit.refraction) {
-    const d = refracted(direction, hit.normal, hit.inside, hit.object.material.ior);
-    addRay(out, scene, 'refraction', depth + 1, hit.point, d, hit.refraction.hit, opts);
-  }
+  if (hit.reflection) addRay(out, scene, 'reflection', depth + 1, hit.point, hit.reflection.direction, hit.reflection.hit, opts);
+  if (hit.refraction) addRay(out, scene, 'refraction', depth + 1, hit.point, hit.refraction.direction, hit.refraction.hit, opts);
+}
+
+/**
+ * Pixel (x, y)'s primary ray alone, as raySegments' first segment (eye → its
+ * nearest hit, or `missLength` out), found by trace.js's nearestHit without
+ * the pixel's whole record: the 3D view's fan of a row's rays wants only these.
+ */
+export function primarySegment(scene, camera, x, y, { missLength = 40 } = {}) {
+  const { ray } = camera.primaryRay(x, y), hit = { object: null, t: Infinity }, o = ray.origin, d = ray.direction;
+  if (!nearestHit(scene.objects, ray, hit, scene.epsilon)) return { kind: 'primary', depth: 0, hit: false, from: o, to: scaleAndAdd(new Vec3(), o, d, missLength) };
+  const point = new Vec3(o.x + d.x * hit.t, o.y + d.y * hit.t, o.z + d.z * hit.t); // P = Ro + Rd·t, as trace.js's surfaceAt
+  return { kind: 'primary', depth: 0, hit: true, from: o, to: point, object: hit.object, t: hit.t };
 }
 
 /**
@@ -154,27 +159,6 @@ export function sampleSegments(record, { missLength = 40 } = {}) {
     kind: 'sample', depth: 0, hit: s.t !== null, dx: s.dx, dy: s.dy, color: s.color,
     from: s.ray.origin, to: scaleAndAdd(new Vec3(), s.ray.origin, s.ray.direction, s.t ?? missLength),
   }));
-}
-
-const _shadow = new Ray();
-const _hit = { object: null, t: Infinity };
-
-/** Where a shadow ray from the hit toward a light first meets something else (as trace's shadow ray does). */
-function blocker(scene, hit, l) {
-  scaleAndAdd(_shadow.origin, hit.point, hit.normal, scene.bias);
-  normalize(_shadow.direction, sub(_shadow.direction, l.position, hit.point));
-  const lightObject = scene.lights.find((s) => s.source === l.light)?.object;
-  const objects = scene.objects.filter((o) => o !== lightObject);
-  if (!nearestHit(objects, _shadow, _hit, scene.epsilon) || _hit.t >= l.distance - scene.bias) return null;
-  return scaleAndAdd(new Vec3(), _shadow.origin, _shadow.direction, _hit.t);
-}
-
-/** Snell's law, as trace.js bends a ray into or out of glass. */
-function refracted(d, n, inside, ior) {
-  const cosi = -dot(d, n), eta = inside ? ior : 1 / ior;
-  const k = Math.max(0, 1 - eta * eta * (1 - cosi * cosi));
-  const s = eta * cosi - Math.sqrt(k);
-  return normalize(new Vec3(), new Vec3(eta * d.x + s * n.x, eta * d.y + s * n.y, eta * d.z + s * n.z));
 }
 
 /**

@@ -159,11 +159,11 @@ function mirrorAndGlass(frame, color, record) {
   const mirrored = frame.reflectedColor, through = frame.refractedColor, depth = frame.depth + 1;
   reflect(reflected.direction, d, n);
   scaleAndAdd(reflected.origin, frame.point, frame.normal, scene.bias);
-  trace(scene, reflected, mirrored, record && (record.reflection = {}), depth);
+  trace(scene, reflected, mirrored, record && (record.reflection = bounce(reflected)), depth);
   if (refracts) {
     set(refracted.direction, frame.bent[0], frame.bent[1], frame.bent[2]);
     scaleAndAdd(refracted.origin, frame.point, frame.normal, -scene.bias); // start just inside
-    trace(scene, refracted, through, record && (record.refraction = {}), depth);
+    trace(scene, refracted, through, record && (record.refraction = bounce(refracted)), depth);
   } else setColor(through, 0, 0, 0);
 
   for (let i = 0; i < 3; i++) color[i] = mix(color[i], mirrored[i], through[i], surface[i], reflection, transparency, fresnel);
@@ -216,6 +216,25 @@ function recordHit(steps, frame) {
   return steps.hit;
 }
 
+/** A bounce's record: the direction its ray leaves in (the mirror's, or Snell's through glass); trace adds what it hit. */
+function bounce(ray) {
+  return { direction: copy(new Vec3(), ray.direction), hit: null };
+}
+
+/**
+ * The first shape in the way of the shadow ray toward a light `distance`
+ * away (never the light's own shape), `{ object, t, point }`, or null: where
+ * the 3D view draws a blocked shadow ray stop. The same ray as shadowRay's.
+ */
+function firstBlocker(frame, distance, lightObject) {
+  const { scene } = frame, shadow = frame.shadowRay, hit = { object: null, t: Infinity };
+  scaleAndAdd(shadow.origin, frame.point, frame.normal, scene.bias);
+  copy(shadow.direction, frame.toLight);
+  const objects = scene.objects.filter((o) => o !== lightObject);
+  if (!nearestHit(objects, shadow, hit, scene.epsilon) || hit.t >= distance - scene.bias) return null;
+  return { object: hit.object, t: hit.t, point: scaleAndAdd(new Vec3(), shadow.origin, shadow.direction, hit.t) };
+}
+
 /** One light's share at the hit point, as lightPoint adds it (zero when it faces away or is blocked). */
 function recordLight(frame, light) {
   const { scene } = frame, surface = frame.hit.object.material.color, lightColor = light.emission;
@@ -226,9 +245,12 @@ function recordLight(frame, light) {
   const fall = falloff(light.attenuation, distance), reach = transmission * fall;
   const diffuse = transmission > 0 ? cos * reach : 0;
   const highlight = transmission > 0 && scene.specular ? specular(frame, cos) * reach : 0;
+  const inShadow = cos > 0 && beam > 0 && transmission < beam;
+  const blocker = inShadow ? firstBlocker(frame, distance, light.object) : null;
   return {
     light: light.source, position: copy(new Vec3(), light.position), distance,
-    cos, facing: cos > 0, inShadow: cos > 0 && beam > 0 && transmission < beam, transmission, beam,
+    cos, facing: cos > 0, inShadow, transmission, beam,
+    blocker: blocker?.object ?? null, blockerT: blocker?.t ?? null, blockedAt: blocker?.point ?? null,
     attenuation: light.attenuation, falloff: fall,
     contribution: [0, 1, 2].map((i) => lightShare(lightColor[i], surface[i], diffuse, highlight)),
     specular: highlight,

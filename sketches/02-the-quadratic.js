@@ -11,7 +11,7 @@
  * f(t) = At² + Bt + C below crosses zero at the roots.
  */
 import p5 from 'p5';
-import { Camera, Scene, Sphere, PointLight, inspectPixel } from '../lib/index.js';
+import { Camera, Scene, Sphere, PointLight } from '../lib/index.js';
 import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
 
 // The sphere (the worksheet's: centre (0, 0, −20), radius 4) and the screen.
@@ -68,7 +68,7 @@ new p5((p) => {
 
   p.draw = () => {
     const s = views[0].selected;
-    const record = s && inspectPixel(views[0].scene, views[0].camera, s.x, s.y);
+    const record = s && views[0].record; // the selected pixel's record, made once for the inspector, the tasks and this
     p.background('#f6f7f9');
     p.drawParabola({ record, x: 0, y: 0, w: 560, h: 380 });
   };

@@ -13,7 +13,7 @@
  * Every value sits in an element with data attributes (`data-field`, and `data-sphere`/`data-route`
  * or `data-light` where needed) and its full precision in `data-value`, so tests and worksheets can read it.
  */
-import { inspectPixel } from '../explain.js';
+import { recordOf } from './pixel-record.js';
 import { kindOf } from '../shapes/index.js';
 import { toHex, colorName } from '../color.js';
 import { formatNumber, formatVector, formatAngle } from '../format.js';
@@ -84,7 +84,7 @@ export class Inspector {
     this.show(view.selected);
   }
 
-  /** Shows pixel `{ x, y }` of the view's picture (null: the hint to click one). */
+  /** Shows pixel `{ x, y }` of the view's picture (null: the hint to click one), from its record (the view's own when it is the selected pixel). */
   show(selected) {
     if (!selected) {
       this.record = null;
@@ -93,7 +93,7 @@ export class Inspector {
       this.element.dataset.state = 'empty';
       return;
     }
-    const r = this.record = inspectPixel(this.view.scene, this.view.camera, selected.x, selected.y);
+    const r = this.record = recordOf(this.view, selected);
     this.answer.textContent = answerLine(r);
     this.answer.style.setProperty('--rt-answer-chars', String(this.answer.textContent.length)); // style.css fits the line to the panel
     this.#announcer.say(pixelAnnouncement(r));

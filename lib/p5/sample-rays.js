@@ -9,7 +9,7 @@
  *   const view = p.createTracerView({ scene, camera: new Camera({ width: 64, height: 48, samples: 4 }) });
  *   p.createSampleRays({ view });
  */
-import { inspectPixel } from '../explain.js';
+import { recordOf } from './pixel-record.js';
 import { toHex, colorName } from '../color.js';
 import { formatAngle, formatNumber } from '../format.js';
 import { show, checkOptions } from '../check.js';
@@ -46,7 +46,7 @@ class SampleRays {
     this.show(view.selected);
   }
 
-  /** Shows pixel `{ x, y }` (null: a hint). */
+  /** Shows pixel `{ x, y }` (null: a hint), from its record (the view's own when it is the selected pixel). */
   show(selected) {
     const context = this.canvas.getContext('2d');
     context.clearRect(0, 0, ZOOM, ZOOM);
@@ -56,7 +56,7 @@ class SampleRays {
       this.words.textContent = 'Click a pixel to see the rays through it.';
       return;
     }
-    const record = inspectPixel(this.view.scene, this.view.camera, selected.x, selected.y);
+    const record = recordOf(this.view, selected);
     const rays = record.samples ?? [{ dx: 0, dy: 0, h: record.h, v: record.v, hit: record.hit?.name ?? null, color: record.color }];
     drawCells(context, rays);
     const hex = toHex(record.color);

@@ -6,7 +6,7 @@
  * with the scene's radius `r`: a missing ray goes 2.5 r out, a normal is short.
  */
 import { inspectPixel } from '../explain.js';
-import { raySegments, sampleSegments } from '../rays3d.js';
+import { raySegments, sampleSegments, primarySegment } from '../rays3d.js';
 
 /**
  * The story of a pixel (its inspectPixel record) as segments: primary ray,
@@ -40,8 +40,7 @@ export function fanRays({ scene, camera }, selected, kind, r) {
   for (let i = 0; i < n; i++) {
     const x = kind === 'row' ? i : s.x, y = kind === 'row' ? s.y : i;
     if (x === s.x && y === s.y) continue;
-    const record = inspectPixel(scene, camera, x, y);
-    out.push(raySegments(scene, record, { missLength: r * 2.5 })[0]);
+    out.push(primarySegment(scene, camera, x, y, { missLength: r * 2.5 }));
   }
   return out;
 }

@@ -24,6 +24,7 @@
 import p5 from 'p5';
 import { ballOf } from '../shapes/index.js';
 import { inspectPixel } from '../explain.js';
+import { recordOf } from './pixel-record.js';
 import { Vec3 } from '../vec3.js';
 import { show, checkOptions } from '../check.js';
 import { pixelCenter, sceneBounds, orbitCamera, projectToScreen } from '../rays3d.js';
@@ -251,7 +252,7 @@ export class SceneView {
   refresh() {
     this.#seen = -1;
     this.#sceneChanged();
-    this.#selectionChanged(this.#view.selected);
+    this.#selectionChanged(this.#view.selected, true); // changed in place: the view's record may be of the scene as it was
     return this;
   }
 
@@ -312,12 +313,12 @@ export class SceneView {
     this.#sceneChanged();
   }
 
-  #selectionChanged(s) {
+  #selectionChanged(s, fresh = false) {
     this.#selected = s ? { x: s.x, y: s.y } : null;
     if (this.canvas) this.canvas.dataset.selected = s ? `${s.x},${s.y}` : '';
     const view = this.#view, r = this.#bounds.radius;
     this.#fanSegments = fanRays(view, this.#selected, this.#fan, r);
-    const record = s ? inspectPixel(view.scene, view.camera, s.x, s.y) : null;
+    const record = !s ? null : fresh ? inspectPixel(view.scene, view.camera, s.x, s.y) : recordOf(view, s);
     this.#construction = constructionOf(record, this.#constructionSphere);
     this.#segments = record ? pixelStory(view.scene, record, r) : [];
     this.#texture?.stale();

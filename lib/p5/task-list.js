@@ -11,7 +11,7 @@
  * Controls report what they judged with DOM events on their own element:
  * `rt-answer` (the answer form's verdict) and `rt-check` (a homework self-check).
  */
-import { inspectPixel } from '../explain.js';
+import { recordOf } from './pixel-record.js';
 import { lessonOf, LESSONS } from '../lesson-tasks.js';
 import { markDone, clearProgress, pageProgress, progressText } from '../tasks.js';
 import { loadProgress, saveProgress } from './progress-store.js';
@@ -92,7 +92,7 @@ export class TaskList {
       this.#last = s;
       if (!moved) return this.#later();
       this.#tries++;
-      this.#judge({ type: 'select', record: inspectPixel(view.scene, view.camera, s.x, s.y) });
+      this.#judge({ type: 'select', record: recordOf(view, s) });
     }));
     const on = (target, type, handler) => {
       target.addEventListener(type, handler);

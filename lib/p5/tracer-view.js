@@ -26,6 +26,7 @@ import { ORDERS } from '../progressive.js';
 import { WorkerProgressiveRenderer } from '../workers/progressive.js';
 import { modeShader, modeLegend } from '../modes.js';
 import { pixelCoordinate, show, checkOptions } from '../check.js';
+import { inspectPixel } from '../explain.js';
 import { registerView } from './page-state.js';
 import { useStyle, element, resolveParent, sketchNode } from './dom.js';
 import { addProjectorSwitch } from './projector.js';
@@ -89,6 +90,8 @@ const EVENTS = ['select', 'restart', 'progress'];
 export class TracerView {
   /** @type {any} a WorkerProgressiveRenderer, or the GPU engine's (lib/p5/engines.js) */ #renderer; #page; #imageData = null; #raf = 0; #destroyed = false;
   #scale; #grid; #mode; #selected = null; #events = createEvents(EVENTS);
+  /** The selected pixel's inspectPixel record (null: none selected; undefined: not made yet for this selection and scene). */
+  #record;
   #shownCurrent = null; #progressText = ''; #shownProblem = null;
   #ctx; #overlayCtx; #unwatchRoom; #words;
 
@@ -142,6 +145,15 @@ export class TracerView {
   get progress() { return this.#renderer.progress; }
   /** The selected pixel `{ x, y }` in traced-image coordinates, or null. */
   get selected() { return this.#selected && { ...this.#selected }; }
+  /**
+   * The selected pixel's whole record (lib/explain.js inspectPixel), or null:
+   * made when first asked after each selection or new scene, so every 'select'
+   * listener (inspector, 3D view, tasks, sample rays) reads the same one.
+   */
+  get record() {
+    if (this.#record === undefined) this.#record = this.#selected ? inspectPixel(this.scene, this.camera, this.#selected.x, this.#selected.y) : null;
+    return this.#record;
+  }
   /** On-screen pixels per traced pixel right now. */
   get scale() { return this.#screenScale(); }
   /** The `<canvas data-tracer>` holding the traced image (and nothing else). */
@@ -231,7 +243,8 @@ export class TracerView {
   /**
    * Calls `fn` whenever something happens to the view; returns a function that removes the listener.
    * - `'select'`: `fn({ x, y } | null, view)` when the selection changes, and again when the
-   *   scene, camera or mode changes while a pixel is selected (its story changed);
+   *   scene, camera or mode changes while a pixel is selected (its story changed); the pixel's
+   *   inspectPixel record is `view.record`, made once for all the listeners;
    * - `'restart'`: `fn(view)` when the picture clears to be traced again (a new scene, camera,
    *   mode or order, or `restart()`);
    * - `'progress'`: `fn({ progress, done, current }, view)` after each frame of tracing
@@ -314,6 +327,7 @@ export class TracerView {
 
   /** A fresh render: resize if needed, clear, mark the page, start the frame loop. */
   #started() {
+    this.#record = undefined;
     const c = this.canvasElement, w = this.width, h = this.height;
     if (c.width !== w || c.height !== h) {
       c.width = w; c.height = h; // also clears the canvas
@@ -419,6 +433,7 @@ export class TracerView {
   }
 
   #notify() {
+    this.#record = undefined; // a new selection, or the same pixel of a new scene: made again when asked
     this.#events.emit('select', this.selected, this);
   }
 }

@@ -61,3 +61,32 @@ test('what a sketch needs is the view\'s own: the picture\'s bytes and the slow-
   })).toBe(true);
   expect(await page.evaluate(() => { window.view.slowRaysPerSecond = 8; window.view.slowRaysPerStep = 3; return [window.view.slowRaysPerSecond, window.view.slowRaysPerStep]; })).toEqual([8, 3]);
 });
+
+/**
+ * Counts the page's inspectPixel calls: lib/explain.js as the dev server sends
+ * it, with inspectPixel wrapped to count into window.inspections.
+ */
+async function countInspections(page) {
+  await page.route(/\/lib\/explain\.js(\?.*)?$/, async (route) => {
+    const response = await route.fetch();
+    const body = (await response.text()).replace('export function inspectPixel(', 'function tracedInspectPixel(')
+      + '\nexport function inspectPixel(...args) { globalThis.inspections = (globalThis.inspections ?? 0) + 1; return tracedInspectPixel(...args); }\n';
+    await route.fulfill({ response, body });
+  });
+}
+
+for (const [sketch, panels] of [['06-lights-shadows-reflections', 'the inspector, the 3D view and the tasks'], ['11-several-rays-per-pixel', 'the inspector and the sample rays']]) {
+  test(`one record per click: ${panels} of sketch ${sketch.slice(0, 2)} share the pixel's one inspectPixel`, async ({ page }) => {
+    await countInspections(page);
+    await page.goto(`/sketches/${sketch}.html`);
+    await waitForDone(page);
+    const canvas = page.locator('[data-tracer]').last();
+    for (const [x, y] of [[10, 12], [20, 8]]) {
+      await page.evaluate(() => { window.inspections = 0; });
+      await clickPixel(canvas, x, y);
+      await expect(page.locator('[data-inspector] [data-field="hit-object"]').first()).toBeAttached();
+      await page.waitForTimeout(100); // listeners that run later (the 3D view's redraw, the tasks) have run
+      expect(await page.evaluate(() => window.inspections)).toBe(1);
+    }
+  });
+}

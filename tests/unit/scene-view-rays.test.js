@@ -5,6 +5,7 @@ import { classScene } from '../../lib/scenes.js';
 import { Camera } from '../../lib/camera.js';
 import { inspectPixel } from '../../lib/explain.js';
 import { pixelStory, shotStory, fanRays } from '../../lib/p5/scene-view-rays.js';
+import { raySegments, primarySegment } from '../../lib/rays3d.js';
 import { penumbraScene, penumbraCamera, penumbraPixel } from './penumbra-scene.js';
 
 const scene = classScene(), camera = new Camera({ width: 16, height: 12 }), R = 10;
@@ -66,5 +67,15 @@ describe('fanRays', () => {
   it('none without a kind or a selected pixel', () => {
     expect(fanRays(view, null, 'row', R)).toEqual([]);
     expect(fanRays(view, { x: 5, y: 3 }, null, R)).toEqual([]);
+  });
+});
+
+describe('a row\'s fan of primary rays', () => {
+  it('is each pixel\'s first segment of its story, found without the pixel\'s whole record', () => {
+    for (let y = 0; y < camera.height; y++) {
+      for (let x = 0; x < camera.width; x++) {
+        expect(primarySegment(scene, camera, x, y, { missLength: 7 })).toEqual(raySegments(scene, inspectPixel(scene, camera, x, y), { missLength: 7 })[0]);
+      }
+    }
   });
 });
