@@ -19,11 +19,12 @@ import { plainClassOf, ballOf } from './shapes/index.js';
 import { SHAPE, KIND, P, N, scratchNumbers, sideTables } from './shapes/packed.js';
 import { LIGHT, LIGHT_EMISSION, LIGHT_SHAPE, ATTENUATION, IS_SPOT, AXIS, COS_OUTER, COS_INNER, packSource } from './lights/packed.js';
 import { reflectInto } from './vec3.js';
+import { MATERIAL_NUMBERS, MATERIAL_AT, packMaterial } from './material.js';
 import { lambert, specular, lightShare, spotShare, falloff, refract, fresnel as fresnelShare, mix } from './optics.js';
 
-/** Numbers per material, and where each lies among them: r g b, emission r g b, reflection, transparency, ior, specular, shininess. */
-export const MATERIAL = 11;
-export const EMISSION = 3, REFLECTION = 6, TRANSPARENCY = 7, IOR = 8, SPECULAR = 9, SHININESS = 10;
+/** Numbers per material, and where each field lies among them (lib/material.js's table: r g b, emission r g b, reflection, transparency, ior, specular, shininess). */
+const MATERIAL = MATERIAL_NUMBERS;
+const { emission: EMISSION, reflection: REFLECTION, transparency: TRANSPARENCY, ior: IOR, specular: SPECULAR, shininess: SHININESS } = MATERIAL_AT;
 
 /** The deepest bounce a scene allows (Scene's maxDepth is 0–16), plus the primary ray. */
 const LEVELS = 17;
@@ -109,7 +110,7 @@ export class PackedScene {
     const s = i * SHAPE, m = object.material, kind = kindIndex(object.constructor);
     packInSlot(KINDS[kind], object, i, this.shapes, s, this.tables);
     this.shapes[s + KIND] = kind;
-    this.materials.set([...m.color, ...m.emission, m.reflection, m.transparency, m.ior, m.specular, m.shininess], i * MATERIAL);
+    packMaterial(m, this.materials, i * MATERIAL);
   }
 }
 

@@ -6,8 +6,36 @@
 import { toColor } from './color.js';
 import { numberInRange, show, checkOptions } from './check.js';
 
-/** The options a material takes. */
-const OPTIONS = ['color', 'emission', 'reflection', 'transparency', 'ior', 'specular', 'shininess'];
+/**
+ * The material's fields, in one table that its options and checks, its JSON
+ * (lib/shapes/json.js), its code (lib/serialize.js), the restart checks
+ * (lib/scene-check.js) and its packed numbers (packMaterial, for lib/kernel.js)
+ * all read: a new field is one more row. `value` is its default, `check`
+ * reads a given value (a colour: [r, g, b] from an array, a string or one
+ * number), `numbers` how many numbers it packs as, in this order.
+ */
+export const MATERIAL_FIELDS = Object.freeze([
+  { name: 'color', value: [1, 1, 1], check: (v) => toColor(v, 'color'), numbers: 3 },
+  { name: 'emission', value: [0, 0, 0], check: (v) => toColor(v, 'emission'), numbers: 3 },
+  { name: 'reflection', value: 0, check: (v) => numberInRange(v, 'reflection', 0, 1), numbers: 1 },
+  { name: 'transparency', value: 0, check: (v) => numberInRange(v, 'transparency', 0, 1), numbers: 1 },
+  { name: 'ior', value: 1.1, check: (v) => numberInRange(v, 'ior', 1, 4), numbers: 1 },
+  { name: 'specular', value: 0, check: (v) => numberInRange(v, 'specular', 0, 1), numbers: 1 },
+  { name: 'shininess', value: 50, check: (v) => numberInRange(v, 'shininess', 1, 10000), numbers: 1 },
+].map((field) => Object.freeze(field)));
+
+/** The options a material takes: its fields' names. */
+const OPTIONS = MATERIAL_FIELDS.map((field) => field.name);
+
+/** Field `name`'s value from what was given (undefined: its default), checked by its row of the table. */
+function readField(name, given) {
+  const { value, check } = MATERIAL_FIELDS.find((field) => field.name === name);
+  return check(given === undefined ? (Array.isArray(value) ? [...value] : value) : given);
+}
+
+/** Numbers per material in the packed scene, and where each field's first one lies (`MATERIAL_AT.emission` is 3). */
+export const MATERIAL_NUMBERS = MATERIAL_FIELDS.reduce((sum, field) => sum + field.numbers, 0);
+export const MATERIAL_AT = Object.freeze(Object.fromEntries(MATERIAL_FIELDS.map((field, i) => [field.name, MATERIAL_FIELDS.slice(0, i).reduce((sum, f) => sum + f.numbers, 0)])));
 
 export class Material {
   /**
@@ -28,17 +56,15 @@ export class Material {
     if (options === null || typeof options !== 'object') {
       throw new TypeError(`material must be an object like { color: [1, 0, 0] }, got ${show(options)}`);
     }
-    const {
-      color = [1, 1, 1], emission = 0, reflection = 0, transparency = 0,
-      ior = 1.1, specular = 0, shininess = 50,
-    } = checkOptions(options, OPTIONS, 'material');
-    this.color = toColor(color, 'color');
-    this.emission = toColor(emission, 'emission');
-    this.reflection = numberInRange(reflection, 'reflection', 0, 1);
-    this.transparency = numberInRange(transparency, 'transparency', 0, 1);
-    this.ior = numberInRange(ior, 'ior', 1, 4);
-    this.specular = numberInRange(specular, 'specular', 0, 1);
-    this.shininess = numberInRange(shininess, 'shininess', 1, 10000);
+    const given = checkOptions(options, OPTIONS, 'material');
+    const read = (name) => readField(name, given[name]); // each field by its row of MATERIAL_FIELDS, in the table's order
+    /** @type {number[]} */ this.color = read('color');
+    /** @type {number[]} */ this.emission = read('emission');
+    /** @type {number} */ this.reflection = read('reflection');
+    /** @type {number} */ this.transparency = read('transparency');
+    /** @type {number} */ this.ior = read('ior');
+    /** @type {number} */ this.specular = read('specular');
+    /** @type {number} */ this.shininess = read('shininess');
   }
 
   /** True when the material gives off light (it is then a light of the scene). */
@@ -50,6 +76,24 @@ export class Material {
   static from(value) {
     if (value instanceof Material) return value;
     return new Material(value ?? {});
+  }
+}
+
+/** A material's fields as options (`new Material(materialOptions(m))` builds it again, checked). */
+export function materialOptions(m) {
+  return Object.fromEntries(MATERIAL_FIELDS.map(({ name }) => [name, m[name]]));
+}
+
+/** A material's fields as JSON: colours as new [r, g, b] arrays. */
+export function materialJSON(m) {
+  return Object.fromEntries(MATERIAL_FIELDS.map(({ name, numbers }) => [name, numbers > 1 ? [...m[name]] : m[name]]));
+}
+
+/** A material's MATERIAL_NUMBERS numbers into `out` at `at`, in the table's order. */
+export function packMaterial(m, out, at) {
+  for (const { name, numbers } of MATERIAL_FIELDS) {
+    if (numbers === 1) out[at++] = m[name];
+    else for (let i = 0; i < numbers; i++) out[at++] = m[name][i];
   }
 }
 

@@ -9,7 +9,7 @@
  */
 import { Scene } from './scene.js';
 import { Camera } from './camera.js';
-import { Material } from './material.js';
+import { Material, MATERIAL_FIELDS, materialOptions } from './material.js';
 import { lightsOf, lightClassOf } from './lights/index.js';
 import { lightName } from './lights/checks.js';
 import { classOf } from './shapes/index.js';
@@ -68,10 +68,8 @@ function checkShape(o, path) {
 /** A shape's material, checked by the Material constructor; its colours made [r, g, b]. */
 function checkMaterial(m, path) {
   if (!(m instanceof Material)) throw new TypeError(`${path} must be a Material, got ${show(m)}`);
-  const { color, emission, reflection, transparency, ior, specular, shininess } = m;
-  withPath(() => new Material({ color, emission, reflection, transparency, ior, specular, shininess }), `${path}.`);
-  m.color = asColor(m.color, `${path}.color`);
-  m.emission = asColor(m.emission, `${path}.emission`);
+  withPath(() => new Material(materialOptions(m)), `${path}.`);
+  for (const { name, numbers } of MATERIAL_FIELDS) if (numbers > 1) m[name] = asColor(m[name], `${path}.${name}`); // the colours
   return m;
 }
 

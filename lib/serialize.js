@@ -14,7 +14,7 @@
  */
 import { Scene } from './scene.js';
 import { Camera } from './camera.js';
-import { Material } from './material.js';
+import { Material, MATERIAL_FIELDS } from './material.js';
 import { tooDeepAt } from './json-depth.js';
 import { checkWork } from './scene-work.js';
 import { lightClass, lightClasses, lightClassOf } from './lights/index.js';
@@ -23,7 +23,7 @@ import { vector } from './shapes/json.js';
 import { checkOptions, show, withPath as named } from './check.js';
 
 const SCENE_FIELDS = ['background', 'ambient', 'shadows', 'bias', 'epsilon', 'maxDepth', 'specular', 'objects'];
-const MATERIAL_FIELDS = ['color', 'emission', 'reflection', 'transparency', 'ior', 'specular', 'shininess'];
+const MATERIAL_NAMES = MATERIAL_FIELDS.map((field) => field.name);
 const CAMERA_FIELDS = ['width', 'height', 'fov', 'position', 'yaw', 'pitch', 'samples'];
 
 /** The class a JSON `type` names: a listed light or shape class; undefined for none. */
@@ -261,7 +261,7 @@ export function objectFromJSON(given, path) {
     if (o.material === null || typeof o.material !== 'object' || Array.isArray(o.material)) {
       throw new TypeError(`${path}.material must be an object, got ${show(o.material)}`);
     }
-    const fields = onlyFields(o.material, MATERIAL_FIELDS, `${path}.material`); // its message has the path already
+    const fields = onlyFields(o.material, MATERIAL_NAMES, `${path}.material`); // its message has the path already
     material = named(() => new Material(fields), `${path}.material.`);
   }
   const item = named(() => kind.build(o, material), `${path}.`);
@@ -272,7 +272,7 @@ export function objectFromJSON(given, path) {
 /* ---- to code ---- */
 
 const SCENE_DEFAULTS = { background: [0, 0, 0], ambient: 0, shadows: true, bias: 1e-4, epsilon: 1e-6, maxDepth: 5, specular: true };
-const MATERIAL_DEFAULTS = { color: [1, 1, 1], emission: [0, 0, 0], reflection: 0, transparency: 0, ior: 1.1, specular: 0, shininess: 50 };
+const MATERIAL_DEFAULTS = Object.fromEntries(MATERIAL_FIELDS.map(({ name, value }) => [name, value]));
 
 function sceneOptions(data) {
   return withoutDefaults(data, SCENE_DEFAULTS);

@@ -4,7 +4,7 @@
  * the same names, reading the packed scene the kernel reads (uploaded by
  * lib/gpu/upload.js as float textures) with its layout's own constants: the
  * offsets below come from lib/shapes/packed.js, lib/lights/packed.js and
- * lib/kernel.js, so a change of layout there is one edit.
+ * lib/material.js's table of fields, so a change of layout there is one edit.
  *
  * GLSL has no recursion, so the tree of mirror and glass rays that
  * kernel.js walks by calling traceRay again is a stack of rays here, each
@@ -26,7 +26,7 @@
  * tested), y, the sphere it runs inside (its far root only); −1 for none.
  */
 import { SHAPE, KIND } from '../shapes/packed.js';
-import { MATERIAL, EMISSION, REFLECTION, TRANSPARENCY, IOR, SPECULAR, SHININESS } from '../kernel.js';
+import { MATERIAL_NUMBERS, MATERIAL_AT } from '../material.js';
 import { LIGHT, POSITION, LIGHT_EMISSION, LIGHT_SHAPE, ATTENUATION, IS_SPOT, AXIS, COS_OUTER, COS_INNER } from '../lights/packed.js';
 import { OPTICS_GLSL } from './glsl-optics.js';
 import { SHAPES_GLSL } from './glsl-shapes.js';
@@ -46,10 +46,13 @@ const RAY_STACK = 18;
 /** Numbers per texture row (lib/gpu/upload.js lays every array out in rows of this many). */
 export const ROW = 1024;
 
+/** The material offsets the shader reads, by their names in lib/material.js's table. */
+const { emission: EMISSION, reflection: REFLECTION, transparency: TRANSPARENCY, ior: IOR, specular: SPECULAR, shininess: SHININESS } = MATERIAL_AT;
+
 /** The #defines of the layout: every offset from the module that owns it. */
 function layout() {
   const defines = {
-    SHAPE, KIND, MATERIAL, EMISSION, REFLECTION, TRANSPARENCY, IOR, SPECULAR, SHININESS,
+    SHAPE, KIND, MATERIAL: MATERIAL_NUMBERS, EMISSION, REFLECTION, TRANSPARENCY, IOR, SPECULAR, SHININESS,
     LIGHT, POSITION, LIGHT_EMISSION, LIGHT_SHAPE, ATTENUATION, IS_SPOT, AXIS, COS_OUTER, COS_INNER, MAX_KINDS, BVH_STACK, RAY_STACK,
     ROW_SHIFT: Math.log2(ROW), ROW_MASK: ROW - 1,
     ...Object.fromEntries(Object.entries(SHAPE_CODES).map(([type, code]) => [type.toUpperCase(), code])),

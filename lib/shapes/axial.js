@@ -6,7 +6,7 @@
  */
 import { toVec3, Vec3 } from '../vec3.js';
 import { finiteNumber, bool } from '../check.js';
-import { Material, shapeOptions } from '../material.js';
+import { Material, shapeOptions, materialOptions } from '../material.js';
 import { vector, materialToJSON } from './json.js';
 import { axialTriangles } from './tessellate.js';
 import { P, N } from './packed.js';
@@ -141,11 +141,6 @@ export function axialBounds(center, radius, height) {
 export function withCapped(material, capped) {
   if (capped === undefined) return material;
   return material === undefined ? { capped } : { ...materialOptions(material), capped };
-}
-
-/** A Material's options, to build it again with more options beside them. */
-function materialOptions(m) {
-  return { color: m.color, emission: m.emission, reflection: m.reflection, transparency: m.transparency, ior: m.ior, specular: m.specular, shininess: m.shininess };
 }
 
 /**

@@ -2,16 +2,14 @@
  * The pieces of scene JSON every shape writes the same way (lib/serialize.js
  * reads them back).
  */
+import { materialJSON } from '../material.js';
 
 /** A point or direction as `[x, y, z]`. */
 export function vector(v) {
   return [v.x, v.y, v.z];
 }
 
-/** A material as `{ color, emission, reflection, transparency, ior, specular, shininess }`. */
+/** A material as `{ color, emission, reflection, transparency, ior, specular, shininess }` (its fields: lib/material.js MATERIAL_FIELDS). */
 export function materialToJSON(m) {
-  return {
-    color: [...m.color], emission: [...m.emission], reflection: m.reflection, transparency: m.transparency,
-    ior: m.ior, specular: m.specular, shininess: m.shininess,
-  };
+  return materialJSON(m);
 }

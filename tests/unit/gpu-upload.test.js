@@ -6,7 +6,8 @@ import { describe, it, expect } from 'vitest';
 import { classScene, Scene, Sphere, Mesh, Triangle, PointLight, Camera, renderGPU } from '../../lib/index.js';
 import { gpuScene, inRows } from '../../lib/gpu/upload.js';
 import { packScene } from '../../lib/kernel.js';
-import { LIGHT } from '../../lib/lights/packed.js';
+import { LIGHT, LIGHT_EMISSION } from '../../lib/lights/packed.js';
+import { MATERIAL_NUMBERS, MATERIAL_AT } from '../../lib/material.js';
 import { SHAPE, KIND } from '../../lib/shapes/packed.js';
 import { SHAPE_CODES, ROW, kernelSource } from '../../lib/gpu/glsl-kernel.js';
 
@@ -56,6 +57,9 @@ describe('gpuScene: the packed scene as float32', () => {
     const source = kernelSource();
     expect(source).toContain(`#define SHAPE ${SHAPE}`);
     expect(source).toContain(`#define LIGHT ${LIGHT}\n`);
+    expect(source).toContain(`#define LIGHT_EMISSION ${LIGHT_EMISSION}\n`);
+    expect(source).toContain(`#define MATERIAL ${MATERIAL_NUMBERS}\n`);
+    expect(source).toContain(`#define SHININESS ${MATERIAL_AT.shininess}\n`);
     expect(source).toContain('#define HAS_MESH 1');
     expect(kernelSource(false)).toContain('#define HAS_MESH 0');
   });

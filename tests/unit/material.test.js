@@ -1,5 +1,9 @@
 import { describe, it, expect } from 'vitest';
-import { Material, Sphere, Plane, Box, PointLight } from '../../lib/index.js';
+import { Material, Sphere, Plane, Box, PointLight, Scene } from '../../lib/index.js';
+import { MATERIAL_FIELDS, MATERIAL_NUMBERS, MATERIAL_AT, packMaterial } from '../../lib/material.js';
+import { materialToJSON } from '../../lib/shapes/json.js';
+import { sceneFromJSON, sceneToCode } from '../../lib/serialize.js';
+import { packScene } from '../../lib/kernel.js';
 
 describe('Material', () => {
   it('defaults: white, no emission, no reflection, no transparency', () => {
@@ -90,5 +94,33 @@ describe('a shape or light named in its constructor', () => {
     expect(() => new Sphere([0, 0, 0], 1, { name: 7 })).toThrow(/name must be text, got 7/);
     expect(() => new Sphere([0, 0, 0], 1, { nmae: 'ball' })).toThrow('unknown material option "nmae" (did you mean "name"?)');
     expect(() => new PointLight([0, 0, 0], { name: null })).toThrow(/name must be text/);
+  });
+});
+
+describe('one table of material fields (MATERIAL_FIELDS)', () => {
+  const m = new Material({ color: [0.1, 0.2, 0.3], emission: [0.4, 0.5, 0.6], reflection: 0.7, transparency: 0.8, ior: 1.5, specular: 0.9, shininess: 20 });
+  const names = MATERIAL_FIELDS.map((field) => field.name);
+
+  it('is what a Material has, in its order, each field checked by its row', () => {
+    expect(Object.keys(new Material())).toEqual(names);
+    for (const { name, value } of MATERIAL_FIELDS) expect(new Material()[name]).toEqual(value);
+    expect(() => new Material({ ior: 5 })).toThrow('ior must be between 1 and 4, got 5');
+  });
+
+  it('is what JSON writes and reads, and what the code leaves out as defaults', () => {
+    expect(Object.keys(materialToJSON(m))).toEqual(names);
+    expect(() => sceneFromJSON({ objects: [{ type: 'sphere', center: [0, 0, 0], radius: 1, material: { shine: 3 } }] }))
+      .toThrow(`objects[0].material has no field "shine" (its fields: ${names.join(', ')})`);
+    expect(sceneToCode(new Scene().add(new Sphere([0, 0, -5], 1, { ior: 1.1, shininess: 20 })))).toContain('new Sphere([0, 0, -5], 1, { shininess: 20 })');
+  });
+
+  it('is what the packed scene holds, at MATERIAL_AT, MATERIAL_NUMBERS a material', () => {
+    const out = new Float64Array(MATERIAL_NUMBERS);
+    packMaterial(m, out, 0);
+    expect(MATERIAL_NUMBERS).toBe(11);
+    expect([...out.slice(MATERIAL_AT.emission, MATERIAL_AT.emission + 3)]).toEqual([0.4, 0.5, 0.6]);
+    expect([out[MATERIAL_AT.reflection], out[MATERIAL_AT.transparency], out[MATERIAL_AT.ior], out[MATERIAL_AT.specular], out[MATERIAL_AT.shininess]]).toEqual([0.7, 0.8, 1.5, 0.9, 20]);
+    const packed = packScene(new Scene().add(new Sphere([0, 0, -5], 1, m)));
+    expect([...packed.materials]).toEqual([...out]);
   });
 });
