@@ -52,7 +52,7 @@ export function render(scene, camera, target, rows) {
  * What rendering a frame of this scene works out once, before any pixel: the
  * shapes that can be under each tile (lib/bounds.js) and the scene packed for
  * the fast path (lib/kernel.js; null when a shape is not a plain listed shape
- * with a packed form, or a light is a spot light), with tile t's shapes as indices into it, `candidates[starts[t] …
+ * with a packed form: every light packs), with tile t's shapes as indices into it, `candidates[starts[t] …
  * starts[t + 1])`. Good until the scene or camera changes: a worker prepares
  * once per change, then renders band after band.
  * @returns {{ columns: number, lists: object[][], packed: import('./kernel.js').PackedScene|null, candidates: Int32Array|null, starts: Int32Array|null }}
