@@ -268,7 +268,8 @@ function lightPoint(k, object, out) {
       ? shadowRay(k, Px + Nx * bias, Py + Ny * bias, Pz + Nz * bias, Lx, Ly, Lz, distance - bias, l / LIGHT)
       : 1) * beam;
     if (transmission === 0) continue;
-    const reach = transmission * falloff(lights[l + ATTENUATION], distance);
+    const attenuation = lights[l + ATTENUATION];
+    const reach = attenuation === 0 ? transmission : transmission * falloff(attenuation, distance); // falloff(0, d) is exactly 1: no division for a light that does not fade
     const diffuse = cos * reach;
     const highlight = k.specular
       ? specular(mat[m + SPECULAR], mat[m + SHININESS], cos, Lx, Ly, Lz, Nx, Ny, Nz, surface[D], surface[D + 1], surface[D + 2]) * reach
