@@ -79,7 +79,10 @@ export class PointLight {
     return { type: 'pointLight', name: this.name ?? '', position: vector(this.position), color: [...this.color], intensity: this.intensity, ...fading(this.attenuation) };
   }
 
-  /** The scene's light sources for it: one, itself. */
+  /**
+   * The scene's light sources for it: one, itself.
+   * @returns {{ position: import('./vec3.js').Vec3, emission: number[], object: null, source: PointLight, attenuation: number }[]}
+   */
   sources() {
     return [{ position: this.position, emission: this.emission, object: null, source: this, attenuation: this.attenuation }];
   }
