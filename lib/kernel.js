@@ -16,15 +16,35 @@
  * and normal in numbers (its static `packed`, layout in lib/shapes/packed.js).
  */
 import { plainClassOf, ballOf } from './shapes/index.js';
-import { SHAPE, KIND, P, N, scratchNumbers, sideTables } from './shapes/packed.js';
-import { LIGHT, LIGHT_EMISSION, LIGHT_SHAPE, ATTENUATION, IS_SPOT, AXIS, COS_OUTER, COS_INNER, packSource } from './lights/packed.js';
+import * as shapeLayout from './shapes/packed.js';
+import { scratchNumbers, sideTables, checkCopies } from './shapes/packed.js';
+import * as lightLayout from './lights/packed.js';
+import { packSource } from './lights/packed.js';
 import { reflectInto } from './vec3.js';
 import { MATERIAL_NUMBERS, MATERIAL_AT, packMaterial } from './material.js';
 import { lambert, specular, lightShare, spotShare, falloff, refract, fresnel as fresnelShare, mix } from './optics.js';
 
-/** Numbers per material, and where each field lies among them (lib/material.js's table: r g b, emission r g b, reflection, transparency, ior, specular, shininess). */
-const MATERIAL = MATERIAL_NUMBERS;
-const { emission: EMISSION, reflection: REFLECTION, transparency: TRANSPARENCY, ior: IOR, specular: SPECULAR, shininess: SHININESS } = MATERIAL_AT;
+/*
+ * The packed layout's offsets, as literals. The modules named here own them
+ * (the GPU engine reads them there); the loops below run on copies because V8
+ * folds a module's own literal into them but reads an imported number from its
+ * module at every use (render() of the class scene 6–7 % slower).
+ * checkCopies throws at load when a copy and its owner part.
+ */
+/** lib/shapes/packed.js: numbers per shape, where its kind lies; P and N in `surface`. */
+const SHAPE = 7, KIND = 6, P = 0, N = 3;
+/** lib/lights/packed.js: numbers per light source, and where each of its fields lies. */
+const LIGHT = 14, LIGHT_EMISSION = 3, LIGHT_SHAPE = 6, ATTENUATION = 7, IS_SPOT = 8, AXIS = 9, COS_OUTER = 12, COS_INNER = 13;
+/** lib/material.js's table: numbers per material (r g b, emission r g b, reflection, transparency, ior, specular, shininess), where each field lies. */
+const MATERIAL = 11, EMISSION = 3, REFLECTION = 6, TRANSPARENCY = 7, IOR = 8, SPECULAR = 9, SHININESS = 10;
+checkCopies({ SHAPE, KIND, P, N }, shapeLayout, 'lib/shapes/packed.js');
+checkCopies({ LIGHT, LIGHT_EMISSION, LIGHT_SHAPE, ATTENUATION, IS_SPOT, AXIS, COS_OUTER, COS_INNER }, lightLayout, 'lib/lights/packed.js');
+checkCopies({ MATERIAL, EMISSION, REFLECTION, TRANSPARENCY, IOR, SPECULAR, SHININESS }, materialLayout(), 'lib/material.js');
+
+/** lib/material.js's layout by the names the kernel and the shader use: MATERIAL, EMISSION, … SHININESS. */
+function materialLayout() {
+  return { MATERIAL: MATERIAL_NUMBERS, ...Object.fromEntries(Object.entries(MATERIAL_AT).map(([name, at]) => [name.toUpperCase(), at])) };
+}
 
 /** The deepest bounce a scene allows (Scene's maxDepth is 0–16), plus the primary ray. */
 const LEVELS = 17;

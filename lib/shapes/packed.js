@@ -32,6 +32,23 @@ export const sideTables = { current: [] };
 export const P = 0, N = 3;
 
 /**
+ * Checks a module's literal copies of layout offsets against the module that
+ * owns them, and throws at load when one differs, naming it. The hot loops
+ * (lib/kernel.js, a shape's numbers-only hit and normal) keep copies because
+ * V8 folds a module's own literal constant into them but reads an imported
+ * one from its module at every use: render() of the class scene ran 6–7 %
+ * slower on imported offsets (docs/performance.md).
+ * @param {Record<string, number>} copies the copies, by their owner's names
+ * @param {Record<string, any>} owner what the owning module exports
+ * @param {string} where the owning module, for the message
+ */
+export function checkCopies(copies, owner, where) {
+  for (const [name, value] of Object.entries(copies)) {
+    if (owner[name] !== value) throw new Error(`${name} is ${value} in a copy of ${where}'s layout, which says ${owner[name]}: change the copy`);
+  }
+}
+
+/**
  * Every number the kernel writes per pixel lives in one buffer of its own,
  * `GUARD` empty bytes from either end. Workers are threads of one process,
  * and in Chromium two workers' small buffers could lie side by side on one

@@ -8,7 +8,11 @@ import { shapeOptions } from '../material.js';
 import { EPSILON } from '../constants.js';
 import { vector, materialToJSON } from './json.js';
 import { xyz, share, SURFACE } from './form.js';
-import { P, N } from './packed.js';
+import * as layout from './packed.js';
+
+/** lib/shapes/packed.js's P and N, as literals for the numbers-only normal below (checkCopies says why). */
+const P = 0, N = 3;
+layout.checkCopies({ P, N }, layout, 'lib/shapes/packed.js');
 
 // Re-exported: EPSILON's public path (lib/index.js) has always been this module.
 export { EPSILON };
