@@ -7,7 +7,7 @@ import { toColor } from './color.js';
 import { numberInRange, show, checkOptions } from './check.js';
 
 /** The options a material takes. */
-const OPTIONS = ['color', 'emission', 'reflection', 'transparency', 'ior', 'specular', 'shininess'];
+const OPTIONS = ['color', 'emission', 'reflection', 'transparency', 'ior', 'specular', 'shininess', 'fuzz'];
 
 export class Material {
   /**
@@ -19,6 +19,7 @@ export class Material {
    * @param {number} [options.ior=1.1] index of refraction inside (the class library's 1.1)
    * @param {number} [options.specular=0] strength of the highlight, 0–1
    * @param {number} [options.shininess=50] highlight sharpness (Phong exponent), ≥ 1
+   * @param {number} [options.fuzz=0] how much a mirror blurs what it reflects, 0–1: the path tracer's metal (docs/path-tracing.md); Whitted's tracer ignores it
    * @example
    * const mirror = new Material({ color: [0.9, 0.9, 0.9], reflection: 0.8 });
    * const glass = new Material({ color: 'white', transparency: 0.9, ior: 1.5 });
@@ -30,7 +31,7 @@ export class Material {
     }
     const {
       color = [1, 1, 1], emission = 0, reflection = 0, transparency = 0,
-      ior = 1.1, specular = 0, shininess = 50,
+      ior = 1.1, specular = 0, shininess = 50, fuzz = 0,
     } = checkOptions(options, OPTIONS, 'material');
     this.color = toColor(color, 'color');
     this.emission = toColor(emission, 'emission');
@@ -39,6 +40,7 @@ export class Material {
     this.ior = numberInRange(ior, 'ior', 1, 4);
     this.specular = numberInRange(specular, 'specular', 0, 1);
     this.shininess = numberInRange(shininess, 'shininess', 1, 10000);
+    this.fuzz = numberInRange(fuzz, 'fuzz', 0, 1);
   }
 
   /** True when the material gives off light (it is then a light of the scene). */

@@ -72,8 +72,8 @@ function checkShape(o, path) {
 /** A shape's material, checked by the Material constructor; its colours made [r, g, b]. */
 function checkMaterial(m, path) {
   if (!(m instanceof Material)) throw new TypeError(`${path} must be a Material, got ${show(m)}`);
-  const { color, emission, reflection, transparency, ior, specular, shininess } = m;
-  withPath(() => new Material({ color, emission, reflection, transparency, ior, specular, shininess }), `${path}.`);
+  const { color, emission, reflection, transparency, ior, specular, shininess, fuzz = 0 } = m;
+  withPath(() => new Material({ color, emission, reflection, transparency, ior, specular, shininess, fuzz }), `${path}.`);
   m.color = asColor(m.color, `${path}.color`);
   m.emission = asColor(m.emission, `${path}.emission`);
   return m;

@@ -25,7 +25,7 @@ import { vector } from './shapes/json.js';
 import { checkOptions, show, withPath as named } from './check.js';
 
 const SCENE_FIELDS = ['background', 'ambient', 'shadows', 'bias', 'epsilon', 'maxDepth', 'specular', 'objects'];
-const MATERIAL_FIELDS = ['color', 'emission', 'reflection', 'transparency', 'ior', 'specular', 'shininess'];
+const MATERIAL_FIELDS = ['color', 'emission', 'reflection', 'transparency', 'ior', 'specular', 'shininess', 'fuzz'];
 const CAMERA_FIELDS = ['width', 'height', 'fov', 'position', 'yaw', 'pitch', 'samples'];
 
 /** The point light's JSON fields, and how to build it from them (each shape class says its own). */
@@ -308,7 +308,7 @@ export function objectFromJSON(given, path) {
 /* ---- to code ---- */
 
 const SCENE_DEFAULTS = { background: [0, 0, 0], ambient: 0, shadows: true, bias: 1e-4, epsilon: 1e-6, maxDepth: 5, specular: true };
-const MATERIAL_DEFAULTS = { color: [1, 1, 1], emission: [0, 0, 0], reflection: 0, transparency: 0, ior: 1.1, specular: 0, shininess: 50 };
+const MATERIAL_DEFAULTS = { color: [1, 1, 1], emission: [0, 0, 0], reflection: 0, transparency: 0, ior: 1.1, specular: 0, shininess: 50, fuzz: 0 };
 
 function sceneOptions(data) {
   return withoutDefaults(data, SCENE_DEFAULTS);
@@ -349,7 +349,7 @@ const isGrey = (c) => c[0] === c[1] && c[1] === c[2];
 function withoutDefaults(data, defaults) {
   const out = {};
   for (const [key, value] of Object.entries(defaults)) {
-    if (!same(data[key], value)) out[key] = data[key];
+    if (data[key] !== undefined && !same(data[key], value)) out[key] = data[key]; // (a field left out of the JSON: its default)
   }
   return out;
 }

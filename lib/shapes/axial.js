@@ -145,7 +145,7 @@ export function withCapped(material, capped) {
 
 /** A Material's options, to build it again with more options beside them. */
 function materialOptions(m) {
-  return { color: m.color, emission: m.emission, reflection: m.reflection, transparency: m.transparency, ior: m.ior, specular: m.specular, shininess: m.shininess };
+  return { color: m.color, emission: m.emission, reflection: m.reflection, transparency: m.transparency, ior: m.ior, specular: m.specular, shininess: m.shininess, fuzz: m.fuzz };
 }
 
 /**

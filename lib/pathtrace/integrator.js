@@ -1,0 +1,243 @@
+/**
+ * One path, one sample of a pixel's light: the integrator of a path tracer,
+ * read top to bottom.
+ *   1. a ray from the eye through a random point of the pixel;
+ *   2. at each hit: add the light the surface gives off, times the path's
+ *      throughput (how much of the light found later reaches the eye);
+ *   3. bounce (materials.js draws the new direction) and multiply the
+ *      throughput by the bounce's weight;
+ *   4. a path that leaves the scene gathers the sky;
+ *   5. after ROULETTE_FROM bounces, Russian roulette: the path goes on with
+ *      probability q (its brightest throughput channel) and, if it does,
+ *      its throughput is divided by q, so that on average nothing is lost.
+ * `maxBounces` stops a path outright: with 1, light that bounced once (direct light only).
+ *
+ * `tracePath` writes the sample's light into `radiance` and allocates nothing;
+ * given a `record` list it also pushes each bounce's story (inspectPath's).
+ */
+import { Ray } from '../ray.js';
+import { Vec3 } from '../vec3.js';
+import { scatter, P, N, D, INSIDE, SURFACE, DIRECTION, WEIGHT, PDF, LOBE, BELOW, EVENT, DIFFUSE, ABSORBED, LOBE_NAMES } from './materials.js';
+import { skyLight } from './sky.js';
+import { pathNumbers } from './scratch.js';
+import { SHAPE, sideTables } from '../shapes/packed.js';
+import { Sphere } from '../shapes/sphere.js';
+import { Plane } from '../shapes/plane.js';
+import { Box } from '../shapes/box.js';
+
+/** Bounces before Russian roulette may end a path. */
+export const ROULETTE_FROM = 3;
+
+const ray = new Ray();
+const surface = pathNumbers(SURFACE);
+const event = pathNumbers(EVENT);
+/** The path's throughput and the light it has gathered so far, r g b each. */
+const throughput = pathNumbers(3);
+/** The light of the last traced sample, [r, g, b] (read it before the next call). */
+export const radiance = pathNumbers(3);
+
+/** Scratch: the uniform numbers of the pixel's jitter and of the roulette. */
+const u = pathNumbers(2);
+
+/**
+ * Traces sample `s` of pixel (x, y): its light into `radiance`.
+ * @param {object} frame what pathTrace prepared: `{ scene, camera, objects, packed, groups, sky, maxBounces, roulette, seed, random }`
+ * @param {object[]} [record] filled with the bounces and `record.end`, when given
+ */
+export function tracePath(frame, x, y, s, record) {
+  const { random, objects, sky, maxBounces } = frame, bias = frame.scene.bias;
+  if (frame.packed) sideTables.current = frame.packed.tables; // a triangle's or a mesh's numbers
+  random.start(frame.seed, x, y, s);
+  random.draw(u, 2);
+  primaryRay(frame.camera, x, y); // through a random point of the pixel: smooth edges
+  const o = ray.origin, d = ray.direction;
+  throughput[0] = throughput[1] = throughput[2] = 1;
+  radiance[0] = radiance[1] = radiance[2] = 0;
+  if (record) record.ray = { origin: new Vec3(o.x, o.y, o.z), direction: new Vec3(d.x, d.y, d.z) };
+
+  for (let bounce = 0; ; bounce++) {
+    const index = nearestHit(frame);
+    if (index < 0) { // the path leaves the scene: the sky's light, blended from bottom to top (sky.js)
+      const t = 0.5 * (d.y + 1);
+      for (let c = 0; c < 3; c++) radiance[c] += throughput[c] * (t * sky[c] + (1 - t) * sky[c + 3]);
+      if (record) endRecord(record, 'sky', sky, d.y);
+      return;
+    }
+    surfaceAt(frame, index);
+    const object = objects[index], { material } = object, glow = material.emission;
+    for (let c = 0; c < 3; c++) radiance[c] += throughput[c] * glow[c];
+    const bounceRecord = record ? recordHit(record, frame, object) : null;
+    if (bounce >= maxBounces) return endRecord(record, 'maxBounces');
+
+    scatter(material, random, surface, event);
+    if (event[LOBE] === ABSORBED) return endRecord(record, 'absorbed', null, 0, bounceRecord);
+    for (let c = 0; c < 3; c++) throughput[c] *= event[WEIGHT + c];
+    const brightest = Math.max(throughput[0], throughput[1], throughput[2]);
+    if (brightest <= 0) return endRecord(record, 'absorbed', null, 0, bounceRecord);
+    let survival = 1;
+    if (frame.roulette && bounce + 1 >= ROULETTE_FROM && brightest < 1) {
+      survival = brightest;
+      random.draw(u, 1);
+      if (u[0] >= survival) return endRecord(record, 'roulette', null, 0, bounceRecord, survival);
+      for (let c = 0; c < 3; c++) throughput[c] /= survival; // the survivors carry the paths that ended: unbiased
+    }
+    if (bounceRecord) recordBounce(bounceRecord, survival);
+    const offset = event[BELOW] === 1 ? -bias : bias; // start off the surface, on the side the path goes
+    o.x = surface[P] + surface[N] * offset; o.y = surface[P + 1] + surface[N + 1] * offset; o.z = surface[P + 2] + surface[N + 2] * offset;
+    d.x = event[DIRECTION]; d.y = event[DIRECTION + 1]; d.z = event[DIRECTION + 2];
+  }
+}
+
+/**
+ * The eye's ray through the point (x + u[0], y + u[1]) of the picture (pixel
+ * x spans x … x + 1), into `ray`: camera.directionAt's formula, whose pixel
+ * centre is x + ½, here with the point's own numbers (they vary per sample).
+ */
+function primaryRay(camera, x, y) {
+  const px = x + u[0], py = y + u[1];
+  const sx = (2 * px / camera.width - 1) * camera.halfWidth;
+  const sy = (1 - 2 * py / camera.height) * camera.halfHeight;
+  const r = camera.right, up = camera.up, f = camera.forward, e = camera.position, o = ray.origin, d = ray.direction;
+  const dx = sx * r.x + sy * up.x + f.x, dy = sx * r.y + sy * up.y + f.y, dz = sx * r.z + sy * up.z + f.z;
+  const length = Math.sqrt(dx * dx + dy * dy + dz * dz);
+  d.x = dx / length; d.y = dy / length; d.z = dz / length;
+  o.x = e.x; o.y = e.y; o.z = e.z;
+}
+
+/**
+ * The nearest shape along `ray` past the scene's epsilon, its t kept in
+ * `surface[P]` for surfaceAt; -1 for none. When the scene packs
+ * (lib/kernel.js), each kind of shape is tested in numbers (the same t, bit
+ * for bit) by a loop of its own: a call V8 does not inline boxes the numbers
+ * it passes and returns, and one loop calling several shapes' tests is more
+ * than V8 inlines (some 400 bytes a path in a scene of spheres, planes and boxes).
+ */
+function nearestHit(frame) {
+  nearest[0] = Infinity; nearest[1] = -1;
+  const groups = frame.groups;
+  if (groups === null) anyShapes(frame);
+  else {
+    if (groups.spheres.length) spheres(frame, groups.spheres);
+    if (groups.planes.length) planes(frame, groups.planes);
+    if (groups.boxes.length) boxes(frame, groups.boxes);
+    if (groups.others.length) others(frame, groups.others);
+  }
+  surface[P] = nearest[0];
+  return nearest[1];
+}
+
+/** The nearest t so far and its shape's index (shapes tested in scene order within a kind; the smaller index wins a tie, as in trace.js). */
+const nearest = pathNumbers(2);
+
+/** Spheres, planes and boxes: their own hit tests, each inlined in its loop. */
+function spheres(frame, list) {
+  const shapes = frame.packed.shapes, tMin = frame.scene.epsilon, o = ray.origin, d = ray.direction;
+  for (let n = 0; n < list.length; n++) {
+    const t = sphereHit(shapes, list[n] * SHAPE, o.x, o.y, o.z, d.x, d.y, d.z, tMin), i = list[n];
+    if (t < nearest[0] || (t === nearest[0] && t < Infinity && i < nearest[1])) { nearest[0] = t; nearest[1] = i; } // a tie: the earlier shape, as trace.js
+  }
+}
+function planes(frame, list) {
+  const shapes = frame.packed.shapes, tMin = frame.scene.epsilon, o = ray.origin, d = ray.direction;
+  for (let n = 0; n < list.length; n++) {
+    const t = planeHit(shapes, list[n] * SHAPE, o.x, o.y, o.z, d.x, d.y, d.z, tMin), i = list[n];
+    if (t < nearest[0] || (t === nearest[0] && t < Infinity && i < nearest[1])) { nearest[0] = t; nearest[1] = i; } // a tie: the earlier shape, as trace.js
+  }
+}
+function boxes(frame, list) {
+  const shapes = frame.packed.shapes, tMin = frame.scene.epsilon, o = ray.origin, d = ray.direction;
+  for (let n = 0; n < list.length; n++) {
+    const t = boxHit(shapes, list[n] * SHAPE, o.x, o.y, o.z, d.x, d.y, d.z, tMin), i = list[n];
+    if (t < nearest[0] || (t === nearest[0] && t < Infinity && i < nearest[1])) { nearest[0] = t; nearest[1] = i; } // a tie: the earlier shape, as trace.js
+  }
+}
+/** Cylinders, cones, triangles, meshes: the kernel's test of any kind. */
+function others(frame, list) {
+  const packed = frame.packed, tMin = frame.scene.epsilon, o = ray.origin, d = ray.direction;
+  for (let n = 0; n < list.length; n++) {
+    const t = packed.hit(packed.shapes, list[n] * SHAPE, o.x, o.y, o.z, d.x, d.y, d.z, tMin), i = list[n];
+    if (t < nearest[0] || (t === nearest[0] && t < Infinity && i < nearest[1])) { nearest[0] = t; nearest[1] = i; } // a tie: the earlier shape, as trace.js
+  }
+}
+/** A scene that does not pack (a shape of a sketch's own): each shape's own `hit`. */
+function anyShapes(frame) {
+  const objects = frame.objects, tMin = frame.scene.epsilon;
+  for (let i = 0; i < objects.length; i++) {
+    const t = objects[i].hit(ray, tMin);
+    if (t < nearest[0]) { nearest[0] = t; nearest[1] = i; }
+  }
+}
+
+const sphereHit = Sphere.packed.hit, planeHit = Plane.packed.hit, boxHit = Box.packed.hit;
+
+/**
+ * The scene's shapes by kind, as indices for nearestHit's loops, or null
+ * when the scene does not pack (each shape's own `hit` then).
+ * @returns {{ spheres: Int32Array, planes: Int32Array, boxes: Int32Array, others: Int32Array }|null}
+ */
+export function shapeGroups(objects, packed) {
+  if (!packed) return null;
+  const of = (Shape) => Int32Array.from(objects.keys()).filter((i) => objects[i].constructor === Shape);
+  const known = new Set([Sphere, Plane, Box]);
+  return {
+    spheres: of(Sphere), planes: of(Plane), boxes: of(Box),
+    others: Int32Array.from(objects.keys()).filter((i) => !known.has(objects[i].constructor)),
+  };
+}
+
+const point = new Vec3(), normal = new Vec3();
+
+/** The hit point, the unit normal turned to face the ray, the ray's direction, and whether it came from inside, into `surface`. */
+function surfaceAt(frame, index) {
+  const o = ray.origin, d = ray.direction, t = surface[P];
+  surface[P] = o.x + d.x * t; surface[P + 1] = o.y + d.y * t; surface[P + 2] = o.z + d.z * t;
+  if (frame.packed) frame.packed.normal(frame.packed.shapes, index * SHAPE, surface); // reads P, writes N
+  else {
+    point.x = surface[P]; point.y = surface[P + 1]; point.z = surface[P + 2];
+    frame.objects[index].normalAt(point, normal);
+    surface[N] = normal.x; surface[N + 1] = normal.y; surface[N + 2] = normal.z;
+  }
+  const inside = d.x * surface[N] + d.y * surface[N + 1] + d.z * surface[N + 2] > 0;
+  if (inside) { surface[N] = -surface[N]; surface[N + 1] = -surface[N + 1]; surface[N + 2] = -surface[N + 2]; } // the side the ray sees
+  surface[D] = d.x; surface[D + 1] = d.y; surface[D + 2] = d.z;
+  surface[INSIDE] = inside ? 1 : 0;
+}
+
+/* ---- the inspector's record (only built when `record` is given) ---- */
+
+const triple = (a, at = 0) => [a[at], a[at + 1], a[at + 2]];
+
+/** A hit: where, facing which way, and the light it gives off toward the eye (throughput × emission). */
+function recordHit(record, frame, object) {
+  const entry = {
+    object, index: frame.scene.objects.indexOf(object),
+    point: new Vec3(surface[P], surface[P + 1], surface[P + 2]), normal: new Vec3(surface[N], surface[N + 1], surface[N + 2]),
+    inside: surface[INSIDE] === 1,
+    emitted: object.material.emission.map((e, c) => throughput[c] * e),
+    lobe: null, direction: null, pdf: null, weight: null, throughput: null,
+  };
+  record.push(entry);
+  return entry;
+}
+
+/** The bounce drawn at that hit: the lobe, the new direction and its density, the weight, the throughput after it (and the roulette's q). */
+function recordBounce(entry, survival) {
+  entry.lobe = LOBE_NAMES[event[LOBE]];
+  entry.direction = new Vec3(event[DIRECTION], event[DIRECTION + 1], event[DIRECTION + 2]);
+  entry.pdf = event[PDF];
+  entry.delta = event[LOBE] !== DIFFUSE; // a mirror or glass direction: its pdf is the probability of choosing the lobe
+  entry.weight = triple(event, WEIGHT);
+  entry.throughput = triple(throughput);
+  if (survival < 1) entry.survival = survival;
+}
+
+/** How the path ended; a path that left gathers the sky (times the throughput). */
+function endRecord(record, why, sky = null, dy = 0, entry = null, survival = 1) {
+  if (!record) return;
+  if (entry) {
+    recordBounce(entry, survival);
+    if (why === 'roulette') entry.throughput = [0, 0, 0];
+  }
+  record.end = why;
+  record.sky = sky ? [0, 1, 2].map((c) => throughput[c] * skyLight(sky, c, dy)) : [0, 0, 0];
+}
