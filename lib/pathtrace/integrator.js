@@ -17,7 +17,7 @@
  */
 import { Ray } from '../ray.js';
 import { Vec3 } from '../vec3.js';
-import { scatter, P, N, D, INSIDE, SURFACE, DIRECTION, WEIGHT, PDF, LOBE, BELOW, EVENT, DIFFUSE, ABSORBED, LOBE_NAMES } from './materials.js';
+import { scatter, MATERIAL, EMISSION, P, N, D, INSIDE, SURFACE, DIRECTION, WEIGHT, PDF, LOBE, BELOW, EVENT, DIFFUSE, ABSORBED, LOBE_NAMES } from './materials.js';
 import { skyLight } from './sky.js';
 import { pathNumbers } from './scratch.js';
 import { SHAPE, sideTables } from '../shapes/packed.js';
@@ -41,7 +41,7 @@ const u = pathNumbers(2);
 
 /**
  * Traces sample `s` of pixel (x, y): its light into `radiance`.
- * @param {object} frame what pathTrace prepared: `{ scene, camera, objects, packed, groups, sky, maxBounces, roulette, seed, random }`
+ * @param {object} frame what pathTrace prepared: `{ scene, camera, objects, materials, packed, groups, sky, maxBounces, roulette, seed, random }`
  * @param {object[]} [record] filled with the bounces and `record.end`, when given
  */
 export function tracePath(frame, x, y, s, record) {
@@ -55,37 +55,40 @@ export function tracePath(frame, x, y, s, record) {
   radiance[0] = radiance[1] = radiance[2] = 0;
   if (record) record.ray = { origin: new Vec3(o.x, o.y, o.z), direction: new Vec3(d.x, d.y, d.z) };
 
+  let why = 'maxBounces', survival = 1, bounceRecord = null;
   for (let bounce = 0; ; bounce++) {
     const index = nearestHit(frame);
     if (index < 0) { // the path leaves the scene: the sky's light, blended from bottom to top (sky.js)
       const t = 0.5 * (d.y + 1);
       for (let c = 0; c < 3; c++) radiance[c] += throughput[c] * (t * sky[c] + (1 - t) * sky[c + 3]);
-      if (record) endRecord(record, 'sky', sky, d.y);
-      return;
+      why = 'sky';
+      break;
     }
     surfaceAt(frame, index);
-    const object = objects[index], { material } = object, glow = material.emission;
-    for (let c = 0; c < 3; c++) radiance[c] += throughput[c] * glow[c];
-    const bounceRecord = record ? recordHit(record, frame, object) : null;
-    if (bounce >= maxBounces) return endRecord(record, 'maxBounces');
+    const materials = frame.materials, m = index * MATERIAL, glow = m + EMISSION;
+    for (let c = 0; c < 3; c++) radiance[c] += throughput[c] * materials[glow + c];
+    if (record) bounceRecord = recordHit(record, frame, objects[index]);
+    if (bounce >= maxBounces) break;
 
-    scatter(material, random, surface, event);
-    if (event[LOBE] === ABSORBED) return endRecord(record, 'absorbed', null, 0, bounceRecord);
+    scatter(materials, m, random, surface, event);
+    if (event[LOBE] === ABSORBED) { why = 'absorbed'; break; }
     for (let c = 0; c < 3; c++) throughput[c] *= event[WEIGHT + c];
     const brightest = Math.max(throughput[0], throughput[1], throughput[2]);
-    if (brightest <= 0) return endRecord(record, 'absorbed', null, 0, bounceRecord);
-    let survival = 1;
+    if (brightest <= 0) { why = 'absorbed'; break; }
+    survival = 1;
     if (frame.roulette && bounce + 1 >= ROULETTE_FROM && brightest < 1) {
       survival = brightest;
       random.draw(u, 1);
-      if (u[0] >= survival) return endRecord(record, 'roulette', null, 0, bounceRecord, survival);
+      if (u[0] >= survival) { why = 'roulette'; break; }
       for (let c = 0; c < 3; c++) throughput[c] /= survival; // the survivors carry the paths that ended: unbiased
     }
-    if (bounceRecord) recordBounce(bounceRecord, survival);
+    if (record) recordBounce(bounceRecord, survival);
+    bounceRecord = null;
     const offset = event[BELOW] === 1 ? -bias : bias; // start off the surface, on the side the path goes
     o.x = surface[P] + surface[N] * offset; o.y = surface[P + 1] + surface[N + 1] * offset; o.z = surface[P + 2] + surface[N + 2] * offset;
     d.x = event[DIRECTION]; d.y = event[DIRECTION + 1]; d.z = event[DIRECTION + 2];
   }
+  if (record) endRecord(record, why, bounceRecord, survival, sky, d.y);
 }
 
 /**
@@ -169,6 +172,15 @@ function anyShapes(frame) {
 }
 
 const sphereHit = Sphere.packed.hit, planeHit = Plane.packed.hit, boxHit = Box.packed.hit;
+const sphereNormal = Sphere.packed.normal, planeNormal = Plane.packed.normal, boxNormal = Box.packed.normal;
+/** The kinds nearestHit and surfaceAt call the tests of from places of their own (`frame.kinds`), OTHER for the rest. */
+const SPHERE = 0, PLANE = 1, BOX = 2, OTHER = 3;
+
+/** Each shape's kind, as `frame.kinds` holds it. */
+export function shapeKinds(objects) {
+  const own = [Sphere, Plane, Box];
+  return Int32Array.from(objects, (o) => (own.includes(o.constructor) ? own.indexOf(o.constructor) : OTHER));
+}
 
 /**
  * The scene's shapes by kind, as indices for nearestHit's loops, or null
@@ -191,8 +203,14 @@ const point = new Vec3(), normal = new Vec3();
 function surfaceAt(frame, index) {
   const o = ray.origin, d = ray.direction, t = surface[P];
   surface[P] = o.x + d.x * t; surface[P + 1] = o.y + d.y * t; surface[P + 2] = o.z + d.z * t;
-  if (frame.packed) frame.packed.normal(frame.packed.shapes, index * SHAPE, surface); // reads P, writes N
-  else {
+  const packed = frame.packed;
+  if (packed) { // each kind's own normal in numbers (reads P, writes N), as nearestHit's own hit tests
+    const kind = frame.kinds[index], shapes = packed.shapes, at = index * SHAPE;
+    if (kind === SPHERE) sphereNormal(shapes, at, surface);
+    else if (kind === PLANE) planeNormal(shapes, at, surface);
+    else if (kind === BOX) boxNormal(shapes, at, surface);
+    else packed.normal(shapes, at, surface);
+  } else {
     point.x = surface[P]; point.y = surface[P + 1]; point.z = surface[P + 2];
     frame.objects[index].normalAt(point, normal);
     surface[N] = normal.x; surface[N + 1] = normal.y; surface[N + 2] = normal.z;
@@ -231,13 +249,12 @@ function recordBounce(entry, survival) {
   if (survival < 1) entry.survival = survival;
 }
 
-/** How the path ended; a path that left gathers the sky (times the throughput). */
-function endRecord(record, why, sky = null, dy = 0, entry = null, survival = 1) {
-  if (!record) return;
-  if (entry) {
+/** How the path ended: a bounce drawn at the last hit is told too (the roulette's zeroes its throughput); a path that left gathers the sky (times the throughput). */
+function endRecord(record, why, entry, survival, sky, dy) {
+  if (entry && why !== 'maxBounces') {
     recordBounce(entry, survival);
     if (why === 'roulette') entry.throughput = [0, 0, 0];
   }
   record.end = why;
-  record.sky = sky ? [0, 1, 2].map((c) => throughput[c] * skyLight(sky, c, dy)) : [0, 0, 0];
+  record.sky = why === 'sky' ? [0, 1, 2].map((c) => throughput[c] * skyLight(sky, c, dy)) : [0, 0, 0];
 }

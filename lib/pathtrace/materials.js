@@ -35,25 +35,42 @@ export const DIRECTION = 0, COS = 3, WEIGHT = 4, PDF = 7, LOBE = 8, BELOW = 9, E
 export const DIFFUSE = 0, METAL = 1, GLASS_MIRROR = 2, GLASS_THROUGH = 3, ABSORBED = -1;
 export const LOBE_NAMES = { [DIFFUSE]: 'diffuse', [METAL]: 'metal', [GLASS_MIRROR]: 'glass, mirrored', [GLASS_THROUGH]: 'glass, through', [ABSORBED]: 'absorbed' };
 
+/**
+ * The scene's materials in numbers, MATERIAL per shape in scene order: colour
+ * r g b, emission r g b, reflection, transparency, ior, fuzz. Read from a
+ * typed array, every number is a plain double; read from the Material
+ * objects, whose fields V8 stores as small integers in one and as doubles in
+ * another, they cost an allocation now and then in the hot loop.
+ */
+export const MATERIAL = 10;
+export const COLOR = 0, EMISSION = 3, REFLECTION = 6, TRANSPARENCY = 7, IOR = 8, FUZZ = 9;
+
+/** The materials of `objects`, packed (see MATERIAL). */
+export function packMaterials(objects) {
+  const packed = new Float64Array(objects.length * MATERIAL);
+  objects.forEach(({ material: m }, i) => packed.set([...m.color, ...m.emission, m.reflection, m.transparency, m.ior, m.fuzz ?? 0], i * MATERIAL));
+  return packed;
+}
+
 /** Scratch: the uniform numbers of a bounce (lobe, two for the direction, three for the fuzz), and the fuzz's point. */
 const u = new Float64Array(6), fuzzPoint = new Float64Array(3);
 
 /**
- * One bounce off `material` at the hit in `surface`, drawn with `random`
- * (a PathRandom), into `event`.
+ * One bounce off the material at `materials[m …]` (packMaterials) at the hit
+ * in `surface`, drawn with `random` (a PathRandom), into `event`.
  */
-export function scatter(material, random, surface, event) {
-  const { transparency: T, reflection: R, color } = material;
+export function scatter(materials, m, random, surface, event) {
+  const T = materials[m + TRANSPARENCY], R = materials[m + REFLECTION];
   random.draw(u, 6); // always six: each bounce starts its numbers at the same place in the sequence
-  event[WEIGHT] = color[0]; event[WEIGHT + 1] = color[1]; event[WEIGHT + 2] = color[2];
+  event[WEIGHT] = materials[m + COLOR]; event[WEIGHT + 1] = materials[m + COLOR + 1]; event[WEIGHT + 2] = materials[m + COLOR + 2];
   event[BELOW] = 0;
   const choose = u[0];
   if (choose < T) {
     event[PDF] = T;
-    glass(material, surface, event);
+    glass(materials, m, surface, event);
   } else if (choose < T + (1 - T) * R) {
     event[PDF] = (1 - T) * R;
-    metal(material, surface, event);
+    metal(materials, m, surface, event);
   } else {
     event[PDF] = (1 - T) * (1 - R);
     diffuse(surface, event);
@@ -68,23 +85,21 @@ function diffuse(surface, event) {
 }
 
 /** A metal: the mirror direction plus fuzz × a point in the unit ball, renormalised; below the surface the path is absorbed. */
-function metal(material, surface, event) {
+function metal(materials, m, surface, event) {
   const Nx = surface[N], Ny = surface[N + 1], Nz = surface[N + 2], dx = surface[D], dy = surface[D + 1], dz = surface[D + 2];
-  const twice = 2 * (dx * Nx + dy * Ny + dz * Nz), fuzz = material.fuzz ?? 0;
+  const twice = 2 * (dx * Nx + dy * Ny + dz * Nz), fuzz = materials[m + FUZZ];
   let x = dx - twice * Nx, y = dy - twice * Ny, z = dz - twice * Nz;
-  if (fuzz > 0) {
-    inUnitBall(fuzzPoint, 0, u, 3);
-    x += fuzz * fuzzPoint[0]; y += fuzz * fuzzPoint[1]; z += fuzz * fuzzPoint[2];
-  }
+  inUnitBall(fuzzPoint, 0, u, 3); // (drawn even without fuzz: one branch fewer)
+  x += fuzz * fuzzPoint[0]; y += fuzz * fuzzPoint[1]; z += fuzz * fuzzPoint[2];
   const length = Math.sqrt(x * x + y * y + z * z);
   event[DIRECTION] = x / length; event[DIRECTION + 1] = y / length; event[DIRECTION + 2] = z / length;
   event[LOBE] = x * Nx + y * Ny + z * Nz > 0 ? METAL : ABSORBED;
 }
 
 /** Glass: Schlick's share F mirrored (untinted), 1 − F refracted by Snell's law (tinted); all mirrored on total internal reflection. */
-function glass(material, surface, event) {
+function glass(materials, m, surface, event) {
   const Nx = surface[N], Ny = surface[N + 1], Nz = surface[N + 2], dx = surface[D], dy = surface[D + 1], dz = surface[D + 2];
-  const cosi = -(dx * Nx + dy * Ny + dz * Nz), ior = material.ior;
+  const cosi = -(dx * Nx + dy * Ny + dz * Nz), ior = materials[m + IOR];
   const eta = surface[INSIDE] === 1 ? ior : 1 / ior;
   const refracts = refract(event, DIRECTION, dx, dy, dz, Nx, Ny, Nz, cosi, eta);
   const F = refracts ? schlick(cosi, ior) : 1;

@@ -11,7 +11,8 @@ import { checkOptions, show, positiveInteger, bool, pixelCoordinate } from '../c
 import { packScene } from '../kernel.js';
 import { PathRandom } from './random.js';
 import { readSky } from './sky.js';
-import { tracePath, radiance, shapeGroups } from './integrator.js';
+import { packMaterials } from './materials.js';
+import { tracePath, radiance, shapeGroups, shapeKinds } from './integrator.js';
 
 /** The options pathTrace takes. */
 export const PATH_OPTIONS = ['samples', 'seed', 'maxBounces', 'sky', 'roulette'];
@@ -50,7 +51,7 @@ export function readPathOptions(options, scene, camera, where = 'pathTrace') {
  */
 export function preparePaths(scene, camera, options) {
   const packed = packScene(scene);
-  return { scene, camera, objects: scene.objects, packed, groups: shapeGroups(scene.objects, packed), random: new PathRandom(), ...options };
+  return { scene, camera, objects: scene.objects, materials: packMaterials(scene.objects), packed, groups: shapeGroups(scene.objects, packed), kinds: shapeKinds(scene.objects), random: new PathRandom(), ...options };
 }
 
 /**
