@@ -223,10 +223,10 @@ export class TracerView {
     if (!(this.#renderer instanceof PathProgressiveRenderer)) throw new TypeError('setPath: this view is not path traced (give createTracerView a path option)');
     return this.#change({ path });
   }
-  /** A path-traced view's samples so far and in all, `{ sample, samples }`, or null for a view that is not path traced. */
-  get pathSamples() {
+  /** A path-traced view's samples so far and in all and its path options, `{ sample, samples, options }`; null for a view that is not path traced. */
+  get pathState() {
     const r = this.#renderer;
-    return r instanceof PathProgressiveRenderer ? { sample: r.sample, samples: r.samples } : null;
+    return r instanceof PathProgressiveRenderer ? { sample: r.sample, samples: r.samples, options: { ...r.options } } : null;
   }
 
   /**
