@@ -369,7 +369,7 @@ export class TracerView {
   #showProgress() {
     const r = this.#renderer;
     const percent = r.done ? 100 : Math.min(99, Math.floor(r.progress * 100));
-    const text = r.progressText ?? `${percent}% · ${formatRate(r.raysPerSecond)} rays/s`;
+    const text = 'progressText' in r ? r.progressText : `${percent}% · ${formatRate(r.raysPerSecond)} rays/s`;
     if (text === this.#progressText) return;
     this.#progressText = text;
     this.progressFill.style.width = `${percent}%`;

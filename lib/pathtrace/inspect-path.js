@@ -30,9 +30,11 @@ const clamp01 = (v) => Math.min(1, Math.max(0, v));
  *   `survival` the roulette's q where it played; `end` 'sky', 'absorbed', 'roulette' or 'maxBounces';
  *   `mean` and `history` linear 0–1 (×255 is pathTrace's byte), `unclamped` the mean before clamping
  * @example
- * const path = inspectPath(scene, camera, 10, 12, { sample: 3, samples: 64 });
- * path.bounces.map((b) => b.lobe); // ['diffuse', 'diffuse', …]: what each surface did
- * path.mean; // [r, g, b]: the pixel's estimate after 64 samples, ×255 = pathTrace(…, { samples: 64 })'s bytes
+ * const scene = new Scene({ background: [0.5, 0.5, 0.5] }).add(new Sphere([0, 0, -10], 2, { color: [0.8, 0.8, 0.8] }));
+ * const camera = new Camera({ width: 32, height: 24 });
+ * const path = inspectPath(scene, camera, 16, 12, { sample: 3, samples: 64 });
+ * path.bounces.map((b) => b.lobe); // ['diffuse']: the ball, then the sky
+ * path.mean; // [0.4, 0.4, 0.4]: the pixel's estimate after 64 samples, ×255 = pathTrace(…, { samples: 64 })'s bytes
  */
 export function inspectPath(scene, camera, x, y, options = {}) {
   checkSceneAndCamera(scene, camera);
@@ -43,6 +45,7 @@ export function inspectPath(scene, camera, x, y, options = {}) {
   const samples = rest.samples ?? sample + 1;
   const frame = preparePaths(scene, camera, readPathOptions({ ...rest, samples }, scene, camera, 'inspectPath'));
 
+  /** @type {any} */
   const bounces = [];
   tracePath(frame, x, y, sample, bounces);
   const story = { radiance: [...radiance], ray: bounces.ray, end: bounces.end, sky: bounces.sky };

@@ -42,7 +42,7 @@ const u = pathNumbers(2);
 /**
  * Traces sample `s` of pixel (x, y): its light into `radiance`.
  * @param {object} frame what pathTrace prepared: `{ scene, camera, objects, materials, packed, groups, sky, maxBounces, roulette, seed, random }`
- * @param {object[]} [record] filled with the bounces and `record.end`, when given
+ * @param {any} [record] a list filled with the bounces, and given `ray`, `end` and `sky`, when given
  */
 export function tracePath(frame, x, y, s, record) {
   const { random, objects, sky, maxBounces } = frame, bias = frame.scene.bias;

@@ -52,6 +52,9 @@ export class PathProgressiveRenderer {
     this.problem = null;
     /** For the tracer view's engines (lib/p5/engines.js): this picture is path traced, on the CPU. */
     this.pathTraced = true;
+    /** As a ProgressiveRenderer's slow motion (which a path-traced picture has not): unused. */
+    this.slowRaysPerStep = 1;
+    this.slowRaysPerSecond = 0;
     this.restart({ scene, camera, path });
   }
 
