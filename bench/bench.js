@@ -12,8 +12,9 @@
  * nothing); and bench/reference.c, the work of (a) in C, compiled with
  * `cc -O3 -march=native` when a compiler is present (else it says skipped),
  * timed alternately with render() and compared byte for byte: it prints both
- * and the ratio (today's figures: docs/performance.md). Last, bench/bvh.js:
- * the mesh BVH's per-ray cost at 1k and 100k triangles, and a frame of the bunny.
+ * and the ratio (today's figures: docs/performance.md). Then bench/bvh.js:
+ * the mesh BVH's per-ray cost at 1k and 100k triangles, and a frame of the bunny. Last,
+ * bench/paths.js: path tracing's samples per second per core at 320×240, and bytes per sample.
  *
  * Today's figures, the conditions they were taken in (load average), and
  * what was tried and measured on the way (tiles, culling shadow rays, Math.pow)
@@ -241,3 +242,7 @@ console.log(`\nload average ${startLoad.toFixed(1)} at the start, ${loadavg()[0]
 // Meshes: the BVH's scaling (1k vs 100k triangles) and a frame of the bunny (bench/bvh.js).
 const { runBvhBench } = await import('./bvh.js');
 runBvhBench();
+
+// Path tracing: samples per second per core at 320×240 and the heap per sample (bench/paths.js).
+const { runPathBench } = await import('./paths.js');
+runPathBench();

@@ -28,6 +28,13 @@ import { Box } from '../shapes/box.js';
 /** Bounces before Russian roulette may end a path. */
 export const ROULETTE_FROM = 3;
 
+/**
+ * The ray being followed, origin x y z then direction x y z, in numbers: a
+ * Vec3's fields are boxed by V8 (a new number each write) once any Vec3 has
+ * held a non-number, so the hot loop keeps its ray here; `ray` is its copy
+ * for a shape of a sketch's own, whose `hit` takes a Ray.
+ */
+const path = pathNumbers(6);
 const ray = new Ray();
 const surface = pathNumbers(SURFACE);
 const event = pathNumbers(EVENT);
@@ -50,16 +57,15 @@ export function tracePath(frame, x, y, s, record) {
   random.start(frame.seed, x, y, s);
   random.draw(u, 2);
   primaryRay(frame.camera, x, y); // through a random point of the pixel: smooth edges
-  const o = ray.origin, d = ray.direction;
   throughput[0] = throughput[1] = throughput[2] = 1;
   radiance[0] = radiance[1] = radiance[2] = 0;
-  if (record) record.ray = { origin: new Vec3(o.x, o.y, o.z), direction: new Vec3(d.x, d.y, d.z) };
+  if (record) record.ray = { origin: new Vec3(path[0], path[1], path[2]), direction: new Vec3(path[3], path[4], path[5]) };
 
   let why = 'maxBounces', survival = 1, bounceRecord = null;
   for (let bounce = 0; ; bounce++) {
     const index = nearestHit(frame);
     if (index < 0) { // the path leaves the scene: the sky's light, blended from bottom to top (sky.js)
-      const t = 0.5 * (d.y + 1);
+      const t = 0.5 * (path[4] + 1);
       for (let c = 0; c < 3; c++) radiance[c] += throughput[c] * (t * sky[c] + (1 - t) * sky[c + 3]);
       why = 'sky';
       break;
@@ -85,10 +91,10 @@ export function tracePath(frame, x, y, s, record) {
     if (record) recordBounce(bounceRecord, survival);
     bounceRecord = null;
     const offset = event[BELOW] === 1 ? -bias : bias; // start off the surface, on the side the path goes
-    o.x = surface[P] + surface[N] * offset; o.y = surface[P + 1] + surface[N + 1] * offset; o.z = surface[P + 2] + surface[N + 2] * offset;
-    d.x = event[DIRECTION]; d.y = event[DIRECTION + 1]; d.z = event[DIRECTION + 2];
+    path[0] = surface[P] + surface[N] * offset; path[1] = surface[P + 1] + surface[N + 1] * offset; path[2] = surface[P + 2] + surface[N + 2] * offset;
+    path[3] = event[DIRECTION]; path[4] = event[DIRECTION + 1]; path[5] = event[DIRECTION + 2];
   }
-  if (record) endRecord(record, why, bounceRecord, survival, sky, d.y);
+  if (record) endRecord(record, why, bounceRecord, survival, sky, path[4]);
 }
 
 /**
@@ -100,11 +106,11 @@ function primaryRay(camera, x, y) {
   const px = x + u[0], py = y + u[1];
   const sx = (2 * px / camera.width - 1) * camera.halfWidth;
   const sy = (1 - 2 * py / camera.height) * camera.halfHeight;
-  const r = camera.right, up = camera.up, f = camera.forward, e = camera.position, o = ray.origin, d = ray.direction;
+  const r = camera.right, up = camera.up, f = camera.forward, e = camera.position;
   const dx = sx * r.x + sy * up.x + f.x, dy = sx * r.y + sy * up.y + f.y, dz = sx * r.z + sy * up.z + f.z;
   const length = Math.sqrt(dx * dx + dy * dy + dz * dz);
-  d.x = dx / length; d.y = dy / length; d.z = dz / length;
-  o.x = e.x; o.y = e.y; o.z = e.z;
+  path[0] = e.x; path[1] = e.y; path[2] = e.z;
+  path[3] = dx / length; path[4] = dy / length; path[5] = dz / length;
 }
 
 /**
@@ -134,37 +140,38 @@ const nearest = pathNumbers(2);
 
 /** Spheres, planes and boxes: their own hit tests, each inlined in its loop. */
 function spheres(frame, list) {
-  const shapes = frame.packed.shapes, tMin = frame.scene.epsilon, o = ray.origin, d = ray.direction;
+  const shapes = frame.packed.shapes, tMin = frame.scene.epsilon;
   for (let n = 0; n < list.length; n++) {
-    const t = sphereHit(shapes, list[n] * SHAPE, o.x, o.y, o.z, d.x, d.y, d.z, tMin), i = list[n];
+    const t = sphereHit(shapes, list[n] * SHAPE, path[0], path[1], path[2], path[3], path[4], path[5], tMin), i = list[n];
     if (t < nearest[0] || (t === nearest[0] && t < Infinity && i < nearest[1])) { nearest[0] = t; nearest[1] = i; } // a tie: the earlier shape, as trace.js
   }
 }
 function planes(frame, list) {
-  const shapes = frame.packed.shapes, tMin = frame.scene.epsilon, o = ray.origin, d = ray.direction;
+  const shapes = frame.packed.shapes, tMin = frame.scene.epsilon;
   for (let n = 0; n < list.length; n++) {
-    const t = planeHit(shapes, list[n] * SHAPE, o.x, o.y, o.z, d.x, d.y, d.z, tMin), i = list[n];
+    const t = planeHit(shapes, list[n] * SHAPE, path[0], path[1], path[2], path[3], path[4], path[5], tMin), i = list[n];
     if (t < nearest[0] || (t === nearest[0] && t < Infinity && i < nearest[1])) { nearest[0] = t; nearest[1] = i; } // a tie: the earlier shape, as trace.js
   }
 }
 function boxes(frame, list) {
-  const shapes = frame.packed.shapes, tMin = frame.scene.epsilon, o = ray.origin, d = ray.direction;
+  const shapes = frame.packed.shapes, tMin = frame.scene.epsilon;
   for (let n = 0; n < list.length; n++) {
-    const t = boxHit(shapes, list[n] * SHAPE, o.x, o.y, o.z, d.x, d.y, d.z, tMin), i = list[n];
+    const t = boxHit(shapes, list[n] * SHAPE, path[0], path[1], path[2], path[3], path[4], path[5], tMin), i = list[n];
     if (t < nearest[0] || (t === nearest[0] && t < Infinity && i < nearest[1])) { nearest[0] = t; nearest[1] = i; } // a tie: the earlier shape, as trace.js
   }
 }
 /** Cylinders, cones, triangles, meshes: the kernel's test of any kind. */
 function others(frame, list) {
-  const packed = frame.packed, tMin = frame.scene.epsilon, o = ray.origin, d = ray.direction;
+  const packed = frame.packed, tMin = frame.scene.epsilon;
   for (let n = 0; n < list.length; n++) {
-    const t = packed.hit(packed.shapes, list[n] * SHAPE, o.x, o.y, o.z, d.x, d.y, d.z, tMin), i = list[n];
+    const t = packed.hit(packed.shapes, list[n] * SHAPE, path[0], path[1], path[2], path[3], path[4], path[5], tMin), i = list[n];
     if (t < nearest[0] || (t === nearest[0] && t < Infinity && i < nearest[1])) { nearest[0] = t; nearest[1] = i; } // a tie: the earlier shape, as trace.js
   }
 }
 /** A scene that does not pack (a shape of a sketch's own): each shape's own `hit`. */
 function anyShapes(frame) {
-  const objects = frame.objects, tMin = frame.scene.epsilon;
+  const objects = frame.objects, tMin = frame.scene.epsilon, o = ray.origin, d = ray.direction;
+  o.x = path[0]; o.y = path[1]; o.z = path[2]; d.x = path[3]; d.y = path[4]; d.z = path[5];
   for (let i = 0; i < objects.length; i++) {
     const t = objects[i].hit(ray, tMin);
     if (t < nearest[0]) { nearest[0] = t; nearest[1] = i; }
@@ -201,8 +208,8 @@ const point = new Vec3(), normal = new Vec3();
 
 /** The hit point, the unit normal turned to face the ray, the ray's direction, and whether it came from inside, into `surface`. */
 function surfaceAt(frame, index) {
-  const o = ray.origin, d = ray.direction, t = surface[P];
-  surface[P] = o.x + d.x * t; surface[P + 1] = o.y + d.y * t; surface[P + 2] = o.z + d.z * t;
+  const t = surface[P], dx = path[3], dy = path[4], dz = path[5];
+  surface[P] = path[0] + dx * t; surface[P + 1] = path[1] + dy * t; surface[P + 2] = path[2] + dz * t;
   const packed = frame.packed;
   if (packed) { // each kind's own normal in numbers (reads P, writes N), as nearestHit's own hit tests
     const kind = frame.kinds[index], shapes = packed.shapes, at = index * SHAPE;
@@ -215,9 +222,9 @@ function surfaceAt(frame, index) {
     frame.objects[index].normalAt(point, normal);
     surface[N] = normal.x; surface[N + 1] = normal.y; surface[N + 2] = normal.z;
   }
-  const inside = d.x * surface[N] + d.y * surface[N + 1] + d.z * surface[N + 2] > 0;
+  const inside = dx * surface[N] + dy * surface[N + 1] + dz * surface[N + 2] > 0;
   if (inside) { surface[N] = -surface[N]; surface[N + 1] = -surface[N + 1]; surface[N + 2] = -surface[N + 2]; } // the side the ray sees
-  surface[D] = d.x; surface[D + 1] = d.y; surface[D + 2] = d.z;
+  surface[D] = dx; surface[D + 1] = dy; surface[D + 2] = dz;
   surface[INSIDE] = inside ? 1 : 0;
 }
 
