@@ -57,6 +57,6 @@ new p5((p) => {
     const panel = p.createPathPanel({ view: paths, parent: 'sketch' });
     p.createInspector({ view: whitted, parent: 'sketch' });
     p.createTaskList({ page: '16', view: whitted, parts: { paths, pathPanel: panel } }); // the page's tasks, ticked off as they are done
-    whitted.select(14, 50); // the floor by the red wall: redder in the path-traced picture
+    whitted.select(12, 58); // the floor by the red wall: redder in the path-traced picture
   };
 }, document.getElementById('sketch'));

@@ -19,7 +19,7 @@ import { formatNumber, formatVector } from '../format.js';
 import { show, checkOptions } from '../check.js';
 import { useStyle, element, resolveParent, sketchNode, shownName } from './dom.js';
 
-const OPTIONS = ['view', 'parent', 'onPath'];
+const OPTIONS = ['view', 'parent', 'onPath', 'sceneView'];
 const ENDS = {
   sky: 'left the scene: it gathered the sky (the background)',
   absorbed: 'was absorbed (nothing of it went on)',
@@ -35,6 +35,7 @@ const CHART_W = 280, CHART_H = 110;
  * @param {import('./tracer-view.js').TracerView} options.view a path-traced tracer view (`createTracerView({ path })`)
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where it goes; default the sketch's node
  * @param {(record: object|null) => void} [options.onPath] told each path shown (inspectPath's record), null when none
+ * @param {import('./scene-view.js').SceneView} [options.sceneView] a 3D view to draw the path in: a segment per bounce, coloured by its throughput
  * @returns {PathPanel}
  * @example
  * const view = p.createTracerView({ scene, camera, path: { samples: 64 } });
@@ -50,11 +51,15 @@ export class PathPanel {
   /** The path shown (inspectPath's record), or null. */
   path = null;
 
-  constructor(p, { view, parent, onPath }) {
+  constructor(p, { view, parent, onPath, sceneView }) {
     if (!view?.pathState) throw new TypeError(`createPathPanel needs { view }: a path-traced tracer view (createTracerView({ path })), got ${show(view)}`);
     if (onPath !== undefined && typeof onPath !== 'function') throw new TypeError(`onPath must be a function, got ${show(onPath)}`);
+    if (sceneView !== undefined && typeof sceneView?.setExtraRays !== 'function') throw new TypeError(`sceneView must be a 3D view (p.createSceneView), got ${show(sceneView)}`);
     this.#view = view;
-    this.#onPath = onPath;
+    this.#onPath = (path) => {
+      sceneView?.setExtraRays(path ? pathRays(path) : []);
+      onPath?.(path);
+    };
     useStyle();
     this.#build(resolveParent(parent, sketchNode(p)));
     this.#stops.push(view.onSelect(() => { this.#sample = 0; this.update(); }));
@@ -115,6 +120,34 @@ export class PathPanel {
       `The pixel after ${path.samples} ${path.samples === 1 ? 'sample' : 'samples'}: mean ${rgb(path.mean)} ± ${rgb(path.stderr)} (standard error).`);
     this.body.replaceChildren(element('div', { class: 'rt-table-wrap', tabindex: '0', role: 'region', 'aria-label': 'The path, bounce by bounce' }, table), ended, estimate, convergenceChart(path));
   }
+}
+
+/** How far a path that left the scene is drawn past its last hit. */
+const SKY_LENGTH = 12;
+
+/**
+ * A path as segments for a 3D view (`sceneView.setExtraRays`): from the eye to
+ * the first hit, hit to hit, and on toward the sky when it left; each coloured
+ * by the throughput it carries (the colour the light found past it is
+ * multiplied by), thicker while the throughput is high.
+ * @param {ReturnType<typeof inspectPath>} path
+ * @returns {{ from: object, to: object, color: string, weight: number }[]}
+ */
+export function pathRays(path) {
+  const points = [path.ray.origin, ...path.bounces.map((b) => b.point)];
+  const carried = [[1, 1, 1], ...path.bounces.map((b) => b.throughput ?? [0, 0, 0])];
+  const last = path.bounces.at(-1);
+  if (path.end === 'sky') {
+    const from = last?.point ?? path.ray.origin, d = last?.direction ?? path.ray.direction;
+    points.push({ x: from.x + d.x * SKY_LENGTH, y: from.y + d.y * SKY_LENGTH, z: from.z + d.z * SKY_LENGTH });
+  }
+  return points.slice(1).map((to, i) => ({ from: points[i], to, color: throughputColor(carried[i]), weight: 1 + 2 * Math.min(1, Math.max(...carried[i])) }));
+}
+
+/** A throughput as a CSS colour: its hue, brightened so that a dim path still shows. */
+function throughputColor(t) {
+  const top = Math.max(...t, 1e-9), level = (v) => Math.round(255 * (0.25 + 0.75 * Math.min(1, v / top)));
+  return `rgb(${level(t[0])}, ${level(t[1])}, ${level(t[2])})`;
 }
 
 const rgb = (c) => `(${c.map(formatNumber).join(', ')})`;
