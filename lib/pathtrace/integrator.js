@@ -124,15 +124,26 @@ function primaryRay(camera, x, y) {
 function nearestHit(frame) {
   nearest[0] = Infinity; nearest[1] = -1;
   const groups = frame.groups;
-  if (groups === null) anyShapes(frame);
+  if (groups === null) testShapes(anyShapes, frame, null);
   else {
-    if (groups.spheres.length) spheres(frame, groups.spheres);
-    if (groups.planes.length) planes(frame, groups.planes);
-    if (groups.boxes.length) boxes(frame, groups.boxes);
-    if (groups.others.length) others(frame, groups.others);
+    if (groups.spheres.length) testShapes(spheres, frame, groups.spheres);
+    if (groups.planes.length) testShapes(planes, frame, groups.planes);
+    if (groups.boxes.length) testShapes(boxes, frame, groups.boxes);
+    if (groups.others.length) testShapes(others, frame, groups.others);
   }
   surface[P] = nearest[0];
   return nearest[1];
+}
+
+/**
+ * Runs one kind's loop of hit tests. Its one call site has seen all five
+ * loops (primed below), so V8 inlines none of them here: each is compiled on
+ * its own with its shapes' tests inlined, instead of being inlined into the
+ * integrator and running out of V8's inlining budget there, which left a
+ * shape's test a real call whose numbers were boxed.
+ */
+function testShapes(loop, frame, list) {
+  loop(frame, list);
 }
 
 /** The nearest t so far and its shape's index (shapes tested in scene order within a kind; the smaller index wins a tie, as in trace.js). */
@@ -178,8 +189,16 @@ function anyShapes(frame) {
   }
 }
 
+/** Primes testShapes' call site with every loop (a frame without shapes: nothing is tested). */
+function primeTestShapes() {
+  const none = new Int32Array(0), frame = { objects: [], packed: { shapes: new Float64Array(0), hit: () => Infinity }, scene: { epsilon: 0 } };
+  for (let round = 0; round < 16; round++) for (const loop of [spheres, planes, boxes, others, anyShapes]) testShapes(loop, frame, none);
+}
+
 const sphereHit = Sphere.packed.hit, planeHit = Plane.packed.hit, boxHit = Box.packed.hit;
 const sphereNormal = Sphere.packed.normal, planeNormal = Plane.packed.normal, boxNormal = Box.packed.normal;
+primeTestShapes();
+
 /** The kinds nearestHit and surfaceAt call the tests of from places of their own (`frame.kinds`), OTHER for the rest. */
 const SPHERE = 0, PLANE = 1, BOX = 2, OTHER = 3;
 
