@@ -20,6 +20,7 @@ import { Vec3 } from '../vec3.js';
 import { scatter, MATERIAL, EMISSION, P, N, D, INSIDE, SURFACE, DIRECTION, WEIGHT, PDF, LOBE, BELOW, EVENT, DIFFUSE, ABSORBED, LOBE_NAMES } from './materials.js';
 import { skyLight } from './sky.js';
 import { pathNumbers } from './scratch.js';
+import { apart } from './apart.js';
 import { SHAPE, sideTables } from '../shapes/packed.js';
 import { Sphere } from '../shapes/sphere.js';
 import { Plane } from '../shapes/plane.js';
@@ -119,31 +120,21 @@ function primaryRay(camera, x, y) {
  * (lib/kernel.js), each kind of shape is tested in numbers (the same t, bit
  * for bit) by a loop of its own: a call V8 does not inline boxes the numbers
  * it passes and returns, and one loop calling several shapes' tests is more
- * than V8 inlines (some 400 bytes a path in a scene of spheres, planes and boxes).
+ * than V8 inlines: each loop is called apart (apart.js), compiled on its own
+ * with its kind's test inlined.
  */
 function nearestHit(frame) {
   nearest[0] = Infinity; nearest[1] = -1;
   const groups = frame.groups;
-  if (groups === null) testShapes(anyShapes, frame, null);
+  if (groups === null) apart(anyShapes, frame);
   else {
-    if (groups.spheres.length) testShapes(spheres, frame, groups.spheres);
-    if (groups.planes.length) testShapes(planes, frame, groups.planes);
-    if (groups.boxes.length) testShapes(boxes, frame, groups.boxes);
-    if (groups.others.length) testShapes(others, frame, groups.others);
+    if (groups.spheres.length) apart(spheres, frame, groups.spheres);
+    if (groups.planes.length) apart(planes, frame, groups.planes);
+    if (groups.boxes.length) apart(boxes, frame, groups.boxes);
+    if (groups.others.length) apart(others, frame, groups.others);
   }
   surface[P] = nearest[0];
   return nearest[1];
-}
-
-/**
- * Runs one kind's loop of hit tests. Its one call site has seen all five
- * loops (primed below), so V8 inlines none of them here: each is compiled on
- * its own with its shapes' tests inlined, instead of being inlined into the
- * integrator and running out of V8's inlining budget there, which left a
- * shape's test a real call whose numbers were boxed.
- */
-function testShapes(loop, frame, list) {
-  loop(frame, list);
 }
 
 /** The nearest t so far and its shape's index (shapes tested in scene order within a kind; the smaller index wins a tie, as in trace.js). */
@@ -189,16 +180,8 @@ function anyShapes(frame) {
   }
 }
 
-/** Primes testShapes' call site with every loop (a frame without shapes: nothing is tested). */
-function primeTestShapes() {
-  const none = new Int32Array(0), frame = { objects: [], packed: { shapes: new Float64Array(0), hit: () => Infinity }, scene: { epsilon: 0 } };
-  for (let round = 0; round < 16; round++) for (const loop of [spheres, planes, boxes, others, anyShapes]) testShapes(loop, frame, none);
-}
-
 const sphereHit = Sphere.packed.hit, planeHit = Plane.packed.hit, boxHit = Box.packed.hit;
 const sphereNormal = Sphere.packed.normal, planeNormal = Plane.packed.normal, boxNormal = Box.packed.normal;
-primeTestShapes();
-
 /** The kinds nearestHit and surfaceAt call the tests of from places of their own (`frame.kinds`), OTHER for the rest. */
 const SPHERE = 0, PLANE = 1, BOX = 2, OTHER = 3;
 

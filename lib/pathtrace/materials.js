@@ -18,6 +18,7 @@
  */
 import { refract, schlick } from '../optics.js';
 import { cosineHemisphere, inUnitBall } from './sampling.js';
+import { apart } from './apart.js';
 
 /** Where the hit lies in `surface`: the point P, the unit normal N facing the ray, the ray's direction D, 1 when it came from inside. */
 export const P = 0, N = 3, D = 6, INSIDE = 9, SURFACE = 10;
@@ -67,7 +68,7 @@ export function scatter(materials, m, random, surface, event) {
   const choose = u[0];
   if (choose < T) {
     event[PDF] = T;
-    glass(materials, m, surface, event);
+    apart(glass, materials, m, surface, event); // compiled on its own, Snell and Schlick inlined in it (apart.js)
   } else if (choose < T + (1 - T) * R) {
     event[PDF] = (1 - T) * R;
     metal(materials, m, surface, event);
