@@ -12,7 +12,8 @@
  * paths: the picture starts noisy and settles, its noise falling as 1/√N.
  * "1 bounce" keeps only paths that reached the lamp straight from their first
  * surface: direct light, where the colour bleeding disappears.
- * Click a pixel: the panel lists one of its paths, bounce by bounce.
+ * Click a pixel: the panel lists one of its paths, bounce by bounce, and the
+ * 3D view draws it.
  */
 import p5 from 'p5';
 import { Scene, Plane, Box, Sphere, Camera } from '../lib/index.js';
@@ -54,7 +55,9 @@ new p5((p) => {
     for (const input of document.querySelectorAll('#bounces input')) {
       input.addEventListener('change', () => paths.setPath({ maxBounces: Number(input.value) }));
     }
-    const panel = p.createPathPanel({ view: paths, parent: 'sketch' });
+    const sceneView = p.createSceneView({ view: paths, parent: 'sketch', orbit: { yaw: 10, pitch: 25, distance: 6 }, planeDistance: 1, // inside the room, behind the eye
+      label: 'In 3D: the path, each segment coloured by the throughput it carries' });
+    const panel = p.createPathPanel({ view: paths, parent: 'sketch', sceneView });
     p.createInspector({ view: whitted, parent: 'sketch' });
     p.createTaskList({ page: '16', view: whitted, parts: { paths, pathPanel: panel } }); // the page's tasks, ticked off as they are done
     whitted.select(12, 58); // the floor by the red wall: redder in the path-traced picture

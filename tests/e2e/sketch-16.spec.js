@@ -47,6 +47,12 @@ test('a pixel\'s path, bounce by bounce; its mean × 255 is the picture\'s byte;
   const mean = (await panel.locator('[data-field="estimate"]').getAttribute('data-value')).split(' ').map(Number);
   expect(mean.map((m) => Math.min(255, Math.max(0, Math.round(m * 255))))).toEqual(await pixelOf(paths, 12, 58));
   await expect(panel.locator('[data-field="chart"]')).toHaveAttribute('aria-label', /after each of 256 samples/);
+  // The 3D view draws the same path: a segment from the eye to the first hit, then one a bounce.
+  const hits = Number((await panel.locator('caption').textContent()).match(/(\d+) hits?$/)[1]);
+  const view3d = page.locator('[data-view3d]');
+  await expect(view3d).toHaveAttribute('data-selected', '12,58');
+  const toSky = /left the scene/.test(await panel.locator('[data-field="end"]').textContent()) ? 1 : 0; // one more segment toward the sky
+  await expect(view3d).toHaveAttribute('data-extra-rays', String(hits + toSky));
   const first = await panel.locator('tbody').textContent();
   await panel.getByRole('button', { name: 'Next sample →' }).click();
   await expect(panel.locator('caption')).toHaveText(/^Sample 1 of pixel 12,58:/);
