@@ -1,5 +1,5 @@
 /**
- * The tasks of each lesson page (00–14, 16), each done by what the student does
+ * The tasks of each lesson page (00–14, 16, 17), each done by what the student does
  * on the page, never by a "done" button. A task is
  *
  *   { id, text, hint, done(event, memory) → boolean }
@@ -293,6 +293,19 @@ export const LESSONS = [
     { id: 'settled', text: 'Wait for every sample, then select a pixel: its standard error is the noise left.',
       hint: 'The line under the path-traced picture counts the samples; at the last one, click a pixel.',
       done: (e) => selected(e) && e.parts.paths?.done === true && e.parts.paths.pathState !== null },
+  ] },
+  { page: '17', title: 'One weekend\'s final scene', tasks: [
+    { id: 'glass', text: 'Select a pixel of the big glass ball: the world seen through it is upside down.',
+      hint: 'The big ball in the middle of the picture.', done: (e) => selected(e) && hitName(e) === 'big glass ball' },
+    { id: 'through', text: 'Find a path that went through glass: a row of the path that says "glass, through".',
+      hint: 'Select a pixel of the big glass ball, then press "Next sample" until a row says "glass, through".',
+      done: (e) => (e.parts.pathPanel?.path?.bounces ?? []).some((b) => b.lobe === 'glass, through') },
+    { id: 'fuzzy', text: 'Find a small metal ball with fuzz: what it mirrors is blurred.',
+      hint: 'The small balls that shine; the inspector names each "small metal ball".', done: (e) => selected(e) && hitName(e) === 'small metal ball' && e.record.hit.object.material.fuzz > 0 },
+    { id: 'polished', text: 'Polish the small metal balls (fuzz 0) and select one again: a sharp reflection.',
+      hint: 'Choose "polished" above the picture, then click a small metal ball.', done: (e) => selected(e) && hitName(e) === 'small metal ball' && e.record.hit.object.material.fuzz === 0 },
+    { id: 'sky', text: 'Find a pixel of the sky: a path that hits nothing gathers the sky\'s light.',
+      hint: 'The top of the picture.', done: (e) => selected(e) && e.record.hit === null },
   ] },
 ];
 

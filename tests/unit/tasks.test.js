@@ -60,7 +60,7 @@ describe('the progress code', () => {
 
   it('is short, and reads back as the same progress', () => {
     const code = progressCode(progress, LESSONS);
-    expect(code).toMatch(/^RT1(-[0-9A-F]{4}){8}-[0-9A-F]{2}$/); // 16 pages, two hex digits each, in fours
+    expect(code).toMatch(/^RT1(-[0-9A-F]{4}){8}-[0-9A-F]{2}-[0-9A-F]{2}$/); // 17 pages, two hex digits each, in fours
     expect(readProgressCode(code, LESSONS)).toEqual({ progress });
     expect(readProgressCode(`  ${code.toLowerCase()} `, LESSONS)).toEqual({ progress }); // as typed
     expect(readProgressCode(progressCode({}, LESSONS), LESSONS)).toEqual({ progress: {} });
