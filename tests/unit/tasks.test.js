@@ -95,6 +95,14 @@ describe('the progress code', () => {
     expect(readProgressCode(progressCode(progress, LESSONS.slice(0, 9)), LESSONS).problem).toMatch(/shape/); // shorter still: no code of this kit
   });
 
+  it('still reads the codes made before pages 16 and 17 had tasks: 15 pages (00–14) and 16 (00–14, 16)', () => {
+    const fifteen = progressCode(progress, LESSONS.slice(0, 15)), sixteen = progressCode(progress, LESSONS.slice(0, 16));
+    expect(fifteen).toMatch(/^RT1(-[0-9A-F]{4}){7}-[0-9A-F]{2}-[0-9A-F]{2}$/); // 30 hex digits
+    expect(sixteen).toMatch(/^RT1(-[0-9A-F]{4}){8}-[0-9A-F]{2}$/); // 32
+    expect(readProgressCode(fifteen, LESSONS)).toEqual({ progress });
+    expect(readProgressCode(sixteen, LESSONS)).toEqual({ progress });
+  });
+
   it('refuses bits for tasks a page does not have, even with a good check sum', () => {
     // Page 08 has 3 tasks: bit 3 (value 8) is none of them. Build the code with its check sum.
     const hex = `${'00'.repeat(8)}08${'00'.repeat(LESSONS.length - 9)}`;
