@@ -23,3 +23,15 @@ describe('pathRays', () => {
     expect(rays[1].weight).toBeLessThan(rays[0].weight);
   });
 });
+
+describe('a path-traced view and the GPU engine', () => {
+  it('stays on the CPU, path tracing, and says why: the GPU engine does not path trace', async () => {
+    const { engineRenderer } = await import('../../lib/p5/engines.js');
+    const { PathProgressiveRenderer } = await import('../../lib/pathtrace/progressive.js');
+    const scene = new Scene({ background: [0.5, 0.5, 0.5] }).add(new Sphere([0, 0, -8], 1));
+    const paths = new PathProgressiveRenderer({ scene, camera: new Camera({ width: 8, height: 6 }), path: { samples: 2 } });
+    const asked = engineRenderer('gpu', paths, { budgetMs: 8, shader: undefined, shaded: true });
+    expect(asked).toEqual({ renderer: paths, engine: 'cpu', why: 'the GPU engine does not path trace' });
+    expect(engineRenderer('cpu', paths, { budgetMs: 8, shader: undefined, shaded: true })).toEqual({ renderer: paths, engine: 'cpu', why: null });
+  });
+});
