@@ -2,9 +2,9 @@
  * Path tracing's benchmark (part of `npm run bench`): samples per second on
  * one core at 320×240 (each sample a whole path, its bounces until the lamp,
  * the sky, absorption or the roulette), and the heap allocated per sample.
- * Two scenes: sketch 16's Cornell box (planes, boxes, a fuzzy mirror ball:
- * long paths in a closed room) and the class's example (balls under a sky:
- * short paths). Figures are printed, never asserted (docs/path-tracing.md).
+ * Three scenes: sketch 16's Cornell box (planes, boxes, a fuzzy mirror ball:
+ * long paths in a closed room), the class's example (balls under a sky:
+ * short paths) and sketch 17's 90 balls (each path tests every ball). Figures are printed, never asserted (docs/path-tracing.md).
  */
 import { performance } from 'node:perf_hooks';
 import { GCProfiler, getHeapStatistics } from 'node:v8';
@@ -25,6 +25,27 @@ function cornellBox() {
   scene.add(new Box([-3.6, 0, -18], [-0.8, 6, -15], { color: WHITE, name: 'tall block' }));
   scene.add(new Sphere([2.2, 1.8, -13], 1.8, { color: [0.9, 0.9, 0.9], reflection: 1, fuzz: 0.05, name: 'mirror ball' }));
   return { scene, camera: new Camera({ width: 320, height: 240, fov: 40, position: [0, 5, 3.7] }) };
+}
+
+/** Sketch 17's scene, *Ray Tracing in One Weekend*'s last picture small: 90 balls on a ground ball under the book's sky. */
+function oneWeekend() {
+  let state = 7;
+  const random = () => { state = (Math.imul(state, 1664525) + 1013904223) >>> 0; return state / 2 ** 32; };
+  const scene = new Scene({ background: [0.7, 0.8, 1] });
+  scene.add(new Sphere([0, -1000, 0], 1000, { color: [0.5, 0.5, 0.5] }));
+  for (let a = -5; a < 5; a++) {
+    for (let b = -5; b < 5; b++) {
+      const center = [a + 0.9 * random(), 0.2, b + 0.9 * random()], pick = random();
+      if (![[4, 0], [0, 0], [-4, 0]].every(([x, z]) => Math.hypot(center[0] - x, center[2] - z) > 1.2)) continue;
+      if (pick < 0.8) scene.add(new Sphere(center, 0.2, { color: [random() * random(), random() * random(), random() * random()] }));
+      else if (pick < 0.95) scene.add(new Sphere(center, 0.2, { color: [0.5 + random() / 2, 0.5 + random() / 2, 0.5 + random() / 2], reflection: 1, fuzz: random() / 2 }));
+      else scene.add(new Sphere(center, 0.2, { transparency: 1, ior: 1.5 }));
+    }
+  }
+  scene.add(new Sphere([0, 1, 0], 1, { transparency: 1, ior: 1.5 }));
+  scene.add(new Sphere([-4, 1, 0], 1, { color: [0.4, 0.2, 0.1] }));
+  scene.add(new Sphere([4, 1, 0], 1, { color: [0.7, 0.6, 0.5], reflection: 1 }));
+  return { scene, camera: new Camera({ width: 320, height: 240, fov: 20, position: [13, 2, 3], yaw: -77, pitch: -8.5 }) };
 }
 
 /** Bytes the heap grew by while `work` ran, plus what the collections meanwhile freed. */
@@ -61,4 +82,5 @@ export function runPathBench() {
   measure('Cornell box, 1 bounce (direct light only)', cornellBox(), { samples: 4, maxBounces: 1 });
   const scene = classScene();
   measure('the class scene under its sky, 4 samples', { scene, camera: new Camera({ width: 320, height: 240 }) }, { samples: 4 });
+  measure('One weekend\'s final scene (sketch 17), 2 samples', oneWeekend(), { samples: 2, sky: { top: [0.5, 0.7, 1], bottom: [1, 1, 1] } });
 }
