@@ -13,7 +13,8 @@
  * `cc -O3 -march=native` when a compiler is present (else it says skipped),
  * timed alternately with render() and compared byte for byte: it prints both
  * and the ratio (today's figures: docs/performance.md). Then bench/bvh.js:
- * the mesh BVH's per-ray cost at 1k and 100k triangles, and a frame of the bunny;
+ * the mesh BVH's per-ray cost at 1k and 100k triangles, and a frame of the bunny; then
+ * bench/paths.js: path tracing's samples per second per core at 320×240, and bytes per sample;
  * and last bench/paired.js: render() of an older commit against the work tree's.
  *
  * Today's figures, the conditions they were taken in (load average), and
@@ -242,6 +243,10 @@ console.log(`\nload average ${startLoad.toFixed(1)} at the start, ${loadavg()[0]
 // Meshes: the BVH's scaling (1k vs 100k triangles) and a frame of the bunny (bench/bvh.js).
 const { runBvhBench } = await import('./bvh.js');
 runBvhBench();
+
+// Path tracing: samples per second per core at 320×240 and the heap per sample (bench/paths.js).
+const { runPathBench } = await import('./paths.js');
+runPathBench();
 
 // render() of an older commit (9e9a563, or BENCH_OLD) against the work tree's, in one process, in turns (bench/paired.js).
 const { runPairedBench } = await import('./paired.js');

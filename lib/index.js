@@ -26,6 +26,9 @@ export { renderGPU } from './gpu/render-gpu.js';
 export { inspectPixel } from './explain.js';
 export { ProgressiveRenderer } from './progressive.js';
 export { ParallelRenderer } from './workers/parallel.js';
+// Light that bounces: pictures as the average of random paths, and the story of one path.
+export { pathTrace } from './pathtrace/path-trace.js';
+export { inspectPath } from './pathtrace/inspect-path.js';
 // Colours as the lesson names them.
 export { toColor, toHex, colorName } from './color.js';
 // The class's example scene; scenes as JSON and as code.

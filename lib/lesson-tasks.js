@@ -1,5 +1,5 @@
 /**
- * The tasks of each lesson page (00–14), each done by what the student does
+ * The tasks of each lesson page (00–14, 16, 17), each done by what the student does
  * on the page, never by a "done" button. A task is
  *
  *   { id, text, hint, done(event, memory) → boolean }
@@ -279,7 +279,47 @@ export const LESSONS = [
     { id: 'one-ray', text: 'Give the disc 1 shadow ray and select a pixel: the shadow is hard again.',
       hint: 'Choose 1 under "shadow rays", then click the floor.', done: (e) => selected(e) && (e.record.hit?.areaLights ?? []).some((g) => g.samples === 1) },
   ] },
+  { page: '16', title: 'Light that bounces', tasks: [
+    { id: 'path', text: 'Select a pixel and read one of its paths, bounce by bounce.',
+      hint: 'Click either picture: the path panel lists where the path went and what it gathered.', done: (e) => selected(e) },
+    { id: 'bleed', text: 'Find colour bleeding: a pixel of the white floor, ceiling or back wall that the path tracer paints redder or greener than Whitted\'s tracer.',
+      hint: 'Wait until the path-traced picture has all its samples, then click the floor close to the red wall.',
+      done: (e) => selected(e) && WHITE_SURFACES.includes(hitName(e)) && bleeds(e) },
+    { id: 'direct', text: 'Switch to 1 bounce: direct light only. Which parts of the room go dark?',
+      hint: 'Choose "1 bounce" above the pictures.', done: (e) => e.parts.paths?.pathState?.options.maxBounces === 1 },
+    { id: 'lamp', text: 'Find a path that bounced and then reached the lamp.',
+      hint: 'Select a pixel of the floor, then press "Next sample" until a row below the first says "lamp".',
+      done: (e) => (e.parts.pathPanel?.path?.bounces.findIndex((b) => b.name === 'lamp') ?? -1) > 0 },
+    { id: 'settled', text: 'Wait for every sample, then select a pixel: its standard error is the noise left.',
+      hint: 'The line under the path-traced picture counts the samples; at the last one, click a pixel.',
+      done: (e) => selected(e) && e.parts.paths?.done === true && e.parts.paths.pathState !== null },
+  ] },
+  { page: '17', title: 'One weekend\'s final scene', tasks: [
+    { id: 'glass', text: 'Select a pixel of the big glass ball: the world seen through it is upside down.',
+      hint: 'The big ball in the middle of the picture.', done: (e) => selected(e) && hitName(e) === 'big glass ball' },
+    { id: 'through', text: 'Find a path that went through glass: a row of the path that says "glass, through".',
+      hint: 'Select a pixel of the big glass ball, then press "Next sample" until a row says "glass, through".',
+      done: (e) => (e.parts.pathPanel?.path?.bounces ?? []).some((b) => b.lobe === 'glass, through') },
+    { id: 'fuzzy', text: 'Find a small metal ball with fuzz: what it mirrors is blurred.',
+      hint: 'The small balls that shine; the inspector names each "small metal ball".', done: (e) => selected(e) && hitName(e) === 'small metal ball' && e.record.hit.object.material.fuzz > 0 },
+    { id: 'polished', text: 'Polish the small metal balls (fuzz 0) and select one again: a sharp reflection.',
+      hint: 'Choose "polished" above the picture, then click a small metal ball.', done: (e) => selected(e) && hitName(e) === 'small metal ball' && e.record.hit.object.material.fuzz === 0 },
+    { id: 'sky', text: 'Find a pixel of the sky: a path that hits nothing gathers the sky\'s light.',
+      hint: 'The top of the picture.', done: (e) => selected(e) && e.record.hit === null },
+  ] },
 ];
+
+/** The white surfaces of sketch 16's room, where colour bleeding shows. */
+const WHITE_SURFACES = ['floor', 'ceiling', 'back wall', 'tall block'];
+
+/** Colour bleeding at the selected pixel: its path-traced colour leans more to red or green than Whitted's, by a margin (bytes). */
+function bleeds(e) {
+  const view = e.parts.paths;
+  if (!view?.done) return false;
+  const i = (e.record.y * view.width + e.record.x) * 4, path = view.buffer, whitted = e.record.color;
+  return Math.abs(path[i] - path[i + 1]) - Math.abs(whitted[0] - whitted[1]) >= BLEED_MARGIN;
+}
+const BLEED_MARGIN = 8;
 
 /** A homework page's tasks: run the self-check, show a light of your own, pass. */
 function homeworkLesson(page, title, lights) {

@@ -12,7 +12,9 @@ import { numberInRange, show, checkOptions } from './check.js';
  * (lib/scene-check.js) and its packed numbers (packMaterial, for lib/kernel.js)
  * all read: a new field is one more row. `value` is its default, `check`
  * reads a given value (a colour: [r, g, b] from an array, a string or one
- * number), `numbers` how many numbers it packs as, in this order.
+ * number), `numbers` how many numbers it packs as, in this order (0: none,
+ * a field the kernel does not read), `omitAtDefault` leaves it out of the JSON
+ * while it is its default.
  */
 export const MATERIAL_FIELDS = Object.freeze([
   { name: 'color', value: [1, 1, 1], check: (v) => toColor(v, 'color'), numbers: 3 },
@@ -22,6 +24,9 @@ export const MATERIAL_FIELDS = Object.freeze([
   { name: 'ior', value: 1.1, check: (v) => numberInRange(v, 'ior', 1, 4), numbers: 1 },
   { name: 'specular', value: 0, check: (v) => numberInRange(v, 'specular', 0, 1), numbers: 1 },
   { name: 'shininess', value: 50, check: (v) => numberInRange(v, 'shininess', 1, 10000), numbers: 1 },
+  // The path tracer's metal blur (lib/pathtrace/materials.js packs it): Whitted's tracer and the GPU do not
+  // read it, so it packs as no number; left out of the JSON at 0, so scenes saved before it read and write the same.
+  { name: 'fuzz', value: 0, check: (v) => numberInRange(v, 'fuzz', 0, 1), numbers: 0, omitAtDefault: true },
 ].map((field) => Object.freeze(field)));
 
 /** The options a material takes: its fields' names. */
@@ -47,6 +52,7 @@ export class Material {
    * @param {number} [options.ior=1.1] index of refraction inside (the class library's 1.1)
    * @param {number} [options.specular=0] strength of the highlight, 0–1
    * @param {number} [options.shininess=50] highlight sharpness (Phong exponent), ≥ 1
+   * @param {number} [options.fuzz=0] how much a mirror blurs what it reflects, 0–1: the path tracer's metal (docs/path-tracing.md); Whitted's tracer ignores it
    * @example
    * const mirror = new Material({ color: [0.9, 0.9, 0.9], reflection: 0.8 });
    * const glass = new Material({ color: 'white', transparency: 0.9, ior: 1.5 });
@@ -65,6 +71,7 @@ export class Material {
     /** @type {number} */ this.ior = read('ior');
     /** @type {number} */ this.specular = read('specular');
     /** @type {number} */ this.shininess = read('shininess');
+    /** @type {number} */ this.fuzz = read('fuzz');
   }
 
   /** True when the material gives off light (it is then a light of the scene). */
@@ -84,9 +91,10 @@ export function materialOptions(m) {
   return Object.fromEntries(MATERIAL_FIELDS.map(({ name }) => [name, m[name]]));
 }
 
-/** A material's fields as JSON: colours as new [r, g, b] arrays. */
+/** A material's fields as JSON: colours as new [r, g, b] arrays; a field marked `omitAtDefault` only when it is not its default. */
 export function materialJSON(m) {
-  return Object.fromEntries(MATERIAL_FIELDS.map(({ name, numbers }) => [name, numbers > 1 ? [...m[name]] : m[name]]));
+  const written = MATERIAL_FIELDS.filter(({ name, value, omitAtDefault }) => !(omitAtDefault && m[name] === value));
+  return Object.fromEntries(written.map(({ name, numbers }) => [name, numbers > 1 ? [...m[name]] : m[name]]));
 }
 
 /** A material's MATERIAL_NUMBERS numbers into `out` at `at`, in the table's order. */

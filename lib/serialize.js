@@ -313,7 +313,7 @@ const isGrey = (c) => c[0] === c[1] && c[1] === c[2];
 function withoutDefaults(data, defaults) {
   const out = {};
   for (const [key, value] of Object.entries(defaults)) {
-    if (!same(data[key], value)) out[key] = data[key];
+    if (data[key] !== undefined && !same(data[key], value)) out[key] = data[key]; // (a field left out of the JSON: its default)
   }
   return out;
 }

@@ -24,6 +24,7 @@ import { createHomeworkCheck } from './homework-check.js';
 import { createTaskList } from './task-list.js';
 import { createSampleRays } from './sample-rays.js';
 import { createBvhView } from './bvh-view.js';
+import { createPathPanel } from './path-panel.js';
 import { drawSideView, drawTopView } from './diagrams/plane-views.js';
 import { drawGeometricConstruction } from './diagrams/construction.js';
 import { drawParabola } from './diagrams/parabola.js';
@@ -51,6 +52,7 @@ export const FACTORIES = {
   createTaskList,
   createSampleRays,
   createBvhView,
+  createPathPanel,
   // Diagrams draw into the sketch's own canvas, inside the box { x, y, w, h }.
   drawSideView,
   drawTopView,

@@ -30,7 +30,8 @@ export function engineRenderer(engine, current, { budgetMs, shader, shaded }) {
   let why = onGpu ? current.lost : null; // the GPU cannot go on: its context lost, or a visual mode
   if (engine === 'gpu' && !why) {
     if (onGpu) return { renderer: current, engine, why: null };
-    if (!shaded) why = 'the GPU draws the shaded picture only';
+    if (current.pathTraced) why = 'the GPU engine does not path trace';
+    else if (!shaded) why = 'the GPU draws the shaded picture only';
     else {
       try {
         return { renderer: new GpuRenderer({ scene, camera, mode }), engine, why: null };

@@ -387,6 +387,7 @@ export class SceneView {
     drawLightOutlines(g, scene);
     for (const s of this.#segments) drawSegment(g, s, r);
     for (const e of this.#extra) line3(g, e.from, e.to, e.color, e.weight ?? 1.5);
+    this.canvas.dataset.extraRays = String(this.#extra.length); // for tests: how many extra segments it shows
     for (const f of this.#fanSegments) line3(g, f.from, f.to, RAY_COLORS.primary, 1);
     if (this.#constructionSphere) wireSphere(g, this.#constructionSphere);
     for (const c of this.#construction.rays) line3(g, c.from, c.to, c.color, c.weight);

@@ -24,6 +24,7 @@
 import { formatRate } from '../format.js';
 import { ORDERS } from '../progressive.js';
 import { WorkerProgressiveRenderer } from '../workers/progressive.js';
+import { PathProgressiveRenderer } from '../pathtrace/progressive.js';
 import { modeShader, modeLegend } from '../modes.js';
 import { pixelCoordinate, show, checkOptions } from '../check.js';
 import { inspectPixel } from '../explain.js';
@@ -57,6 +58,8 @@ import { listenForOrbit } from './gpu-orbit.js';
  * @param {string} [options.label] a caption above the picture
  * @param {boolean} [options.legend=true] show the mode's legend under the picture (not for 'shaded')
  * @param {'cpu'|'gpu'} [options.engine='cpu'] 'gpu': a whole frame every animation frame by WebGL2 (lib/gpu/), back to the CPU with a line on the page when WebGL2 is missing or lost
+ * @param {object} [options.path] path trace the picture instead, sample after sample, with pathTrace's options
+ *   (`{ samples, seed, maxBounces, sky, roulette }`); the progress line counts the samples ("Sample 37 of 256")
  * @returns {TracerView}
  * @example
  * new p5((p) => {
@@ -74,7 +77,7 @@ export function createTracerView(p, options) { // no options: checkOptions gives
 }
 
 /** The options createTracerView takes. */
-const TRACER_VIEW_OPTIONS = ['scene', 'camera', 'scale', 'grid', 'mode', 'order', 'renderMode', 'budgetMs', 'workers', 'parent', 'label', 'legend', 'engine'];
+const TRACER_VIEW_OPTIONS = ['scene', 'camera', 'scale', 'grid', 'mode', 'order', 'renderMode', 'budgetMs', 'workers', 'parent', 'label', 'legend', 'engine', 'path'];
 /** What a tracer view tells its listeners (see `on`). */
 const EVENTS = ['select', 'restart', 'progress'];
 
@@ -99,7 +102,7 @@ export class TracerView {
    * @param {import('p5').default} p
    * @param {Parameters<typeof createTracerView>[1]} options as for createTracerView
    */
-  constructor(p, { scene, camera, scale = 'auto', grid = false, mode = 'shaded', order, renderMode, budgetMs = 8, workers = 'auto', parent, label, legend = true, engine = 'cpu' } = /** @type {any} */ ({})) {
+  constructor(p, { scene, camera, scale = 'auto', grid = false, mode = 'shaded', order, renderMode, budgetMs = 8, workers = 'auto', parent, label, legend = true, engine = 'cpu', path } = /** @type {any} */ ({})) {
     checkEngine(engine);
     this.#scale = checkScale(scale);
     this.#grid = Boolean(grid);
@@ -108,7 +111,8 @@ export class TracerView {
     if (order !== undefined && renderMode !== undefined) throw new TypeError('createTracerView takes order or renderMode (its old name), not both');
     // The renderer checks scene, camera and the order (its `mode`); modeShader checks the visual mode.
     // Large shaded frames go to Web Workers (lib/workers/progressive.js); the rest is traced here.
-    this.#renderer = new WorkerProgressiveRenderer({ scene, camera, mode: checkOrder(order ?? renderMode ?? 'coarse', renderMode === undefined ? 'order' : 'renderMode'), budgetMs: this.budgetMs, shader: modeShader(mode), workers });
+    if (path !== undefined && (mode !== 'shaded' || order !== undefined || renderMode !== undefined)) throw new TypeError('a path-traced view (path) shows the shaded picture, sample after sample: no mode or order');
+    this.#renderer = path !== undefined ? new PathProgressiveRenderer({ scene, camera, path, budgetMs: this.budgetMs }) : new WorkerProgressiveRenderer({ scene, camera, mode: checkOrder(order ?? renderMode ?? 'coarse', renderMode === undefined ? 'order' : 'renderMode'), budgetMs: this.budgetMs, shader: modeShader(mode), workers });
     this.showLegend = legend;
 
     useStyle();
@@ -222,6 +226,20 @@ export class TracerView {
   }
   /** Traces the picture again from the start (after changing the scene in place, say). */
   restart() { return this.#change({}); }
+  /**
+   * A path-traced view (`path` given) traces again with these of pathTrace's options changed (the others kept).
+   * @example
+   * view.setPath({ maxBounces: 1 }); // direct light only
+   */
+  setPath(path) {
+    if (!(this.#renderer instanceof PathProgressiveRenderer)) throw new TypeError('setPath: this view is not path traced (give createTracerView a path option)');
+    return this.#change({ path });
+  }
+  /** A path-traced view's samples so far and in all and its path options, `{ sample, samples, options }`; null for a view that is not path traced. */
+  get pathState() {
+    const r = this.#renderer;
+    return r instanceof PathProgressiveRenderer ? { sample: r.sample, samples: r.samples, options: { ...r.options } } : null;
+  }
 
   /**
    * Selects pixel (x, y) of the traced image (whole numbers in range, else a
@@ -365,7 +383,7 @@ export class TracerView {
   #showProgress() {
     const r = this.#renderer;
     const percent = r.done ? 100 : Math.min(99, Math.floor(r.progress * 100));
-    const text = `${percent}% · ${formatRate(r.raysPerSecond)} rays/s`;
+    const text = 'progressText' in r ? r.progressText : `${percent}% · ${formatRate(r.raysPerSecond)} rays/s`;
     if (text === this.#progressText) return;
     this.#progressText = text;
     this.progressFill.style.width = `${percent}%`;

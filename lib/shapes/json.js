@@ -9,7 +9,7 @@ export function vector(v) {
   return [v.x, v.y, v.z];
 }
 
-/** A material as `{ color, emission, reflection, transparency, ior, specular, shininess }` (its fields: lib/material.js MATERIAL_FIELDS). */
+/** A material as `{ color, emission, reflection, transparency, ior, specular, shininess }`, and `fuzz` when a mirror blurs (its fields: lib/material.js MATERIAL_FIELDS). */
 export function materialToJSON(m) {
   return materialJSON(m);
 }

@@ -14,6 +14,7 @@
  * the main thread instead (the same bytes), and `onProblem` hears why.
  */
 import { render } from '../render.js';
+import { pathTrace, pathTraceRows, readPathOptions, preparePaths } from '../pathtrace/path-trace.js';
 import { positiveInteger, show, checkOptions } from '../check.js';
 import { sceneToJSON, cameraToJSON } from '../serialize.js';
 import { splitRows, bandHeight, claimHeight } from './split.js';
@@ -111,16 +112,18 @@ export class ParallelRenderer {
    * @param {import('../camera.js').Camera} camera
    * @param {object} [options]
    * @param {(y0: number, y1: number, buffer: Uint8ClampedArray) => void} [options.onRows] called as rows y0…y1−1 arrive
-   * @returns {Promise<Uint8ClampedArray>} RGBA, width·height·4, identical to render(scene, camera)
+   * @param {object} [options.path] path trace the frame with these options of pathTrace's (`samples`, `seed`, `maxBounces`, `sky`, `roulette`)
+   * @returns {Promise<Uint8ClampedArray>} RGBA, width·height·4, identical to render(scene, camera) (with `path`: to pathTrace(scene, camera, path))
    */
   async render(scene, camera, options = {}) {
-    const { onRows } = checkOptions(options, ['onRows'], 'ParallelRenderer.render');
+    const { onRows, path } = checkOptions(options, ['onRows', 'path'], 'ParallelRenderer.render');
     if (onRows !== undefined && typeof onRows !== 'function') throw new TypeError(`onRows must be a function, got ${show(onRows)}`);
     const sceneJSON = sceneToJSON(scene), cameraJSON = cameraToJSON(camera); // also checks them
+    if (path !== undefined) readPathOptions(path, scene, camera, 'path'); // checked here, before any worker hears of it
     const { width, height } = camera;
     if (!this.usingWorkers) {
       if (!this.fallback) throw new Error(this.problem ?? 'no Web Workers here');
-      const buffer = render(scene, camera);
+      const buffer = path ? pathTrace(scene, camera, path) : render(scene, camera);
       onRows?.(0, height, buffer);
       return buffer;
     }
@@ -132,7 +135,7 @@ export class ParallelRenderer {
     }
     const size = width * height * 4;
     const job = {
-      id: this.#nextId++, crew: this.#crew, scene, camera, onRows, buffer: new Uint8ClampedArray(size), shared: null,
+      id: this.#nextId++, crew: this.#crew, scene, camera, onRows, path, buffer: new Uint8ClampedArray(size), shared: null,
       /** Bands [y0, y1) not yet in `buffer`, by y0; workers that have not said they are done, with when they were last heard. */
       owed: new Map(), working: new Map(), timer: 0,
     };
@@ -143,13 +146,13 @@ export class ParallelRenderer {
       job.shared = this.#sharedFrame(size);
       Atomics.store(job.shared.next, 0, 0);
       for (let y0 = 0; y0 < height; y0 += rowsPerBand) job.owed.set(y0, [y0, Math.min(y0 + rowsPerBand, height)]);
-      const message = { id: job.id, version: this.#version, shared: job.shared.frame.buffer, next: job.shared.next.buffer, rowsPerBand };
+      const message = { id: job.id, version: this.#version, shared: job.shared.frame.buffer, next: job.shared.next.buffer, rowsPerBand, ...(path ? { path } : {}) };
       for (let i = 0; i < Math.min(this.workers, job.owed.size); i++) messages.push([i, message]);
     } else {
       const rowsPerBand = this.rowsPerBand === 'auto' ? bandHeight(height, this.workers) : this.rowsPerBand;
       splitRows(height, this.workers, rowsPerBand).forEach((bands, i) => {
         for (const band of bands) job.owed.set(band[0], band);
-        if (bands.length) messages.push([i, { id: job.id, version: this.#version, bands }]);
+        if (bands.length) messages.push([i, { id: job.id, version: this.#version, bands, ...(path ? { path } : {}) }]);
       });
     }
     return new Promise((resolve, reject) => {
@@ -260,7 +263,11 @@ export class ParallelRenderer {
       }
       try {
         const owed = [...job.owed.values()].sort((a, b) => a[0] - b[0]);
-        for (const [y0, y1] of owed) render(job.scene, job.camera, job.buffer, { y0, y1 });
+        const paths = job.path ? preparePaths(job.scene, job.camera, readPathOptions(job.path, job.scene, job.camera)) : null;
+        for (const [y0, y1] of owed) {
+          if (paths) pathTraceRows(paths, job.buffer, y0, y1);
+          else render(job.scene, job.camera, job.buffer, { y0, y1 });
+        }
         job.owed.clear();
         for (const [y0, y1] of owed) job.onRows?.(y0, y1, job.buffer);
         this.#finish(job);

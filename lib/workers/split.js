@@ -6,6 +6,7 @@ import { positiveInteger } from '../check.js';
 import { sceneFromJSON, cameraFromJSON } from '../serialize.js';
 import { renderRows, prepareFrame } from '../render.js';
 import { TILE } from '../bounds.js';
+import { readPathOptions, preparePaths, pathTraceRows } from '../pathtrace/path-trace.js';
 
 /**
  * Deals a frame's rows to `parts` workers: bands of `rowsPerBand` rows, handed
@@ -62,6 +63,8 @@ export const REPORT_MS = 4;
  *   { id, version, scene?, camera?, shared, next, rowsPerBand }  bands taken as it goes.
  * `scene` and `camera` (JSON) come only when `version` is new to this worker:
  * they are parsed, and the tiles' candidate shapes found, once per change.
+ * With `path` (pathTrace's options) the rows are path traced instead: the
+ * same bytes as pathTrace, since each sample depends on (seed, x, y, s) alone.
  * `shared` is a SharedArrayBuffer of the whole frame, written in place;
  * `next` a SharedArrayBuffer holding one Int32, the next band of `rowsPerBand`
  * rows to take: every worker on the frame takes from it (Atomics.add) until
@@ -105,6 +108,7 @@ export function workerHandler({ now = () => performance.now() } = {}) {
         }
         post({ id, bands, pixels: pixels.buffer, done }, [pixels.buffer]);
       };
+      const paths = job.path ? preparePaths(scene, camera, readPathOptions(job.path, scene, camera)) : null;
       const bands = job.next ? claimed(job.next, positiveInteger(job.rowsPerBand, 'rowsPerBand'), camera.height) : job.bands.values();
       let finished = [], reportedAt = now();
       for (const [y0, y1] of bands) {
@@ -113,7 +117,8 @@ export function workerHandler({ now = () => performance.now() } = {}) {
           finished = [];
           reportedAt = now();
         }
-        renderRows(scene, camera, target, y0, y1, tiles);
+        if (paths) pathTraceRows(paths, target, y0, y1);
+        else renderRows(scene, camera, target, y0, y1, tiles);
         finished.push([y0, y1]);
       }
       report(finished, true);

@@ -244,15 +244,15 @@ test('the gallery shows each lesson\'s progress, the achievements and a code the
   await page.goto('/');
   await expect(page.locator('a[href$="01-rays-through-pixels.html"] [data-progress]')).toHaveText('2 of 6');
   await expect(page.locator('a[href$="02-the-quadratic.html"] [data-progress]')).toHaveText('0 of 5');
-  await expect(page.locator('[data-progress]')).toHaveCount(15); // 00–14, each lesson page
+  await expect(page.locator('[data-progress]')).toHaveCount(17); // 00–14, 16 and 17, each lesson page (15 has no tasks)
   await expect(page.locator('[data-achievement="page-03"]')).toContainText('The geometric approach');
   const code = await page.locator('[data-progress-code]').textContent();
-  expect(code).toMatch(/^RT1(-[0-9A-F]{4}){7}-[0-9A-F]{2}-[0-9A-F]{2}$/);
+  expect(code).toMatch(/^RT1(-[0-9A-F]{4}){8}-[0-9A-F]{2}-[0-9A-F]{2}$/); // 17 pages, two hex digits each, in fours
 
   await page.goto(`/teacher.html#code=${code}`);
   await expect(page.locator('[data-teacher-summary]')).toHaveText('1 of 1 code read.');
   const student = page.locator('[data-student="read"]');
-  await expect(student).toContainText('6 of 62 tasks done.');
+  await expect(student).toContainText('6 of 72 tasks done.');
   await expect(student.locator('[data-page="01"]')).toContainText('Rays through pixels: 2 of 6');
   await expect(student.locator('[data-page="01"]')).toContainText('✓ Find a pixel whose ray hits nothing.');
   await expect(student).toContainText('★ Finished 03');

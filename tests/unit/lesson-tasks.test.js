@@ -7,8 +7,8 @@ const select = (scene, camera, x, y) => ({ type: 'select', record: inspectPixel(
 const task = (page, id) => lessonOf(page).tasks.find((t) => t.id === id);
 
 describe('the lessons', () => {
-  it('pages 00–14 each have three to seven tasks with an id, a text and a hint', () => {
-    expect(LESSONS.map((l) => l.page)).toEqual(['00', '01', '02', '03', '04', '05', '06', '07', '08', '09', '10', '11', '12', '13', '14']);
+  it('pages 00–14, 16 and 17 each have three to seven tasks with an id, a text and a hint', () => {
+    expect(LESSONS.map((l) => l.page)).toEqual(['00', '01', '02', '03', '04', '05', '06', '07', '08', '09', '10', '11', '12', '13', '14', '16', '17']);
     for (const lesson of LESSONS) {
       expect(lesson.tasks.length, lesson.page).toBeGreaterThanOrEqual(3);
       expect(lesson.tasks.length, lesson.page).toBeLessThanOrEqual(7);

@@ -60,7 +60,7 @@ describe('the progress code', () => {
 
   it('is short, and reads back as the same progress', () => {
     const code = progressCode(progress, LESSONS);
-    expect(code).toMatch(/^RT1(-[0-9A-F]{4}){7}-[0-9A-F]{2}-[0-9A-F]{2}$/); // 15 pages, two hex digits each
+    expect(code).toMatch(/^RT1(-[0-9A-F]{4}){8}-[0-9A-F]{2}-[0-9A-F]{2}$/); // 17 pages, two hex digits each, in fours
     expect(readProgressCode(code, LESSONS)).toEqual({ progress });
     expect(readProgressCode(`  ${code.toLowerCase()} `, LESSONS)).toEqual({ progress }); // as typed
     expect(readProgressCode(progressCode({}, LESSONS), LESSONS)).toEqual({ progress: {} });
@@ -95,12 +95,20 @@ describe('the progress code', () => {
     expect(readProgressCode(progressCode(progress, LESSONS.slice(0, 9)), LESSONS).problem).toMatch(/shape/); // shorter still: no code of this kit
   });
 
+  it('still reads the codes made before pages 16 and 17 had tasks: 15 pages (00–14) and 16 (00–14, 16)', () => {
+    const fifteen = progressCode(progress, LESSONS.slice(0, 15)), sixteen = progressCode(progress, LESSONS.slice(0, 16));
+    expect(fifteen).toMatch(/^RT1(-[0-9A-F]{4}){7}-[0-9A-F]{2}-[0-9A-F]{2}$/); // 30 hex digits
+    expect(sixteen).toMatch(/^RT1(-[0-9A-F]{4}){8}-[0-9A-F]{2}$/); // 32
+    expect(readProgressCode(fifteen, LESSONS)).toEqual({ progress });
+    expect(readProgressCode(sixteen, LESSONS)).toEqual({ progress });
+  });
+
   it('refuses bits for tasks a page does not have, even with a good check sum', () => {
     // Page 08 has 3 tasks: bit 3 (value 8) is none of them. Build the code with its check sum.
     const hex = `${'00'.repeat(8)}08${'00'.repeat(LESSONS.length - 9)}`;
     let sum = 0;
     for (const [i, ch] of [...hex].entries()) sum = (sum + (i + 1) * parseInt(ch, 16)) % 251;
-    const code = ['RT1', ...hex.match(/.{4}/g), sum.toString(16).toUpperCase().padStart(2, '0')].join('-');
+    const code = ['RT1', ...hex.match(/.{1,4}/g), sum.toString(16).toUpperCase().padStart(2, '0')].join('-');
     expect(readProgressCode(code, LESSONS).problem).toBe('page 08 has no task 4');
   });
 });

@@ -1,0 +1,86 @@
+/**
+ * Path tracing's benchmark (part of `npm run bench`): samples per second on
+ * one core at 320×240 (each sample a whole path, its bounces until the lamp,
+ * the sky, absorption or the roulette), and the heap allocated per sample.
+ * Three scenes: sketch 16's Cornell box (planes, boxes, a fuzzy mirror ball:
+ * long paths in a closed room), the class's example (balls under a sky:
+ * short paths) and sketch 17's 90 balls (each path tests every ball). Figures are printed, never asserted (docs/path-tracing.md).
+ */
+import { performance } from 'node:perf_hooks';
+import { GCProfiler, getHeapStatistics } from 'node:v8';
+import { Scene, Plane, Box, Sphere, Camera, classScene, pathTrace } from '../lib/index.js';
+
+const WHITE = [0.73, 0.73, 0.73];
+
+/** Sketch 16's room, as the page builds it with its lamp at 8. */
+function cornellBox() {
+  const scene = new Scene({ background: [0, 0, 0] });
+  scene.add(new Plane([0, 0, 0], [0, 1, 0], { color: WHITE, name: 'floor' }));
+  scene.add(new Plane([0, 10, 0], [0, -1, 0], { color: WHITE, name: 'ceiling' }));
+  scene.add(new Plane([0, 0, -20], [0, 0, 1], { color: WHITE, name: 'back wall' }));
+  scene.add(new Plane([0, 0, 5], [0, 0, -1], { color: WHITE, name: 'front wall' }));
+  scene.add(new Plane([-5, 0, 0], [1, 0, 0], { color: [0.65, 0.05, 0.05], name: 'red wall' }));
+  scene.add(new Plane([5, 0, 0], [-1, 0, 0], { color: [0.12, 0.45, 0.15], name: 'green wall' }));
+  scene.add(new Box([-2.5, 9.8, -17], [2.5, 9.99, -12], { color: [0, 0, 0], emission: [8, 8, 7.2], name: 'lamp' }));
+  scene.add(new Box([-3.6, 0, -18], [-0.8, 6, -15], { color: WHITE, name: 'tall block' }));
+  scene.add(new Sphere([2.2, 1.8, -13], 1.8, { color: [0.9, 0.9, 0.9], reflection: 1, fuzz: 0.05, name: 'mirror ball' }));
+  return { scene, camera: new Camera({ width: 320, height: 240, fov: 40, position: [0, 5, 3.7] }) };
+}
+
+/** Sketch 17's scene, *Ray Tracing in One Weekend*'s last picture small: 90 balls on a ground ball under the book's sky. */
+function oneWeekend() {
+  let state = 7;
+  const random = () => { state = (Math.imul(state, 1664525) + 1013904223) >>> 0; return state / 2 ** 32; };
+  const scene = new Scene({ background: [0.7, 0.8, 1] });
+  scene.add(new Sphere([0, -1000, 0], 1000, { color: [0.5, 0.5, 0.5] }));
+  for (let a = -5; a < 5; a++) {
+    for (let b = -5; b < 5; b++) {
+      const center = [a + 0.9 * random(), 0.2, b + 0.9 * random()], pick = random();
+      if (![[4, 0], [0, 0], [-4, 0]].every(([x, z]) => Math.hypot(center[0] - x, center[2] - z) > 1.2)) continue;
+      if (pick < 0.8) scene.add(new Sphere(center, 0.2, { color: [random() * random(), random() * random(), random() * random()] }));
+      else if (pick < 0.95) scene.add(new Sphere(center, 0.2, { color: [0.5 + random() / 2, 0.5 + random() / 2, 0.5 + random() / 2], reflection: 1, fuzz: random() / 2 }));
+      else scene.add(new Sphere(center, 0.2, { transparency: 1, ior: 1.5 }));
+    }
+  }
+  scene.add(new Sphere([0, 1, 0], 1, { transparency: 1, ior: 1.5 }));
+  scene.add(new Sphere([-4, 1, 0], 1, { color: [0.4, 0.2, 0.1] }));
+  scene.add(new Sphere([4, 1, 0], 1, { color: [0.7, 0.6, 0.5], reflection: 1 }));
+  return { scene, camera: new Camera({ width: 320, height: 240, fov: 20, position: [13, 2, 3], yaw: -77, pitch: -8.5 }) };
+}
+
+/** Bytes the heap grew by while `work` ran, plus what the collections meanwhile freed. */
+function bytesAllocatedBy(work) {
+  const profiler = new GCProfiler();
+  profiler.start();
+  const before = getHeapStatistics().used_heap_size;
+  work();
+  const after = getHeapStatistics().used_heap_size;
+  const freed = profiler.stop().statistics.reduce((sum, gc) => sum + gc.beforeGC.heapStatistics.usedHeapSize - gc.afterGC.heapStatistics.usedHeapSize, 0);
+  return after - before + freed;
+}
+
+const median = (values) => [...values].sort((a, b) => a - b)[values.length >> 1];
+
+/** Samples per second and bytes per sample of one scene at 320×240, `samples` paths a pixel a frame. */
+function measure(label, { scene, camera }, options) {
+  const paths = camera.width * camera.height * options.samples;
+  for (let i = 0; i < 2; i++) pathTrace(scene, camera, options); // warm up
+  const times = [];
+  for (let i = 0; i < 5; i++) {
+    const start = performance.now();
+    pathTrace(scene, camera, options);
+    times.push(performance.now() - start);
+  }
+  const bytes = bytesAllocatedBy(() => pathTrace(scene, camera, options));
+  const rate = paths / (median(times) / 1000);
+  console.log(`  ${label.padEnd(44)} ${(rate / 1e6).toFixed(2).padStart(6)} M samples/s ${(rate / (camera.width * camera.height)).toFixed(1).padStart(7)} samples/pixel/s ${(bytes / paths).toFixed(2).padStart(8)} B/sample`);
+}
+
+export function runPathBench() {
+  console.log('\nPath tracing, one core, 320×240 (pathTrace; median of 5 frames; heap per sample over one more):');
+  measure('Cornell box (sketch 16), 4 samples, 16 bounces', cornellBox(), { samples: 4, maxBounces: 16 });
+  measure('Cornell box, 1 bounce (direct light only)', cornellBox(), { samples: 4, maxBounces: 1 });
+  const scene = classScene();
+  measure('the class scene under its sky, 4 samples', { scene, camera: new Camera({ width: 320, height: 240 }) }, { samples: 4 });
+  measure('One weekend\'s final scene (sketch 17), 2 samples', oneWeekend(), { samples: 2, sky: { top: [0.5, 0.7, 1], bottom: [1, 1, 1] } });
+}
