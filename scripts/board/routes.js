@@ -1,0 +1,167 @@
+/**
+ * The class board's routes on the class server (a connect middleware):
+ *
+ *   GET  /board?key=K            the teacher's board (./page/board.html)
+ *   GET  /board/state?key=K      what the board shows, as JSON
+ *   GET  /board/events?key=K     the same, pushed live (Server-Sent Events)
+ *   GET  /board/class.csv?key=K  every submission of the class, as CSV
+ *   POST /board/clear?key=K      archive the class and start a new one
+ *   POST /class/hello            a student's page: its laptop's name on the board
+ *   POST /class/send             a student's page: one submission (./checks.js)
+ *
+ * The board's routes answer 403 without the key. A student's routes take
+ * only what a laptop sends and answer with that laptop's own name: no route
+ * for students reads anyone's answers.
+ */
+import { createHash, timingSafeEqual } from 'node:crypto';
+import { readFileSync } from 'node:fs';
+import { checkSubmission, checkHello, BadSubmission, BODY_MAX_BYTES } from './checks.js';
+import { BoardFullError } from './store.js';
+import { RateLimit, LAPTOP_LIMIT, ADDRESS_LIMIT } from './limits.js';
+import { boardCSV } from './csv.js';
+
+/**
+ * Every path the board adds to the class server: a path, or a folder when it
+ * ends in `/` (everything under it). A list of what the class server serves
+ * includes these.
+ */
+export const BOARD_ROUTES = ['/board', '/board/', '/class/', '/scripts/board/page/', '/poll.html', '/poll.js'];
+
+/** Where a student's page sends (the meta tag the class server puts in every page names it). */
+export const STUDENT_ROUTE = '/class/';
+
+const BOARD_PAGE = new URL('./page/board.html', import.meta.url);
+const SECURITY = {
+  'Cache-Control': 'no-store',
+  'Referrer-Policy': 'no-referrer', // the key stays out of any Referer
+  'X-Content-Type-Options': 'nosniff',
+};
+const BOARD_POLICY = "default-src 'self'; img-src 'self' data:; style-src 'self'; script-src 'self'; connect-src 'self'; frame-ancestors 'none'";
+const HEARTBEAT_MS = 15_000;
+const PUSH_AFTER_MS = 100; // a burst of submits makes one push, at most this late
+
+/**
+ * @param {{ store: import('./store.js').BoardStore, key: string, limits?: { laptop: RateLimit, address: RateLimit } }} options
+ * @returns {(req: any, res: any, next: () => void) => void} with `.close()` ending the live streams
+ */
+export function boardRoutes({ store, key, limits = { laptop: new RateLimit(LAPTOP_LIMIT), address: new RateLimit(ADDRESS_LIMIT) } }) {
+  const live = liveStreams(() => JSON.stringify(store.state()));
+  const keyed = hashOf(key);
+  const hasKey = (url) => timingSafeEqual(hashOf(url.searchParams.get('key') ?? ''), keyed);
+
+  const board = {
+    'GET /board': (req, res) => send(res, 200, readFileSync(BOARD_PAGE), { 'Content-Type': 'text/html; charset=utf-8', 'Content-Security-Policy': BOARD_POLICY }),
+    'GET /board/state': (req, res) => json(res, 200, store.state()),
+    'GET /board/events': (req, res) => live.add(req, res),
+    'GET /board/class.csv': (req, res) => {
+      const { id, started } = store.currentClass;
+      send(res, 200, boardCSV(store.rows()), { 'Content-Type': 'text/csv; charset=utf-8', 'Content-Disposition': `attachment; filename="class-${id}-${started.slice(0, 10)}.csv"` });
+    },
+    'POST /board/clear': (req, res) => { json(res, 200, { class: store.clear() }); live.changed(); },
+  };
+  const student = {
+    'POST /class/hello': (req, res, body) => {
+      const { laptop, nickname } = checkHello(body);
+      const wait = limits.laptop.take(laptop);
+      if (wait) return tooMany(res, wait);
+      json(res, 200, store.hello(laptop, nickname));
+    },
+    'POST /class/send': (req, res, body) => {
+      const submission = checkSubmission(body);
+      const wait = limits.laptop.take(submission.laptop);
+      if (wait) return tooMany(res, wait);
+      const { name, number, stored } = store.add(submission); // on disk when it returns
+      json(res, 200, { received: true, name, number, again: !stored });
+      if (stored) live.changed();
+    },
+  };
+
+  const middleware = (req, res, next) => {
+    const url = new URL(req.url ?? '/', 'http://class');
+    const route = `${req.method} ${url.pathname}`;
+    if (url.pathname === '/board' || url.pathname.startsWith('/board/')) {
+      if (!hasKey(url)) return send(res, 403, 'This is the teacher\'s class board: its address, with its key, is in the terminal of npm run class.', { 'Content-Type': 'text/plain; charset=utf-8' });
+      if (!board[route]) return send(res, 404, 'Not found', { 'Content-Type': 'text/plain; charset=utf-8' });
+      try { return board[route](req, res); } catch (error) { return answerError(res, error); }
+    }
+    if (!url.pathname.startsWith(STUDENT_ROUTE)) return next();
+    if (!student[route]) return json(res, 404, { error: 'not a route of the class board' });
+    const wait = limits.address.take(req.socket?.remoteAddress ?? '?');
+    if (wait) return tooMany(res, wait);
+    readJSON(req).then((body) => student[route](req, res, body)).catch((error) => answerError(res, error));
+  };
+  middleware.close = () => live.close();
+  return middleware;
+}
+
+/** The streams of the boards open now; `changed()` pushes the new state to each, a burst of changes once. */
+function liveStreams(stateText) {
+  const streams = new Set();
+  let timer = null;
+  const push = () => {
+    timer = null;
+    if (streams.size === 0) return;
+    const event = `event: state\ndata: ${stateText()}\n\n`;
+    for (const res of streams) res.write(event);
+  };
+  const heartbeat = setInterval(() => { for (const res of streams) res.write(': still here\n\n'); }, HEARTBEAT_MS);
+  heartbeat.unref?.();
+  return {
+    add(req, res) {
+      res.writeHead(200, { ...SECURITY, 'Content-Type': 'text/event-stream; charset=utf-8', Connection: 'keep-alive', 'X-Accel-Buffering': 'no' });
+      res.write(`retry: 1000\nevent: state\ndata: ${stateText()}\n\n`);
+      streams.add(res);
+      req.on('close', () => streams.delete(res));
+    },
+    changed() { timer ??= setTimeout(push, PUSH_AFTER_MS); },
+    close() {
+      clearInterval(heartbeat);
+      clearTimeout(timer ?? undefined);
+      for (const res of streams) res.end();
+      streams.clear();
+    },
+  };
+}
+
+/** The request's body as JSON: at most BODY_MAX_BYTES, sent as application/json. */
+function readJSON(req) {
+  return new Promise((done, fail) => {
+    if (!/^application\/json\b/i.test(req.headers['content-type'] ?? '')) return fail(new BadSubmission('send JSON (Content-Type: application/json)'));
+    const chunks = [];
+    let size = 0;
+    req.on('data', (chunk) => {
+      size += chunk.length;
+      if (size > BODY_MAX_BYTES) {
+        fail(Object.assign(new BadSubmission(`the submission is too long: at most ${BODY_MAX_BYTES} bytes`), { status: 413 }));
+        req.destroy();
+      } else chunks.push(chunk);
+    });
+    req.on('end', () => {
+      try { done(JSON.parse(Buffer.concat(chunks).toString('utf8'))); } catch { fail(new BadSubmission('the submission is not JSON')); }
+    });
+    req.on('error', fail);
+  });
+}
+
+function answerError(res, error) {
+  if (res.headersSent || res.destroyed) return;
+  if (error instanceof BadSubmission) return json(res, error.status ?? 400, { error: error.message });
+  if (error instanceof BoardFullError) return json(res, 507, { error: `${error.message}: ask your teacher` });
+  console.error('class board:', error);
+  json(res, 500, { error: 'the class board could not store it: it will be sent again' });
+}
+
+function tooMany(res, seconds) {
+  json(res, 429, { error: `too many sends from this laptop: the next in ${seconds} s`, retryAfter: seconds }, { 'Retry-After': String(seconds) });
+}
+
+function json(res, status, value, headers = {}) {
+  send(res, status, JSON.stringify(value), { 'Content-Type': 'application/json; charset=utf-8', ...headers });
+}
+
+function send(res, status, body, headers) {
+  res.writeHead(status, { ...SECURITY, ...headers });
+  res.end(body);
+}
+
+const hashOf = (text) => createHash('sha256').update(String(text)).digest();
