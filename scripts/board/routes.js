@@ -126,17 +126,20 @@ function liveStreams(stateText) {
 /** The request's body as JSON: at most BODY_MAX_BYTES, sent as application/json. */
 function readJSON(req) {
   return new Promise((done, fail) => {
-    if (!/^application\/json\b/i.test(req.headers['content-type'] ?? '')) return fail(new BadSubmission('send JSON (Content-Type: application/json)'));
+    if (!/^application\/json\b/i.test(req.headers['content-type'] ?? '')) {
+      req.resume();
+      return fail(new BadSubmission('send JSON (Content-Type: application/json)'));
+    }
+    const tooLong = () => Object.assign(new BadSubmission(`the submission is too long: at most ${BODY_MAX_BYTES} bytes`), { status: 413 });
     const chunks = [];
     let size = 0;
     req.on('data', (chunk) => {
       size += chunk.length;
-      if (size > BODY_MAX_BYTES) {
-        fail(Object.assign(new BadSubmission(`the submission is too long: at most ${BODY_MAX_BYTES} bytes`), { status: 413 }));
-        req.destroy();
-      } else chunks.push(chunk);
+      if (size <= BODY_MAX_BYTES) chunks.push(chunk);
+      else if (size > 64 * BODY_MAX_BYTES) req.destroy(); // read to its end to answer 413, but not forever
     });
     req.on('end', () => {
+      if (size > BODY_MAX_BYTES) return fail(tooLong());
       try { done(JSON.parse(Buffer.concat(chunks).toString('utf8'))); } catch { fail(new BadSubmission('the submission is not JSON')); }
     });
     req.on('error', fail);
