@@ -52,15 +52,17 @@ export function joinClassBoard() {
   }
   const outbox = new Outbox(route);
   const bar = nameBar(outbox);
-  document.addEventListener('rt-answer', (/** @type {CustomEvent} */ e) => {
-    if (e.detail?.submitted && e.detail.send) outbox.add({ kind: 'answer', ...e.detail.send }, /** @type {Element} */ (e.target));
+  /** @param {string} type @param {(detail: any, target: Element) => void} handle */
+  const on = (type, handle) => document.addEventListener(type, (event) => handle(/** @type {CustomEvent} */ (event).detail ?? {}, /** @type {Element} */ (event.target)));
+  on('rt-answer', (detail, target) => {
+    if (detail.submitted && detail.send) outbox.add({ kind: 'answer', ...detail.send }, target);
   });
-  document.addEventListener('rt-task', (/** @type {CustomEvent} */ e) => {
-    for (const task of e.detail?.tasks ?? []) outbox.add({ kind: 'task', page: e.detail.page, task }, /** @type {Element} */ (e.target));
+  on('rt-task', (detail, target) => {
+    for (const task of detail.tasks ?? []) outbox.add({ kind: 'task', page: detail.page, task }, target);
   });
-  document.addEventListener('rt-check', (/** @type {CustomEvent} */ e) => {
+  on('rt-check', (detail, target) => {
     const page = /\/(\d\d)-[^/]*$/.exec(location.pathname)?.[1];
-    if (page) outbox.add({ kind: 'check', page, passed: Boolean(e.detail?.passed), toFix: e.detail?.toFix ?? 0 }, /** @type {Element} */ (e.target));
+    if (page) outbox.add({ kind: 'check', page, passed: Boolean(detail.passed), toFix: detail.toFix ?? 0 }, target);
   });
   addEventListener('online', () => outbox.flush());
   outbox.hello(bar);
@@ -216,7 +218,7 @@ function nameBar(outbox) {
   const input = element('input', { type: 'text', id: 'rt-class-nickname', maxlength: '40', autocomplete: 'nickname', value: nickname() ?? '' });
   const form = element('form', { class: 'rt-class-name' },
     element('label', { for: 'rt-class-nickname' }, 'Your name on the board'), input,
-    element('button', { type: 'submit', class: 'rt-button' }, 'Save'));
+    element('button', { type: 'submit', class: 'rt-button' }, 'Save name'));
   const problem = element('span', { class: 'rt-class-problem', role: 'status' });
   const poll = /\/poll\.html$/.test(location.pathname) ? null : element('a', { href: new URL('/poll.html', location.href).href }, 'The lesson\'s poll');
   const bar = element('aside', { class: 'rt-class-bar', 'aria-label': 'Class board' },
