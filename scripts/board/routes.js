@@ -46,6 +46,7 @@ const PUSH_AFTER_MS = 100; // a burst of submits makes one push, at most this la
  */
 export function boardRoutes({ store, key, limits = { laptop: new RateLimit(LAPTOP_LIMIT), address: new RateLimit(ADDRESS_LIMIT) } }) {
   const live = liveStreams(() => JSON.stringify(store.state()));
+  const keep = groupCommit((submissions) => store.addMany(submissions));
   const keyed = hashOf(key);
   const hasKey = (url) => timingSafeEqual(hashOf(url.searchParams.get('key') ?? ''), keyed);
 
@@ -66,11 +67,11 @@ export function boardRoutes({ store, key, limits = { laptop: new RateLimit(LAPTO
       if (wait) return tooMany(res, wait);
       json(res, 200, store.hello(laptop, nickname));
     },
-    'POST /class/send': (req, res, body) => {
+    'POST /class/send': async (req, res, body) => {
       const submission = checkSubmission(body);
       const wait = limits.laptop.take(submission.laptop);
       if (wait) return tooMany(res, wait);
-      const { name, number, stored } = store.add(submission); // on disk when it returns
+      const { name, number, stored } = await keep(submission); // on disk when it resolves
       json(res, 200, { received: true, name, number, again: !stored });
       if (stored) live.changed();
     },
@@ -92,6 +93,32 @@ export function boardRoutes({ store, key, limits = { laptop: new RateLimit(LAPTO
   };
   middleware.close = () => live.close();
   return middleware;
+}
+
+/**
+ * Group commit: the submissions that arrive while the database flushes one
+ * transaction to the disk (better-sqlite3 holds the event loop meanwhile) go
+ * together into the next, each told "received" once it is on disk.
+ * @template T, R
+ * @param {(items: T[]) => R[]} write
+ * @returns {(item: T) => Promise<R>}
+ */
+export function groupCommit(write) {
+  let queue = [];
+  const flush = () => {
+    const taken = queue;
+    queue = [];
+    try {
+      const results = write(taken.map((t) => t.item));
+      taken.forEach((t, i) => t.resolve(results[i]));
+    } catch (error) {
+      for (const t of taken) t.reject(error);
+    }
+  };
+  return (item) => new Promise((resolve, reject) => {
+    queue.push({ item, resolve, reject });
+    if (queue.length === 1) setImmediate(flush);
+  });
 }
 
 /** The streams of the boards open now; `changed()` pushes the new state to each, a burst of changes once. */

@@ -13,7 +13,7 @@ import { checkSubmission, checkHello, BadSubmission, NICKNAME_MAX } from '../../
 import { judgeAnswer } from '../../scripts/board/judge.js';
 import { openStore, BoardFullError } from '../../scripts/board/store.js';
 import { RateLimit } from '../../scripts/board/limits.js';
-import { boardRoutes, BOARD_ROUTES } from '../../scripts/board/routes.js';
+import { boardRoutes, BOARD_ROUTES, groupCommit } from '../../scripts/board/routes.js';
 import { boardCSV } from '../../scripts/board/csv.js';
 import { folderFrom, boardKey } from '../../scripts/board/setup.js';
 
@@ -126,6 +126,18 @@ describe('the store', () => {
     expect(full.message).toMatch(/full/);
     expect(store.state().answers.length).toBeGreaterThan(100);
     store.close();
+  });
+});
+
+describe('group commit', () => {
+  it('writes what arrives together in one transaction, each told its own result; a failed write fails each', async () => {
+    const writes = [];
+    const keep = groupCommit((items) => { writes.push(items); return items.map((i) => i * 10); });
+    expect(await Promise.all([keep(1), keep(2), keep(3)])).toEqual([10, 20, 30]);
+    expect(await keep(4)).toBe(40);
+    expect(writes).toEqual([[1, 2, 3], [4]]);
+    const failing = groupCommit(() => { throw new BoardFullError('full'); });
+    await expect(Promise.all([failing(1), failing(2)])).rejects.toThrow('full');
   });
 });
 

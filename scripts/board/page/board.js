@@ -61,9 +61,17 @@ function connect() {
   const status = $('[data-live]');
   const say = (state, text) => { status.dataset.live = state; status.textContent = text; };
   const events = new EventSource(withKey('/board/events'));
+  let newest = null; // states that come faster than frames: only the newest is drawn
   events.addEventListener('state', (e) => {
-    show(JSON.parse(/** @type {MessageEvent} */ (e).data));
-    say('live', `Live: updated ${new Date().toLocaleTimeString()}`);
+    const waiting = newest !== null;
+    newest = /** @type {MessageEvent} */ (e).data;
+    if (waiting) return;
+    requestAnimationFrame(() => {
+      const text = newest;
+      newest = null;
+      show(JSON.parse(text));
+      say('live', `Live: updated ${new Date().toLocaleTimeString()}`);
+    });
   });
   events.addEventListener('error', () => say('reconnecting', 'Reconnecting to the class server…'));
 }
