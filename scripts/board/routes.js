@@ -38,7 +38,7 @@ const SECURITY = {
 };
 const BOARD_POLICY = "default-src 'self'; img-src 'self' data:; style-src 'self'; script-src 'self'; connect-src 'self'; frame-ancestors 'none'";
 const HEARTBEAT_MS = 15_000;
-const PUSH_AFTER_MS = 100; // a burst of submits makes one push, at most this late
+const PUSH_AFTER_MS = 250; // a burst of submits makes one push, at most this late
 
 /**
  * @param {{ store: import('./store.js').BoardStore, key: string, limits?: { laptop: RateLimit, address: RateLimit } }} options
@@ -72,7 +72,7 @@ export function boardRoutes({ store, key, limits = { laptop: new RateLimit(LAPTO
       const wait = limits.laptop.take(submission.laptop);
       if (wait) return tooMany(res, wait);
       const { name, number, stored } = await keep(submission); // on disk when it resolves
-      json(res, 200, { received: true, name, number, again: !stored });
+      json(res, 200, { received: true, name, number, again: !stored }, { 'Server-Timing': `board;dur=${(performance.now() - req.boardStart).toFixed(1)}` });
       if (stored) live.changed();
     },
   };
@@ -87,6 +87,7 @@ export function boardRoutes({ store, key, limits = { laptop: new RateLimit(LAPTO
     }
     if (!url.pathname.startsWith(STUDENT_ROUTE)) return next();
     if (!student[route]) return json(res, 404, { error: 'not a route of the class board' });
+    req.boardStart = performance.now();
     const wait = limits.address.take(req.socket?.remoteAddress ?? '?');
     if (wait) return tooMany(res, wait);
     readJSON(req).then((body) => student[route](req, res, body)).catch((error) => answerError(res, error));

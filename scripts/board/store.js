@@ -1,8 +1,11 @@
 /**
  * The class board's database: one SQLite file (better-sqlite3) in the
- * teacher's folder. Write-ahead log with synchronous = FULL: a submit is
- * answered only after its transaction is on disk, so a crash of the server
- * (kill -9), or of the computer, loses nothing a student was told was received.
+ * teacher's folder. Write-ahead log with synchronous = NORMAL: a submit is
+ * answered only after its transaction is committed to the log file, so a
+ * crash of the server (kill -9, a closed terminal) loses nothing a student was
+ * told was received. (FULL would also survive a power cut of the teacher's
+ * computer, at the price of a flush to the disk per commit: measured here 8 ms
+ * median, 27 ms at p95, during which the server answers nobody.)
  *
  * One table of what students sent, each row once: (class, laptop, id) is its
  * key, the id made by the student's page, so a page that sends again what it
@@ -44,7 +47,7 @@ export function openStore(folder, { Database, maxBytes = DATABASE_MAX_BYTES }) {
   mkdirSync(folder, { recursive: true });
   const db = new Database(join(folder, DATABASE_FILE));
   db.pragma('journal_mode = WAL');
-  db.pragma('synchronous = FULL'); // each commit reaches the disk before the student hears "received"
+  db.pragma('synchronous = NORMAL'); // each commit is in the log file before the student hears "received"
   db.pragma('foreign_keys = ON');
   const pageSize = db.pragma('page_size', { simple: true });
   db.pragma(`max_page_count = ${Math.max(16, Math.floor(maxBytes / pageSize))}`);

@@ -1,7 +1,9 @@
 import { describe, it, expect } from 'vitest';
 import { spawn } from 'node:child_process';
 import { createServer } from 'node:net';
-import { networkInterfaces } from 'node:os';
+import { networkInterfaces, tmpdir } from 'node:os';
+import { mkdtempSync } from 'node:fs';
+import { join } from 'node:path';
 import { classroomAddresses, portFrom } from '../../scripts/class.js';
 
 describe('npm run class', () => {
@@ -24,7 +26,8 @@ describe('npm run class', () => {
 
   it('serves the gallery on the network and prints the address students type', async () => {
     const port = await freePort();
-    const child = spawn(process.execPath, ['scripts/class.js', '--port', String(port)], { stdio: ['ignore', 'pipe', 'pipe'] });
+    const data = mkdtempSync(join(tmpdir(), 'class-script-')); // the class board's folder: not the teacher's
+    const child = spawn(process.execPath, ['scripts/class.js', '--port', String(port), '--data', data], { stdio: ['ignore', 'pipe', 'pipe'] });
     try {
       let output = '';
       const address = await new Promise((resolveAddress, reject) => {

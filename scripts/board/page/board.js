@@ -34,9 +34,19 @@ function show(state) {
   showMarks($('[data-marks]'), answers, state.class.id);
   showLatest(answers);
   showSpread($('[data-spread]'), answers);
-  showPoll($('[data-poll]'), state.poll);
-  showHomework($('[data-homework]'), state.homework, state.students.length);
-  showTasks($('[data-tasks]'), state.tasks, state.students.length);
+  const n = state.students.length;
+  whenChanged('poll', state.poll, () => showPoll($('[data-poll]'), state.poll));
+  whenChanged('homework', [state.homework, n], () => showHomework($('[data-homework]'), state.homework, n));
+  whenChanged('tasks', [state.tasks, n], () => showTasks($('[data-tasks]'), state.tasks, n));
+}
+
+/** Draws a part again only when what it shows changed (a burst of answers leaves the others as they are). */
+const drawn = new Map();
+function whenChanged(part, value, draw) {
+  const text = JSON.stringify(value);
+  if (drawn.get(part) === text) return;
+  drawn.set(part, text);
+  draw();
 }
 
 /** The ten newest answers, newest first, in words. */
