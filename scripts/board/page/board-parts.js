@@ -29,25 +29,36 @@ function bar(share, className = '') {
 const median = (sorted) => (sorted.length % 2 ? sorted[(sorted.length - 1) / 2] : (sorted[sorted.length / 2 - 1] + sorted[sorted.length / 2]) / 2);
 const angle = (n) => `${Math.round(n * 10) / 10}°`;
 
+/** The rows of the spread, made once: the words and a strip of dots each; dots are added, not drawn again. */
+const spread = { rows: null, dots: 0, classId: null };
+
 /** H and V of the answers: range and median of each, for all and for the right ones, and a dot strip of each. */
-export function showSpread(host, answers) {
-  if (answers.length === 0) return void host.replaceChildren(make('p', 'No answer yet.'));
-  const rows = [['H', 'h', -180, 180], ['V', 'v', -90, 90]].map(([label, field, min, max]) => {
+export function showSpread(host, answers, classId) {
+  if (!spread.rows || spread.classId !== classId) {
+    spread.classId = classId;
+    spread.dots = 0;
+    spread.rows = [['H', 'h', -180, 180], ['V', 'v', -90, 90]].map(([label, field, min, max]) => {
+      const words = make('span');
+      const strip = make('span', '', 'strip');
+      strip.ariaHidden = 'true';
+      const row = make('p', '', 'spread-row');
+      row.append(make('b', String(label)), words, strip);
+      return { field, min, max, words, strip, row };
+    });
+    host.replaceChildren(...spread.rows.map((r) => r.row));
+  }
+  for (const { field, min, max, words, strip } of spread.rows) {
     const all = answers.map((a) => a[field]).sort((a, b) => a - b);
     const right = answers.filter((a) => a.verdict === 'right').map((a) => a[field]).sort((a, b) => a - b);
     const say = (list) => (list.length ? `${angle(list[0])} to ${angle(list[list.length - 1])}, median ${angle(median(list))}` : 'none yet');
-    const strip = make('span', '', 'strip');
-    strip.ariaHidden = 'true';
-    for (const a of answers) {
+    words.textContent = answers.length ? ` all ${say(all)}; right ${say(right)}` : ' no answer yet';
+    for (const a of answers.slice(spread.dots)) {
       const dot = make('span', '', `dot ${a.verdict}`);
       dot.style.left = `${((a[field] - min) / (max - min)) * 100}%`;
       strip.append(dot);
     }
-    const row = make('p', '', 'spread-row');
-    row.append(make('b', label), ` all ${say(all)}; right ${say(right)}`, strip);
-    return row;
-  });
-  host.replaceChildren(...rows);
+  }
+  spread.dots = answers.length;
 }
 
 /** The poll's histogram: each option's count and bar. */

@@ -33,7 +33,7 @@ function show(state) {
   $('[data-count="not-yet"]').textContent = String(state.students.length - answered.size);
   showMarks($('[data-marks]'), answers, state.class.id);
   showLatest(answers);
-  showSpread($('[data-spread]'), answers);
+  showSpread($('[data-spread]'), answers, state.class.id);
   const n = state.students.length;
   whenChanged('poll', state.poll, () => showPoll($('[data-poll]'), state.poll));
   whenChanged('homework', [state.homework, n], () => showHomework($('[data-homework]'), state.homework, n));
