@@ -1,14 +1,19 @@
 /**
  * The class board on the class server (vite.config.js, mode "class" only):
  * opens the database in the board's folder, adds the board's routes
- * (./routes.js) before every other middleware, and marks every page it serves
- * with `<meta name="rt-class-board">`, the sign for a student's page
+ * (./routes.js) right after the class gate (which lets in BOARD_ROUTES
+ * only: vite.config.js), and marks every page it serves with
+ * `<meta name="rt-class-board">`, the sign for a student's page
  * (lib/p5/class-board.js) that it may send: without it (the static site,
  * `npm start`) a page sends nothing.
+ *
+ * Where better-sqlite3 could not be built (no compiler, no prebuilt binary),
+ * the board is off: the pages are served without the sign, and the board's
+ * routes answer 503 with the reason and what to run.
  */
 import { join } from 'node:path';
 import { openStore } from './store.js';
-import { boardRoutes, STUDENT_ROUTE } from './routes.js';
+import { boardRoutes, boardIsOff, STUDENT_ROUTE } from './routes.js';
 import { folderFrom, boardKey, loadDatabase } from './setup.js';
 
 /** @param {{ argv?: string[] }} [options] */
@@ -26,7 +31,10 @@ export function classBoard({ argv = process.argv } = {}) {
     },
     async configureServer(server) {
       const { Database, problem } = await loadDatabase();
-      if (!Database) return void server.config.logger.warn(problem);
+      if (!Database) {
+        server.config.logger.warn(problem);
+        return void server.middlewares.use(boardIsOff(problem));
+      }
       store = openStore(folder, { Database });
       routes = boardRoutes({ store, key: boardKey(folder) });
       server.middlewares.use(routes);

@@ -21,11 +21,21 @@ import { RateLimit, LAPTOP_LIMIT, ADDRESS_LIMIT } from './limits.js';
 import { boardCSV } from './csv.js';
 
 /**
- * Every path the board adds to the class server: a path, or a folder when it
- * ends in `/` (everything under it). A list of what the class server serves
- * includes these.
+ * What the class gate (scripts/class-gate.js) lets in for the board, as its
+ * own list is written: a path, its reason, its methods (GET and HEAD when
+ * none are named). vite.config.js gives them to `classroom({ routes })`.
+ * A student's laptop may POST to its own routes only; the teacher's routes
+ * are on the list so that they can answer 403 without the key.
+ * @type {{ path: RegExp, why: string, methods?: string[] }[]}
  */
-export const BOARD_ROUTES = ['/board', '/board/', '/class/', '/scripts/board/page/', '/poll.html', '/poll.js'];
+export const BOARD_ROUTES = [
+  { path: /^\/board$/, why: 'the teacher\'s board (403 without the key in the terminal)' },
+  { path: /^\/board\/(state|events|class\.csv)$/, why: 'what the board shows, pushed live, and its CSV (403 without the key)' },
+  { path: /^\/board\/clear$/, methods: ['POST'], why: 'Clear the board: the class archived, a new one started (403 without the key)' },
+  { path: /^\/class\/(hello|send)$/, methods: ['POST'], why: 'a student\'s page: its name on the board, one submission (it reads nobody\'s answers)' },
+  { path: /^\/scripts\/board\/page\/[\w-]+\.(js|css)$/, why: 'the board page\'s script and style (nothing of the class in them)' },
+  { path: /^\/poll\.(html|js)$/, why: 'the lesson\'s poll, a student\'s page' },
+];
 
 /** Where a student's page sends (the meta tag the class server puts in every page names it). */
 export const STUDENT_ROUTE = '/class/';
@@ -94,6 +104,20 @@ export function boardRoutes({ store, key, limits = { laptop: new RateLimit(LAPTO
   };
   middleware.close = () => live.close();
   return middleware;
+}
+
+/**
+ * The board's routes where the database cannot be loaded: 503 with the
+ * reason (and what to run), not the gallery that Vite would send for an
+ * unknown path.
+ * @param {string} problem
+ */
+export function boardIsOff(problem) {
+  return function classBoardIsOff(req, res, next) {
+    const { pathname } = new URL(req.url ?? '/', 'http://class');
+    if (!(pathname === '/board' || pathname.startsWith('/board/') || pathname.startsWith(STUDENT_ROUTE))) return next();
+    send(res, 503, `${problem[0].toUpperCase()}${problem.slice(1)}\nThe pages are served as usual; nothing the students do is sent.\n`, { 'Content-Type': 'text/plain; charset=utf-8' });
+  };
 }
 
 /**

@@ -51,7 +51,7 @@ export async function loadDatabase() {
   try {
     return { Database: (await import('better-sqlite3')).default };
   } catch (error) {
-    return { problem: `the class board is off: better-sqlite3 could not be loaded (${String(error?.message ?? error).split('\n')[0]}). Run npm install, and see docs/class-board.md.` };
+    return { problem: `the class board is off: better-sqlite3 could not be loaded (${String(error?.message ?? error).split('\n')[0]}). To build it: npm rebuild better-sqlite3 (it needs a C++ compiler and Python; docs/class-board.md says more).` };
   }
 }
 

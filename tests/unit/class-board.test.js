@@ -15,6 +15,7 @@ import { openStore, BoardFullError } from '../../scripts/board/store.js';
 import { RateLimit } from '../../scripts/board/limits.js';
 import { boardRoutes, BOARD_ROUTES, groupCommit } from '../../scripts/board/routes.js';
 import { boardCSV } from '../../scripts/board/csv.js';
+import { isStudentRoute } from '../../scripts/class-gate.js';
 import { folderFrom, boardKey } from '../../scripts/board/setup.js';
 
 const LAPTOP = 'laptop-0001';
@@ -220,10 +221,14 @@ describe('the routes', () => {
     await reader.cancel();
   });
 
-  it('lists every route it answers, for the class server\'s list of what it serves', () => {
-    for (const path of ['/board', '/board/state', '/class/send', '/class/hello', '/scripts/board/page/board.js', '/poll.html']) {
-      expect(BOARD_ROUTES.some((r) => (r.endsWith('/') ? path.startsWith(r) : path === r)), path).toBe(true);
+  it('names every route it answers for the class gate, each with its reason, POST only where a page sends', () => {
+    const gate = (method, path) => isStudentRoute(method, path, BOARD_ROUTES);
+    for (const path of ['/board', '/board/state', '/board/events', '/board/class.csv', '/scripts/board/page/board.js', '/scripts/board/page/board.css', '/poll.html', '/poll.js']) {
+      expect([path, gate('GET', path), gate('POST', path)]).toEqual([path, true, false]);
     }
+    for (const path of ['/board/clear', '/class/send', '/class/hello']) expect([path, gate('POST', path), gate('GET', path)]).toEqual([path, true, false]);
+    for (const path of ['/board/', '/class/', '/class/state', '/scripts/board/store.js', '/scripts/board/page/board.html']) expect([path, gate('GET', path)]).toEqual([path, false]);
+    for (const route of BOARD_ROUTES) expect(route.why.length).toBeGreaterThan(10);
   });
 });
 
