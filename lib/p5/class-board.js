@@ -154,7 +154,7 @@ class Outbox {
       answer = await fetch(new URL('send', this.#route), { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify({ ...item, laptop: laptopId(), nickname: nickname() }) });
       body = await answer.json().catch(() => ({}));
     } catch {
-      return this.#later(item, 'Not sent yet: the class server cannot be reached. It is kept, and sent when it can be.');
+      return this.#later('Not sent yet: the class server cannot be reached. It is kept, and sent when it can be.');
     }
     if (answer.ok) {
       this.#drop(item);
@@ -163,17 +163,17 @@ class Outbox {
     }
     if (answer.status === 429) {
       const seconds = Number(body.retryAfter) || 5;
-      this.#say(item.id, `Not sent yet: too many sends from this laptop. It goes in ${seconds} s.`, 'waiting');
+      this.#sayWaiting(`Not sent yet: too many sends from this laptop. The next goes in ${seconds} s.`);
       return seconds * 1000;
     }
-    if (answer.status >= 500 && answer.status !== 507) return this.#later(item, `Not sent yet: ${body.error ?? `the class server answered ${answer.status}`}. It is sent again soon.`);
+    if (answer.status >= 500 && answer.status !== 507) return this.#later(`Not sent yet: ${body.error ?? `the class server answered ${answer.status}`}. It is sent again soon.`);
     this.#drop(item); // refused for good: sending it again would be refused again
     this.#say(item.id, `Not received: ${body.error ?? `the class server answered ${answer.status}`}.`, 'refused');
     return 0;
   }
 
-  #later(item, message) {
-    this.#say(item.id, message, 'waiting');
+  #later(message) {
+    this.#sayWaiting(message);
     return RETRY_MS[Math.min(this.#tries++, RETRY_MS.length - 1)];
   }
 
@@ -186,6 +186,11 @@ class Outbox {
     line.dataset.classSent = state;
     line.toggleAttribute('data-received', state === 'received');
     line.textContent = text;
+  }
+
+  /** Every line whose submission still waits (behind the one refused for now, they wait too): why. */
+  #sayWaiting(text) {
+    for (const { id } of this.#read()) this.#say(id, text, 'waiting');
   }
 
   /** Says hello to the board: the bar shows the name the teacher sees. */
