@@ -50,7 +50,8 @@ async function firstStudent(base) {
     await cdp.send('Network.enable');
     const urls = new Map();
     let bytes = 0;
-    cdp.on('Network.requestWillBeSent', (e) => { if (/^https?:/.test(e.request.url)) urls.set(e.requestId, e.request.url); });
+    // The files it reads: not what it sends (its hello to the class board, a POST).
+    cdp.on('Network.requestWillBeSent', (e) => { if (/^https?:/.test(e.request.url) && e.request.method === 'GET') urls.set(e.requestId, e.request.url); });
     cdp.on('Network.loadingFinished', (e) => { bytes += e.encodedDataLength; });
     const t0 = performance.now();
     await page.goto(base + PAGE);
