@@ -14,7 +14,7 @@ const inClass = joinClassBoard() !== null;
 useStyle();
 /** @type {HTMLElement} */ (document.querySelector('[data-poll-where]')).textContent = inClass
   ? 'Your teacher sees how many chose each answer; you may change yours: the last one counts.'
-  : 'This page is not served by the class server (npm run class): your answer stays here, nothing is sent.';
+  : 'This page is not connected to a class board (npm run class): your answer stays here, nothing is sent.';
 
 form.addEventListener('submit', (event) => {
   event.preventDefault();

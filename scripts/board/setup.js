@@ -43,17 +43,25 @@ export function boardKey(folder) {
 }
 
 /**
- * better-sqlite3's Database class, or why it cannot be loaded (it is an
- * optional dependency: a native module that must be built for this Node).
+ * better-sqlite3's Database class, or why it cannot be used. It is an
+ * optional dependency, a native module built (or downloaded) for this Node at
+ * `npm install`; where that fails, npm leaves it out without a word, and the
+ * class board is off. It loads its binary at the first database opened: one
+ * is opened here, in memory, so that a missing or foreign binary says so now.
  * @returns {Promise<{ Database?: any, problem?: string }>}
  */
 export async function loadDatabase() {
   try {
-    return { Database: (await import('better-sqlite3')).default };
+    const Database = (await import('better-sqlite3')).default;
+    new Database(':memory:').close();
+    return { Database };
   } catch (error) {
-    return { problem: `the class board is off: better-sqlite3 could not be loaded (${String(error?.message ?? error).split('\n')[0]}). To build it: npm rebuild better-sqlite3 (it needs a C++ compiler and Python; docs/class-board.md says more).` };
+    return { problem: `the class board is off: better-sqlite3 could not be loaded (${String(error?.message ?? error).split('\n')[0]}). ${HOW_TO_BUILD}` };
   }
 }
+
+/** What a teacher does where better-sqlite3 could not be built. */
+export const HOW_TO_BUILD = 'To build it: install a C++ compiler, make and Python (Debian, Ubuntu: sudo apt install build-essential python3; a Mac: xcode-select --install; Windows: the "Desktop development with C++" tools), then npm install; see docs/class-board.md.';
 
 /** What the terminal says about the board: its address (with the key) and its folder. */
 export function boardLines(folder, key, port) {

@@ -22,6 +22,8 @@ export async function startBoardServer({ data, port }) {
       output += d;
       const m = /(http:\/\/\S+\/board\?key=[\w-]+)/.exec(output);
       if (m) { clearTimeout(timer); ready(m[1]); }
+      const off = /^ {2}(the class board is off: .*)$/m.exec(output);
+      if (off) { clearTimeout(timer); fail(new Error(off[1])); } // better-sqlite3 not built here: say why, at once
     };
     child.stdout.on('data', read);
     child.stderr.on('data', read);
