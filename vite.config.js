@@ -4,6 +4,8 @@ import { resolve } from 'node:path';
 import { includeText, oneFileInDev, apiReference, apiLine, fromFileNotice } from './scripts/site-plugins.js';
 import { p5OfflineI18n } from './scripts/p5-offline-i18n.js';
 import { teachersAnswers, classroom } from './scripts/classroom.js';
+import { classBoard } from './scripts/board/plugin.js';
+import { BOARD_ROUTES } from './scripts/board/routes.js';
 import { reloadItsPagesOnly, swapSketchesInPlace, syntaxErrorsWhereTheyAre } from './scripts/vite-live-coding.js';
 import { longLinks } from './scripts/long-links.js';
 
@@ -30,8 +32,9 @@ export default defineConfig(({ command, mode }) => ({
   // The web editor's page, its one-file build, the API reference and each lesson's
   // "API:" line, and the notice a lesson page shows when opened from a file: scripts/site-plugins.js.
   // The answers and the class server's ways (compressed, revalidated, p5 minified): scripts/classroom.js.
+  // The class board (what students send, the teacher's /board): scripts/board/; its routes pass the class gate by name (BOARD_ROUTES).
   // A link too long for the server gets a page saying so (scripts/long-links.js).
-  plugins: [teachersAnswers({ served: command === 'serve' ? mode !== 'class' : withSolutions }), ...(mode === 'class' ? [classroom({ isolation })] : []), longLinks(),
+  plugins: [teachersAnswers({ served: command === 'serve' ? mode !== 'class' : withSolutions }), ...(mode === 'class' ? [classroom({ isolation, routes: BOARD_ROUTES }), classBoard()] : []), longLinks(),
     p5OfflineI18n(), reloadItsPagesOnly(), swapSketchesInPlace(), syntaxErrorsWhereTheyAre(), includeText(), oneFileInDev(), apiReference(), apiLine(), fromFileNotice()],
   optimizeDeps: { rolldownOptions: { plugins: [p5OfflineI18n()] } },
   build: {
@@ -39,7 +42,7 @@ export default defineConfig(({ command, mode }) => ({
     outDir: withSolutions ? 'dist-teacher' : 'dist',
     chunkSizeWarningLimit: 1500, // p5 itself is 1.3 MB: one library, loaded once per page
     rollupOptions: {
-      input: [resolve('index.html'), resolve('web-editor.html'), resolve('teacher.html'), ...sketchPages],
+      input: [resolve('index.html'), resolve('web-editor.html'), resolve('teacher.html'), resolve('poll.html'), ...sketchPages],
       // Generating the API reference and bundling the render workers is this build's own work, not a slow plugin
       // to report: the reference parses the kit's files only (scripts/api-reference.js), the rest is Vite's.
       checks: { bundlerTimings: false },

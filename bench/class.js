@@ -12,13 +12,21 @@
  * per student (headers and bodies, as read from the sockets), the time until
  * the last student had every file, failed requests, and 304s.
  *
- * The exit code is 1 when a request failed or a student's first visit is
- * over 2 MB; times are printed, never asserted (the machine is shared).
+ * Then the class board: one answer at a time, the time from its send to the
+ * board's live stream showing it; and 30 students sending ten answers each
+ * within ten seconds (tests/e2e/flood-students.js, a process of its own):
+ * each request's time on the wire and in the server, and how long after the
+ * last reply the board had every answer.
+ *
+ * The exit code is 1 when a request failed, a student's first visit is
+ * over 2 MB, or an answer of the flood was not stored once; times are
+ * printed, never asserted (the machine is shared).
  *
  * Options: --page sketches/NN-….html (default sketch 06), --students N
  * (default 30), --port N.
  */
 import http from 'node:http';
+import { spawn } from 'node:child_process';
 import { chromium } from '@playwright/test';
 import { findBrowser, HOW_TO_GET_ONE } from '../scripts/find-browser.js';
 import { startClassServer } from '../tests/e2e/class-server.js';
@@ -42,7 +50,8 @@ async function firstStudent(base) {
     await cdp.send('Network.enable');
     const urls = new Map();
     let bytes = 0;
-    cdp.on('Network.requestWillBeSent', (e) => { if (/^https?:/.test(e.request.url)) urls.set(e.requestId, e.request.url); });
+    // The files it reads: not what it sends (its hello to the class board, a POST).
+    cdp.on('Network.requestWillBeSent', (e) => { if (/^https?:/.test(e.request.url) && e.request.method === 'GET') urls.set(e.requestId, e.request.url); });
     cdp.on('Network.loadingFinished', (e) => { bytes += e.encodedDataLength; });
     const t0 = performance.now();
     await page.goto(base + PAGE);
@@ -112,6 +121,84 @@ function report(title, figures) {
   for (const f of figures.failed.slice(0, 5)) console.log(`  failed: ${f.status} ${f.url} ${f.error?.message ?? ''}`);
 }
 
+/** The board's live stream: `until(test)` resolves with the time (performance.now()) of the first state that passes. */
+async function boardStream(url) {
+  const stream = await fetch(url);
+  const reader = stream.body.getReader();
+  const decoder = new TextDecoder();
+  let text = '';
+  let waiting = null;
+  let latest = null;
+  (async () => {
+    for (;;) {
+      const { value, done } = await reader.read().catch(() => ({ done: true }));
+      if (done) return;
+      text += decoder.decode(value, { stream: true });
+      let end;
+      while ((end = text.indexOf('\n\n')) >= 0) {
+        const data = /^data: (.*)$/m.exec(text.slice(0, end))?.[1];
+        text = text.slice(end + 2);
+        if (!data) continue;
+        latest = JSON.parse(data);
+        if (waiting?.test(latest)) { waiting.done(performance.now()); waiting = null; }
+      }
+    }
+  })();
+  return {
+    until: (test) => new Promise((done) => { if (latest && test(latest)) done(performance.now()); else waiting = { test, done }; }),
+    close: () => reader.cancel(),
+  };
+}
+
+const median = (list) => [...list].sort((a, b) => a - b)[list.length >> 1];
+const slowest = (list) => Math.max(...list);
+const ms = (n) => `${n.toFixed(0)} ms`;
+
+/** The class board: single answers to the board, then the flood. Returns whether all went as it should. */
+async function classBoard(base, output) {
+  let key;
+  for (let i = 0; i < 100 && !key; i++) {
+    key = /\/board\?key=([\w-]+)/.exec(output())?.[1];
+    if (!key) await new Promise((r) => setTimeout(r, 100));
+  }
+  if (!key) { console.log(`\nthe class board is off:${output().split('the class board is off')[1]?.split('\n')[0] ?? ' no address printed'}`); return false; }
+  const board = await boardStream(`${base}board/events?key=${key}`);
+  const SCREEN = { width: 32, height: 24, fov: 30 };
+  const answer = (laptop, id, x, y) => ({ laptop, id, nickname: laptop, kind: 'answer', line: `Pixel: ${x},${y}; H: 0; V: 0`, ...SCREEN });
+  const post = (body) => fetch(`${base}class/send`, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(body) });
+  try {
+    const single = [];
+    for (let i = 0; i < 7; i++) {
+      const t0 = performance.now();
+      const sent = await post(answer('bench-one', `one${i}`, i, 3));
+      if (sent.status !== 200) { console.log(`\na single answer: ${sent.status}`); return false; }
+      const shown = await board.until((state) => state.answers.some((a) => a.line === `Pixel: ${i},3; H: 0; V: 0`));
+      single.push(shown - t0);
+    }
+    console.log(`\nthe class board, one answer at a time: on the board ${ms(median(single))} after its send (median of ${single.length}, slowest ${ms(slowest(single))}; the board pushes a burst once, within 250 ms)`);
+
+    const pixels = Array.from({ length: 32 * 24 }, (_, i) => ({ x: i % 32, y: Math.floor(i / 32) }));
+    const before = (await (await fetch(`${base}board/state?key=${key}`)).json()).answers.length;
+    const students = spawn(process.execPath, ['tests/e2e/flood-students.js', base, '30', '10', JSON.stringify(pixels)], { stdio: ['ignore', 'pipe', 'inherit'] });
+    let out = '';
+    students.stdout.on('data', (d) => { out += d; });
+    const all = board.until((state) => state.answers.length >= before + 300);
+    await new Promise((done) => students.on('exit', done));
+    const { seconds, results } = JSON.parse(out);
+    const current = await all;
+    const afterLastReply = performance.timeOrigin + current - Math.max(...results.map((r) => r.at)); // both in ms since the epoch
+    const stored = (await (await fetch(`${base}board/state?key=${key}`)).json()).answers.length - before;
+    const failed = results.filter((r) => r.status !== 200);
+    console.log('30 students, ten answers each within ten seconds (the fifth sent twice):');
+    console.log(`  ${results.length} requests in ${seconds.toFixed(1)} s, ${failed.length} not 200, ${stored} answers stored (300 expected)`);
+    console.log(`  on the wire: median ${ms(median(results.map((r) => r.ms)))}, slowest ${ms(slowest(results.map((r) => r.ms)))}; in the server: median ${ms(median(results.map((r) => r.server)))}, slowest ${ms(slowest(results.map((r) => r.server)))}`);
+    console.log(`  the board had every answer ${ms(Math.max(0, afterLastReply))} after the last reply`);
+    return failed.length === 0 && stored === 300;
+  } finally {
+    await board.close();
+  }
+}
+
 const server = await startClassServer(PORT);
 let broken;
 try {
@@ -123,8 +210,9 @@ try {
   const befores = cold.visits.map((v) => new Map(v.answers.map((a) => [a.url, a])));
   const again = await classVisits(first.urls, befores);
   report(`${STUDENTS} students, repeat visit (revalidated):`, again);
-  broken = cold.failed.length > 0 || again.failed.length > 0 || cold.maxBytes > LIMIT || first.bytes > LIMIT;
-  if (broken) console.log(`\nBROKEN: a failed request, or a visit over ${MB(LIMIT)}`);
+  const boardWorks = await classBoard(server.url, server.output);
+  broken = cold.failed.length > 0 || again.failed.length > 0 || cold.maxBytes > LIMIT || first.bytes > LIMIT || !boardWorks;
+  if (broken) console.log(`\nBROKEN: a failed request, a visit over ${MB(LIMIT)}, or the class board did not store every answer once`);
 } finally {
   await server.close();
 }

@@ -8,6 +8,7 @@
  *   npm run class -- --port 8080           another port
  *   npm run class -- --allow-host NAME     a name of this computer students may type
  *                                          (its own host name and NAME.local are always let in)
+ *   npm run class -- --data DIR            the class board's folder (scripts/board/setup.js)
  *
  * Students' laptops must be on the same network (Wi-Fi) as the teacher's, and
  * the teacher's firewall must let the port in. Ctrl+C stops the server.
@@ -17,6 +18,7 @@ import { networkInterfaces, hostname } from 'node:os';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { allowedHostsFrom, computerNames } from './class-gate.js';
+import { folderFrom, boardKey, boardLines, loadDatabase, FOLDER_VARIABLE } from './board/setup.js';
 
 const ROOT = resolve(import.meta.dirname, '..');
 
@@ -52,22 +54,23 @@ export function portFrom(argv) {
 }
 
 async function main() {
-  let port, names;
+  let port, names, folder;
   try {
     port = portFrom(process.argv);
     names = computerNames(hostname(), allowedHostsFrom(process.argv));
+    folder = folderFrom(process.argv); // the class board's (scripts/board/)
   } catch (error) {
     console.error(error.message);
     process.exit(2);
   }
-  const env = { ...process.env, SKETCHBOOK_CLASS_HOSTS: JSON.stringify(names) };
+  const env = { ...process.env, SKETCHBOOK_CLASS_HOSTS: JSON.stringify(names), [FOLDER_VARIABLE]: folder };
   const vite = spawn(join(ROOT, 'node_modules/.bin/vite'), ['--host', '--mode', 'class', '--port', String(port), '--strictPort'], { cwd: ROOT, env, stdio: ['inherit', 'pipe', 'inherit'] });
   let said = false;
   vite.stdout.on('data', async (chunk) => {
     process.stdout.write(chunk);
     if (said || !/ready in/i.test(String(chunk))) return;
     said = true;
-    setTimeout(() => sayWhereToGo(port, names), 200); // after Vite's own list of addresses
+    setTimeout(() => sayWhereToGo(port, names).then(() => sayWhereTheBoardIs(folder, port)), 200); // after Vite's own list of addresses
   });
   for (const signal of ['SIGINT', 'SIGTERM']) process.on(signal, () => vite.kill(signal));
   vite.on('exit', (code) => process.exit(code ?? 0));
@@ -93,6 +96,11 @@ async function sayWhereToGo(port, names) {
   }
   console.log('  If a laptop cannot reach it: the firewall of this computer must let port ' +
     `${port} in (the computer may ask the first time). Ctrl+C stops the server.\n`);
+}
+
+async function sayWhereTheBoardIs(folder, port) {
+  const { problem } = await loadDatabase();
+  console.log(problem ? `  ${problem}\n` : `${boardLines(folder, boardKey(folder), port)}\n`);
 }
 
 if (import.meta.url === pathToFileURL(process.argv[1] ?? '').href) main();

@@ -122,7 +122,8 @@ class CompressedCache {
  * has it already, and compresses a text body for a browser that accepts it.
  * An answer marked immutable (p5's pre-bundle: its URL names its version) is
  * kept as sent, and given again without asking Vite, which would make its
- * 8 MB source map again for each student.
+ * 8 MB source map again for each student. A live stream (Server-Sent Events:
+ * the class board's) never ends: it goes as it is written.
  */
 export function compressAndRevalidate(cache = new CompressedCache()) {
   const kept = new Map(); // URL → { headers, body } of immutable answers
@@ -140,6 +141,10 @@ export function compressAndRevalidate(cache = new CompressedCache()) {
       res.statusCode = status;
       if (Array.isArray(headers)) for (let i = 0; i < headers.length; i += 2) res.setHeader(headers[i], headers[i + 1]);
       else for (const [name, value] of Object.entries(headers ?? {})) res.setHeader(name, value);
+      if (/^text\/event-stream\b/.test(String(res.getHeader('content-type') ?? ''))) {
+        Object.assign(res, original);
+        return res.writeHead(status);
+      }
       return res;
     };
     const add = (chunk, encoding) => {

@@ -88,6 +88,8 @@ new p5((p) => {
     form.show({
       ok: pink, message, color: toHex(record.color), data: { result: pink ? 'pink' : 'not-pink', colorName: name },
       answer: answerText(answer), // what the student gave, in the slide's format
+      // Served by npm run class, a Check sends this to the teacher's board, which judges it again.
+      send: { line: answerText(answer), width: WIDTH, height: HEIGHT, fov: FOV, verdict: pink ? 'right' : 'wrong', color: toHex(record.color) },
       detail: `The ray through that pixel: H ${formatAngle(record.h)}, V ${formatAngle(record.v)} (the camera's angles plus the pixel's offset from the middle).`,
     });
   }

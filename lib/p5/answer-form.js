@@ -12,6 +12,7 @@
 import { valueBox } from './value-box.js';
 import { element, resolveParent, sketchNode, copyText } from './dom.js';
 import { checkOptions } from '../check.js';
+import { joinClassBoard } from './class-board.js';
 
 /**
  * Reads every box (each bad one shows its message): `{ name: value }`, or
@@ -43,7 +44,14 @@ export function createAnswerForm(p, options) {
   const boxes = Object.fromEntries(Object.entries(specs).map(([name, spec]) => [name, valueBox({ name, ...spec })]));
   const checkButton = element('button', { type: 'submit', class: 'rt-button', 'data-check': '' }, 'Check');
   const form = element('form', { class: 'boxes', novalidate: '' }, ...Object.values(boxes).map((b) => b.element), checkButton);
-  form.addEventListener('submit', (event) => { event.preventDefault(); takeTypedLine(); onCheck(); });
+  let byStudent = false; // a verdict shown while the student's own Check (or Enter) runs: what the class board gets
+  form.addEventListener('submit', (event) => {
+    event.preventDefault();
+    byStudent = true;
+    takeTypedLine();
+    try { onCheck(); } finally { byStudent = false; }
+  });
+  joinClassBoard(); // served by npm run class: a Check's answer goes to the teacher's board
   if (parse) {
     form.addEventListener('paste', (event) => {
       const values = parse(event.clipboardData?.getData('text/plain') ?? '');
@@ -109,9 +117,10 @@ export function createAnswerForm(p, options) {
     /**
      * The verdict: ✔ or ✘, a swatch of `color` (CSS, e.g. '#ff5160'), the
      * message, `data` on the result's dataset, the answer line and a line of detail.
-     * The form's element then sends an `rt-answer` event (bubbling) with `detail: { ok, answer }`.
+     * The form's element then sends an `rt-answer` event (bubbling) with `detail: { ok, answer, submitted, send }`:
+     * `submitted` when the student pressed Check, `send` what the class board gets of it (lib/p5/class-board.js).
      */
-    show({ ok, message, color, data = {}, answer: line, detail: more }) {
+    show({ ok, message, color, data = {}, answer: line, detail: more, send }) {
       const swatch = color && element('span', { class: 'rt-swatch', style: `background: ${color}` });
       result.replaceChildren(...[swatch, (ok ? '✔ ' : '✘ ') + message].filter(Boolean));
       Object.assign(result.dataset, data);
@@ -119,7 +128,7 @@ export function createAnswerForm(p, options) {
       copied.textContent = '';
       if (more !== undefined) detail.textContent = more;
       // The page's tasks (task-list.js) hear of each verdict.
-      section.dispatchEvent(new CustomEvent('rt-answer', { bubbles: true, detail: { ok: Boolean(ok), answer: answer.textContent } }));
+      section.dispatchEvent(new CustomEvent('rt-answer', { bubbles: true, detail: { ok: Boolean(ok), answer: answer.textContent, submitted: byStudent, send } }));
     },
   };
 }

@@ -4,13 +4,15 @@
  * per check, in the student's words. Its hints name the library's classes as
  * the page does: `new RT.Sphere(…)` in a global-mode sketch of the one-file
  * build, `new Sphere(…)` in a module. Each check sends an `rt-check` event
- * (bubbling) with `detail: { passed }`.
+ * (bubbling) with `detail: { passed, toFix }` (on a page served by
+ * `npm run class` the teacher's board gets it).
  *
  *   p.createHomeworkCheck({ view, check: checkTrafficSignal, parent: 'check', problem });
  */
 import { element, resolveParent, sketchNode, useStyle } from './dom.js';
 import { createAnnouncer } from './announce.js';
 import { checkOptions } from '../check.js';
+import { joinClassBoard } from './class-board.js';
 
 /**
  * @param {import('p5').default} p the sketch
@@ -38,8 +40,10 @@ export function createHomeworkCheck(p, options) {
     const result = check(view.scene, view.camera, { prefix: libraryPrefix(p) });
     announcer.say(showCheck(results, result));
     // The page's tasks (task-list.js) hear of each check.
-    results.dispatchEvent(new CustomEvent('rt-check', { bubbles: true, detail: { passed: result.passed } }));
+    const toFix = result.checks.filter((c) => !c.passed && !c.skipped && !c.bonus).length;
+    results.dispatchEvent(new CustomEvent('rt-check', { bubbles: true, detail: { passed: result.passed, toFix } }));
   };
+  joinClassBoard();
   button.addEventListener('click', run);
   return { button, results, run, destroy: () => { announcer.destroy(); box.remove(); } };
 }

@@ -10,6 +10,8 @@
  *
  * Controls report what they judged with DOM events on their own element:
  * `rt-answer` (the answer form's verdict) and `rt-check` (a homework self-check).
+ * The list reports tasks newly done with an `rt-task` event, `detail: { page, tasks }`
+ * (the ids): on a page served by `npm run class` they go to the teacher's board.
  */
 import { recordOf } from './pixel-record.js';
 import { lessonOf, LESSONS } from '../lesson-tasks.js';
@@ -17,6 +19,7 @@ import { markDone, clearProgress, pageProgress, progressText } from '../tasks.js
 import { loadProgress, saveProgress } from './progress-store.js';
 import { checkOptions, show } from '../check.js';
 import { element, resolveParent, useStyle } from './dom.js';
+import { joinClassBoard } from './class-board.js';
 
 const OPTIONS = ['page', 'view', 'parent', 'parts', 'hintAfterMs', 'hintAfterTries'];
 /** What the student does that may finish a task whose state it changes (a box, a switch, a drag in 3D). */
@@ -57,6 +60,7 @@ export class TaskList {
     this.#build(parent);
     this.#listen(hintAfterMs);
     this.#show();
+    joinClassBoard();
   }
 
   /** The lesson page's tasks `{ id, text, done }`, done as kept in this browser. */
@@ -137,6 +141,7 @@ export class TaskList {
     saveProgress(progress);
     this.#show();
     this.#announce(newly);
+    this.element.dispatchEvent(new CustomEvent('rt-task', { bubbles: true, detail: { page: this.#lesson.page, tasks: newly.map((t) => t.id) } }));
   }
 
   /* ---------------- on the page ---------------- */

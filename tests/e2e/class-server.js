@@ -4,6 +4,9 @@
  */
 import { spawn } from 'node:child_process';
 import { createServer } from 'node:net';
+import { mkdtempSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 
 /** A port nobody listens on. */
 export function freePort() {
@@ -21,7 +24,8 @@ export function freePort() {
  */
 export async function startClassServer(port = Number(process.env.CLASS_PORT) || undefined, args = []) {
   port ??= await freePort();
-  const child = spawn(process.execPath, ['scripts/class.js', '--port', String(port), ...args], { stdio: ['ignore', 'pipe', 'pipe'] });
+  const data = mkdtempSync(join(tmpdir(), 'class-server-')); // the class board's folder: not the teacher's
+  const child = spawn(process.execPath, ['scripts/class.js', '--port', String(port), '--data', data, ...args], { stdio: ['ignore', 'pipe', 'pipe'] });
   let output = '';
   await new Promise((ready, fail) => {
     const timer = setTimeout(() => fail(new Error(`the class server was not ready in 60 s:\n${output}`)), 60_000);

@@ -14,22 +14,26 @@ import {
 import { isTeacherOnly } from '../../scripts/classroom.js';
 
 /** One request to the server: its status, headers and body. */
-function ask(port, path, { method = 'GET', host = `127.0.0.1:${port}` } = {}) {
+function ask(port, path, { method = 'GET', host = `127.0.0.1:${port}`, json } = {}) {
   return new Promise((done, fail) => {
-    const req = request({ host: '127.0.0.1', port, path: path.replace(/[^\x21-\x7e]/gu, encodeURIComponent), method, headers: { host } }, (res) => {
+    const headers = { host, ...(json === undefined ? {} : { 'content-type': 'application/json' }) };
+    const req = request({ host: '127.0.0.1', port, path: path.replace(/[^\x21-\x7e]/gu, encodeURIComponent), method, headers }, (res) => {
       let body = '';
       res.on('data', (chunk) => { body += chunk; });
       res.on('end', () => done({ status: res.statusCode, headers: res.headers, body }));
     });
     req.on('error', fail);
-    req.end();
+    req.end(json === undefined ? undefined : JSON.stringify(json));
   });
 }
 
 describe('the class server, started as npm run class starts it', () => {
   let server;
   let port;
+  let boardFolder;
   beforeAll(async () => {
+    boardFolder = mkdtempSync(join(tmpdir(), 'class-gate-board-')); // the class board's: not the teacher's
+    process.env.SKETCHBOOK_BOARD_DATA = boardFolder;
     process.env.SKETCHBOOK_CLASS_HOSTS = JSON.stringify(computerNames('teachers-laptop', ['class.test']));
     server = await createServer({ configFile: 'vite.config.js', mode: 'class', logLevel: 'silent', server: { host: '127.0.0.1', port: 0 }, optimizeDeps: { noDiscovery: true, include: [] } });
     await server.listen();
@@ -37,7 +41,9 @@ describe('the class server, started as npm run class starts it', () => {
   }, 60_000);
   afterAll(async () => {
     delete process.env.SKETCHBOOK_CLASS_HOSTS;
+    delete process.env.SKETCHBOOK_BOARD_DATA;
     await server?.close();
+    rmSync(boardFolder, { recursive: true, force: true });
   });
 
   it('puts the gate before every route of its own and of every plugin', () => {
@@ -75,6 +81,24 @@ describe('the class server, started as npm run class starts it', () => {
       const answer = await ask(port, path);
       expect([path, answer.status]).toEqual([path, 200]);
     }
+  });
+
+  it('lets the class board\'s routes through, each with its own methods, and nothing else of scripts/', async () => {
+    const passes = async (path, options) => (await ask(port, path, options)).headers['x-refused-by'] === undefined;
+    // Through the gate to the board (which wants its key, or refuses a bad submission): the gate refuses none.
+    for (const path of ['/board', '/board?key=nope', '/board/state', '/board/events', '/board/class.csv', '/poll.html', '/poll.js', '/scripts/board/page/board.js', '/scripts/board/page/board.css']) {
+      expect([path, await passes(path)]).toEqual([path, true]);
+    }
+    for (const path of ['/board/clear', '/class/send', '/class/hello']) expect([path, await passes(path, { method: 'POST', json: {} })]).toEqual([path, true]);
+    // What a student's page never asks: a read of the students' routes, a write to the board's, the rest of the board's code.
+    for (const [method, path] of [['GET', '/class/send'], ['GET', '/class/'], ['GET', '/board/clear'], ['POST', '/board'], ['POST', '/board/state'], ['PUT', '/class/send'],
+      ['GET', '/board/'], ['GET', '/scripts/board/store.js'], ['GET', '/scripts/board/page/../routes.js'], ['GET', '/scripts/board/page/board.html'], ['GET', '/scripts/class-gate.js']]) {
+      const answer = await ask(port, path, { method, json: method === 'GET' ? undefined : {} });
+      expect([method, path, answer.status, answer.headers['x-refused-by']]).toEqual([method, path, 404, 'class-gate']);
+    }
+    // A name the server was not told: refused before the board hears of it.
+    const rebound = await ask(port, '/class/send', { method: 'POST', host: `rebound.example:${port}`, json: {} });
+    expect([rebound.status, rebound.headers['x-refused-by']]).toEqual([403, 'class-gate']);
   });
 
   it('answers to the computer\'s names, and says how to add another', async () => {

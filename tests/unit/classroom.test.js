@@ -110,6 +110,27 @@ describe('what a student\'s browser gets', () => {
     expect([revalidated.status, asked]).toEqual([304, 1]);
   });
 
+  it('lets a live stream (Server-Sent Events) go as it is written, never held until it ends', () => {
+    const middleware = compressAndRevalidate();
+    const written = [];
+    const res = new EventEmitter();
+    const headers = {};
+    Object.assign(res, {
+      statusCode: 200,
+      setHeader: (name, value) => { headers[name.toLowerCase()] = value; },
+      getHeader: (name) => headers[name.toLowerCase()],
+      writeHead(status) { written.push(`head ${status}`); return res; },
+      write(chunk) { written.push(String(chunk)); return true; },
+      end() { written.push('end'); },
+    });
+    middleware({ headers: { 'accept-encoding': 'br' }, method: 'GET', url: '/board/events?key=k' }, res, () => {
+      res.writeHead(200, { 'Content-Type': 'text/event-stream; charset=utf-8' });
+      res.write('event: state\ndata: {}\n\n');
+    });
+    expect(written).toEqual(['head 200', 'event: state\ndata: {}\n\n']); // not ended, and already out
+    expect(headers['content-encoding']).toBeUndefined();
+  });
+
   it('passes an error and a small answer through as they are', async () => {
     const middleware = compressAndRevalidate();
     const missing = await request(middleware, { 'accept-encoding': 'br' }, (res) => { res.statusCode = 404; res.end('Not found'); });
