@@ -26,6 +26,7 @@ export function createCodeEditor({ parent, code, label, describedBy, onChange })
       basicSetup,
       keymap.of([indentWithTab]),
       javascript(),
+      EditorView.lineWrapping, // no sideways scrolling, at 320 px too; the editor grows with its code (no scroll region of its own)
       EditorView.contentAttributes.of({ 'data-editor': '', 'aria-label': label, 'aria-describedby': describedBy }),
       EditorView.updateListener.of((update) => { if (update.docChanged) onChange(update.state.doc.toString()); }),
     ],

@@ -78,12 +78,17 @@ function start() {
   };
 
   let runtime = null;
+  /** p5 and the kit for the frame, fetched once (2 MB: when the student first comes to the editor, or at the first run). */
+  const theRuntime = () => (runtime ??= fetch(new URL('../sketch-runtime.js', location.href), { cache: 'no-cache' }).then((r) => {
+    if (!r.ok) throw new Error(`sketch-runtime.js: ${r.status}`);
+    return r.text();
+  }).catch((error) => { runtime = null; throw error; }));
+  for (const [target, type] of [[editorBox, 'focusin'], [buttons.run, 'pointerenter'], [buttons.run, 'focus']]) {
+    target.addEventListener(type, () => theRuntime().catch(() => {}), { once: true });
+  }
   const host = new SketchFrames({
     box: frames,
-    runtime: () => (runtime ??= fetch(new URL('../sketch-runtime.js', location.href)).then((r) => {
-      if (!r.ok) throw new Error(`sketch-runtime.js: ${r.status}`);
-      return r.text();
-    }).catch((error) => { runtime = null; throw error; })),
+    runtime: theRuntime,
     page: {
       base: location.origin + location.pathname,
       title: 'Your sketch, running apart from this page',
@@ -160,6 +165,24 @@ function start() {
     timer = setTimeout(run, PAUSE_MS);
   };
 
+  /** The code in the page's link, null when it has none or it cannot be read (then the status says why). */
+  async function codeFromLink() {
+    const inLink = codeTextInLink(location.href);
+    if (inLink === null) return null;
+    try {
+      return await decodeCodeLink(inLink);
+    } catch (error) {
+      say(`The code in this link cannot be read: ${error.message}. The editor has the code it had.`);
+      return null;
+    }
+  }
+
+  /** A link's code is in the editor: it is not kept, nor run, until the student presses Run. */
+  function waitForRun() {
+    linkWaiting = true;
+    say('This code came in a link: read it first, then press Run. It runs apart from this page and cannot read what the page keeps.');
+  }
+
   /** The editor's text set by the page, not typed: not run again on a pause. */
   const setQuietly = (text) => {
     quiet = true;
@@ -191,21 +214,21 @@ function start() {
     .then((r) => (r.ok ? r.text() : Promise.reject(new Error(String(r.status)))))
     .then(async (text) => {
       starter = text;
-      let code = starter, fromLink = false;
-      const inLink = codeTextInLink(location.href);
-      if (inLink !== null) {
-        try { code = await decodeCodeLink(inLink); fromLink = true; } catch (error) { say(`The code in this link cannot be read: ${error.message}. The editor has the starter.`); }
-      }
+      const fromLink = await codeFromLink();
       const own = kept();
-      if (!fromLink && own !== null && own !== starter) code = own;
+      const code = fromLink ?? (own !== null && own !== starter ? own : starter);
       editor = createCodeEditor({ parent: editorBox, code, label: `Code of the sketch, ${file}`, describedBy: help, onChange: changed });
-      if (fromLink) {
-        linkWaiting = true;
-        say('This code came in a link: read it first, then press Run. It runs apart from this page and cannot read what the page keeps.');
-      } else if (code !== starter) {
-        run(); // the student's own code, kept from the last visit
-      }
+      if (fromLink !== null) waitForRun();
+      else if (code !== starter) run(); // the student's own code, kept from the last visit
       followTheFile();
+      // A link pasted into this tab changes only the fragment: its code comes in as at a visit.
+      addEventListener('hashchange', async () => {
+        const code = await codeFromLink();
+        if (code === null) return;
+        clearTimeout(timer);
+        setQuietly(code);
+        waitForRun();
+      });
     }, () => say(`The code of ${file} could not be loaded here: open this page from the gallery on the server (npm start or npm run class).`));
 
   /** On the teacher's dev server, a save of the sketch's file reaches the editor too, while its text is still the starter. */

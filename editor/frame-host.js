@@ -70,6 +70,7 @@ function frameBootstrap() {
     document.head.append(start);
   };
   addEventListener('message', listen);
+  tell({ type: 'ready' }); // the page sends the run now: a load event may be the frame's first, empty document's
 }
 
 /** In the frame, the page's margins are the page's own, around the frame. */
@@ -89,6 +90,8 @@ export function frameDocument({ base, title, css, markup, bodyClass }) {
 
 export class SketchFrames {
   #box; #runtime; #page; #onMessage; #current = null; #pending = null; #title;
+  /** Each frame's run, sent once when its document says it is ready. */
+  #runs = new WeakMap();
 
   /**
    * @param {object} options
@@ -128,9 +131,7 @@ export class SketchFrames {
     frame.style.height = this.#current ? this.#current.style.height : '';
     const page = this.#page;
     frame.srcdoc = frameDocument({ base: page.base, title: page.title, css: page.css(), markup: page.markup, bodyClass: page.bodyClass });
-    frame.addEventListener('load', () => frame.contentWindow?.postMessage({
-      type: 'run', runtime, code, sourceURL: page.sourceURL, imports: page.imports, selected, progressKey: page.progressKey,
-    }, '*'), { once: true });
+    this.#runs.set(frame, { type: 'run', runtime, code, sourceURL: page.sourceURL, imports: page.imports, selected, progressKey: page.progressKey });
     this.#pending = frame;
     if (!this.#current) this.#showPending();
     else this.#box.append(frame);
@@ -154,6 +155,12 @@ export class SketchFrames {
     if (!from || event.origin !== 'null') return; // only our frames, and only while sandboxed
     const message = readFrameMessage(event.data);
     if (!message) return;
+    if (message.type === 'ready') {
+      const run = this.#runs.get(from);
+      this.#runs.delete(from);
+      if (run) from.contentWindow.postMessage(run, '*');
+      return;
+    }
     if (message.type === 'size') {
       from.style.height = `${message.height}px`;
       return;

@@ -6,6 +6,7 @@
  * types and sizes, or refused (null). Nothing in it is ever parsed as HTML.
  *
  *   frame → page
+ *     { type: 'ready' }                          the frame's document waits for its run
  *     { type: 'setup' }                          the sketch's setup() is done: its picture is the one to show
  *     { type: 'render', state }                  'rendering' | 'done' | 'error' (body[data-render] in the frame)
  *     { type: 'error', message, line, column, exact }   a mistake, at a line of the editor's code (or null)
@@ -41,8 +42,9 @@ export function readFrameMessage(data) {
   if (data === null || typeof data !== 'object' || Array.isArray(data)) return null;
   const m = /** @type {Record<string, unknown>} */ (data);
   switch (m.type) {
+    case 'ready':
     case 'setup':
-      return { type: 'setup' };
+      return { type: m.type };
     case 'render':
       return RENDER_STATES.includes(/** @type {string} */ (m.state)) ? { type: 'render', state: m.state } : null;
     case 'error': {

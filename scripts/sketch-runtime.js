@@ -16,6 +16,7 @@
  * change to lib/ or editor/, and reads the sketches' files as they are; the
  * build writes both into the site.
  */
+import { createHash } from 'node:crypto';
 import { readFileSync, readdirSync } from 'node:fs';
 import { resolve } from 'node:path';
 import { build } from 'vite';
@@ -56,12 +57,17 @@ export function sketchRuntime() {
     name: 'sketch-runtime',
     configureServer(server) {
       const root = server.config.root;
-      server.watcher.on('change', (file) => { if (/[\\/](lib|editor)[\\/]/.test(file)) made = null; });
+      // Made again after a change to what it bundles: lib/ and the frame's own modules.
+      server.watcher.on('change', (file) => { if (/[\\/]lib[\\/]|[\\/]editor[\\/]frame-/.test(file)) made = null; });
       server.middlewares.use(async (req, res, next) => {
         const path = decodeURIComponent((req.url ?? '/').split(/[?#]/)[0]);
         try {
           if (path === `/${RUNTIME_FILE}`) {
             const code = await runtime(root);
+            const etag = `"${createHash('sha1').update(code).digest('base64url')}"`; // a page visit asks again, and gets a 304
+            res.setHeader('Cache-Control', 'no-cache');
+            res.setHeader('ETag', etag);
+            if (req.headers['if-none-match'] === etag) { res.statusCode = 304; return void res.end(); }
             res.setHeader('Content-Type', 'text/javascript; charset=utf-8');
             return void res.end(code);
           }
