@@ -64,8 +64,8 @@ function start() {
     element('div', { class: 'code-toolbar' }, buttons.run, buttons.download, buttons.reset, buttons.share),
     status, linkBox, editorBox);
   const frames = element('div', { class: 'code-frames', 'data-code-frames': '', hidden: '' });
-  main.before(frames);
-  main.after(panel);
+  const area = element('div', { class: 'code-in-page' }, frames, panel); // on a wide screen, once the code runs: the frame beside the editor
+  main.after(area);
 
   let starter = null, editor = null, timer = 0, linkWaiting = false, selected = null, runs = 0, quiet = false;
   const say = (text) => { status.textContent = text; };
@@ -116,6 +116,7 @@ function start() {
       main.hidden = true;
       main.style.display = 'none'; // its layout's own display would keep showing an empty box
       frames.hidden = false;
+      area.classList.add('running');
     }
     document.body.dataset.render = 'rendering';
     say(`Running your code (run ${runs})…`);

@@ -21,6 +21,8 @@ export function editorText(page) {
 /** Waits until run `n` of the editor's code has set up and its picture is traced. */
 export async function waitForRun(page, n, timeout = 60_000) {
   await expect(page.locator('[data-code-status]')).toHaveText(`Your code ran (run ${n}).`, { timeout });
+  // A frame out of view gets no animation frames (Chromium's throttling): look at it, as the student does.
+  await page.locator('iframe[data-code-frame="running"]').scrollIntoViewIfNeeded();
   await expect(page.locator('body')).toHaveAttribute('data-render', 'done', { timeout });
 }
 

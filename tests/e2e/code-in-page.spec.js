@@ -50,7 +50,7 @@ new p5((p) => {`);
   await waitForDone(page); // the page's own sketch, the starter, is traced as ever
   await expect(page.locator('[data-code-status]')).toContainText('This code came in a link: read it first, then press Run.');
   expect(await editorText(page)).toContain('document.body.dataset.ran');
-  await page.locator('[data-editor]').click();
+  await page.locator('[data-editor]').focus();
   await page.keyboard.type(' '); // typing does not run it either
   await page.waitForTimeout(2_000); // more than the pause after which typed code runs
   await expect(page.locator('iframe')).toHaveCount(0);
@@ -146,7 +146,7 @@ test('with its code running: axe finds no serious violation, the page reflows at
   const { violations } = await new AxeBuilder({ page }).withTags(['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'wcag22aa']).analyze();
   expect(violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => `${v.id}: ${v.nodes[0].target.join(' ')}`)).toEqual([]);
 
-  await page.locator('[data-editor]').click();
+  await page.locator('[data-editor]').focus();
   await page.keyboard.press('Tab');
   await expect(page.locator('[data-editor]')).toBeFocused(); // Tab indents
   await page.keyboard.press('Escape');
