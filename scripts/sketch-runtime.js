@@ -50,6 +50,12 @@ export async function buildRuntime(root = process.cwd()) {
   return chunk.code;
 }
 
+function notFound(res, text) {
+  res.statusCode = 404;
+  res.setHeader('Content-Type', 'text/plain; charset=utf-8');
+  res.end(text);
+}
+
 export function sketchRuntime() {
   let made = null;
   const runtime = (root) => (made ??= buildRuntime(root).catch((error) => { made = null; throw error; }));
@@ -71,10 +77,12 @@ export function sketchRuntime() {
             res.setHeader('Content-Type', 'text/javascript; charset=utf-8');
             return void res.end(code);
           }
-          const name = path.startsWith(`/${CODE_FOLDER}/`) ? path.slice(CODE_FOLDER.length + 2) : null;
-          if (name !== null && isSketchFile(name)) {
-            let code;
-            try { code = readFileSync(resolve(root, 'sketches', name), 'utf8'); } catch { return next(); }
+          if (path.startsWith(`/${CODE_FOLDER}/`)) {
+            const name = path.slice(CODE_FOLDER.length + 2);
+            let code = null;
+            if (isSketchFile(name)) try { code = readFileSync(resolve(root, 'sketches', name), 'utf8'); } catch { /* no such sketch */ }
+            // Not the gallery's page as a fallback: the editor would take it for the code.
+            if (code === null) return void notFound(res, `No sketch ${name} to edit.\n`);
             res.setHeader('Content-Type', 'text/plain; charset=utf-8');
             res.setHeader('Cache-Control', 'no-cache');
             return void res.end(code);
