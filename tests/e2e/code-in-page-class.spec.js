@@ -21,9 +21,8 @@ test.describe.configure({ timeout: 300_000 });
 
 let server;
 test.beforeAll(async () => {
-  // Vite's host check lets only localhost and addresses in; the class server is to answer the names students type.
-  process.env.__VITE_ADDITIONAL_SERVER_ALLOWED_HOSTS = HOST;
-  server = await startClassServer();
+  // The name a student types for the teacher's computer, as the teacher lets it in.
+  server = await startClassServer(undefined, ['--allow-host', HOST]);
 });
 test.afterAll(async () => { await server?.close(); });
 
