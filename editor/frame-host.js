@@ -50,6 +50,7 @@ function frameBootstrap() {
     const runtime = blob(run.runtime);
     const imports = { p5: blob(`export { p5 as default } from ${JSON.stringify(runtime)};`) };
     for (const name of run.imports) imports[name] = runtime;
+    imports['bunny/index.js?raw'] = blob(`export { bunnyFile as default } from ${JSON.stringify(runtime)};`);
     const map = document.createElement('script');
     map.type = 'importmap';
     map.textContent = JSON.stringify({ imports });

@@ -4,7 +4,7 @@
  * builds it as `sketch-runtime.js`). The frame's import map points the code's
  * `import p5 from 'p5'` and `import … from '../lib/index.js'` (and
  * '../lib/p5/index.js') at this module, so the code in the editor is the
- * sketch's own file as it stands, imports and all.
+ * sketch's own file as it stands, imports and all (sketch 13's bunny too).
  *
  * startFrame() tells the page, by postMessage (frame-protocol.js), what the
  * page shows around the frame: the code's mistakes at the editor's lines,
@@ -20,6 +20,8 @@ import { codePlace } from './frame-protocol.js';
 export * from '../lib/index.js';
 export * from '../lib/p5/index.js';
 export { p5 };
+// Sketch 13's bunny, as its file reads it (`import bunnyFile from 'bunny/index.js?raw'`): 110 kB of the runtime's 2 MB.
+export { default as bunnyFile } from 'bunny/index.js?raw';
 
 /**
  * Starts telling the page about the code that is about to run.
