@@ -3,6 +3,7 @@
  * editor's text, a run's end, the frame's page, a link carrying code.
  */
 import { deflateRawSync } from 'node:zlib';
+import { readFile } from 'node:fs/promises';
 import { expect } from '@playwright/test';
 
 /** The editor's whole text replaced by `code`, as typed (one paste). */
@@ -13,9 +14,14 @@ export async function setCode(page, code) {
   await page.keyboard.insertText(code);
 }
 
-/** The editor's text (CodeMirror's document, line by line). */
-export function editorText(page) {
-  return page.locator('[data-editor]').evaluate((el) => [...el.querySelectorAll('.cm-line')].map((line) => line.textContent).join('\n'));
+/**
+ * The editor's whole text, as the student saves it (Download): CodeMirror
+ * draws only the lines near the window, so its elements do not hold it all.
+ */
+export async function editorText(page) {
+  const download = page.waitForEvent('download');
+  await page.getByRole('button', { name: 'Download', exact: true }).click();
+  return readFile(await (await download).path(), 'utf8');
 }
 
 /** Waits until run `n` of the editor's code has set up and its picture is traced. */

@@ -78,7 +78,7 @@ test('a link\'s code opens the editor by itself and waits for Run; the student\'
   const starter = readFileSync(`sketches/${name}.js`, 'utf8');
   const shared = starter.replace(/\n$/, '\n// shared with me\n');
   await page.goto(codeLink(`/sketches/${name}.html`, shared));
-  await expect(page.locator('[data-code-status]')).toContainText('This code came in a link: read it first, then press Run.');
+  await expect(page.locator('[data-code-status]')).toContainText('This code came in a link: read it first, then press Run.', { timeout: 30_000 });
   expect(await editorText(page)).toBe(shared);
   await expect(page.locator('[data-edit-sketch]')).toHaveCount(0);
   await page.waitForTimeout(1_500); // more than the pause after which typed code runs

@@ -118,7 +118,7 @@ test('the student\'s code is kept in this browser; Reset brings back the starter
   await expect(sketchFrame(page).locator('[data-tracer]')).toHaveAttribute('data-width', '32');
 
   const download = page.waitForEvent('download');
-  await page.getByRole('button', { name: 'Download' }).click();
+  await page.getByRole('button', { name: 'Download', exact: true }).click();
   const file = await download;
   expect(file.suggestedFilename()).toBe('10-playground.js');
   expect(readFileSync(await file.path(), 'utf8')).toBe(mine);
