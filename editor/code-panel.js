@@ -118,6 +118,11 @@ export function openCodePanel({ name, main, markup, instances }) {
     }
   }
 
+  /** The page's mistakes panel, its hint said for the editor (not "save"). */
+  function mistake(text, where = null) {
+    showMistake(text, where)?.querySelector('.rt-error-hint')?.replaceChildren('Fix it in the editor: when your code runs again, the panel goes.');
+  }
+
   function heard(message, current) {
     switch (message.type) {
       case 'setup': say(`Your code ran (run ${runs}).`); break;
@@ -125,9 +130,14 @@ export function openCodePanel({ name, main, markup, instances }) {
       case 'select': selected = message.x === null ? null : { x: message.x, y: message.y }; break;
       case 'check': panel.dataset.check = message.passed ? 'passed' : 'not-yet'; break;
       case 'progress': keepProgress(message.text); break;
+      case 'stuck': // the frames are gone (frame-host.js): the picture too
+        mistake(`Your code did not answer for ${message.seconds} s: is there a loop that never ends (while (true), a step that goes the wrong way)? It was stopped.`);
+        say('Your code was stopped: fix the loop and it runs again.');
+        document.body.dataset.render = 'error';
+        break;
       case 'error': {
         const line = message.line === null ? undefined : editor.line(message.line);
-        showMistake(message.message, message.line === null ? null : {
+        mistake(message.message, message.line === null ? null : {
           file: `${file} (the editor)`, line: message.line, column: message.column ?? 1, exact: message.exact, source: line ?? '',
           url: URL.createObjectURL(new Blob([editor.code()], { type: 'text/javascript' })),
         });

@@ -13,6 +13,11 @@
  * The new frame stays hidden until its setup() is done; then it takes the old
  * one's place. A run that fails before that leaves the old frame, the last
  * good picture, where it was.
+ *
+ * A frame says it is alive every second. One silent for SILENCE_MS while the
+ * page is in view is stuck in a loop that never ends (`while (true)`, a loop
+ * whose step goes the wrong way): the frames are removed, which stops it and
+ * frees the student's processor, and the page hears `{ type: 'stuck' }`.
  */
 import { readFrameMessage } from './frame-protocol.js';
 
@@ -71,8 +76,12 @@ function frameBootstrap() {
     document.head.append(start);
   };
   addEventListener('message', listen);
+  setInterval(() => tell({ type: 'alive' }), 1000); // silent for long: a loop that never ends (SILENCE_MS)
   tell({ type: 'ready' }); // the page sends the run now: a load event may be the frame's first, empty document's
 }
+
+/** How long a frame may be silent before it is taken for stuck (ms): timers of a frame out of view run once a second. */
+export const SILENCE_MS = 8_000;
 
 /** In the frame, the page's margins are the page's own, around the frame. */
 const FRAME_CSS = 'body.in-frame { margin: 0; padding: 0.25rem 0 0; min-height: 0; }';
@@ -90,7 +99,9 @@ export function frameDocument({ base, title, css, markup, bodyClass }) {
 }
 
 export class SketchFrames {
-  #box; #runtime; #page; #onMessage; #current = null; #pending = null; #title;
+  #box; #runtime; #page; #onMessage; #current = null; #pending = null; #title; #watch = 0;
+  /** When each frame was last heard of (performance.now()). */
+  #heardAt = new WeakMap();
   /** Each frame's run, sent once when its document says it is ready. */
   #runs = new WeakMap();
 
@@ -134,6 +145,8 @@ export class SketchFrames {
     frame.srcdoc = frameDocument({ base: page.base, title: page.title, css: page.css(), markup: page.markup, bodyClass: page.bodyClass });
     this.#runs.set(frame, { type: 'run', runtime, code, sourceURL: page.sourceURL, imports: page.imports, selected, progressKey: page.progressKey });
     this.#pending = frame;
+    this.#heardAt.set(frame, performance.now());
+    this.#watchForLoops();
     if (!this.#current) this.#showPending();
     else this.#box.append(frame);
   }
@@ -151,11 +164,44 @@ export class SketchFrames {
     this.#current = frame;
   }
 
+  /** Every second: a frame silent for SILENCE_MS is stopped. Not while the page is hidden or was itself held up. */
+  #watchForLoops() {
+    if (this.#watch) return;
+    let last = performance.now();
+    this.#watch = setInterval(() => {
+      const now = performance.now();
+      const excused = now - last > 2_000 || document.visibilityState !== 'visible';
+      last = now;
+      for (const frame of [this.#pending, this.#current]) {
+        if (!frame) continue;
+        if (excused) this.#heardAt.set(frame, now);
+        else if (now - this.#heardAt.get(frame) > SILENCE_MS) {
+          this.#stop();
+          break;
+        }
+      }
+    }, 1_000);
+  }
+
+  /**
+   * Removes the frames: a loop ends only with its process, and Chromium runs
+   * the new frame and the old one in one process (one thread), so a stuck new
+   * frame holds up the old one, and would hold up the next run's too.
+   */
+  #stop() {
+    const current = this.#pending === null;
+    for (const frame of [this.#pending, this.#current]) frame?.remove();
+    this.#pending = this.#current = null;
+    this.#onMessage({ type: 'stuck', seconds: SILENCE_MS / 1000 }, current);
+  }
+
   #heard(event) {
     const from = [this.#current, this.#pending].find((f) => f && f.contentWindow === event.source);
     if (!from || event.origin !== 'null') return; // only our frames, and only while sandboxed
     const message = readFrameMessage(event.data);
     if (!message) return;
+    this.#heardAt.set(from, performance.now());
+    if (message.type === 'alive') return;
     if (message.type === 'ready') {
       const run = this.#runs.get(from);
       this.#runs.delete(from);

@@ -7,6 +7,7 @@
  *
  *   frame → page
  *     { type: 'ready' }                          the frame's document waits for its run
+ *     { type: 'alive' }                          every second: the frame's code is not stuck in a loop
  *     { type: 'setup' }                          the sketch's setup() is done: its picture is the one to show
  *     { type: 'render', state }                  'rendering' | 'done' | 'error' (body[data-render] in the frame)
  *     { type: 'error', message, line, column, exact }   a mistake, at a line of the editor's code (or null)
@@ -43,6 +44,7 @@ export function readFrameMessage(data) {
   const m = /** @type {Record<string, unknown>} */ (data);
   switch (m.type) {
     case 'ready':
+    case 'alive':
     case 'setup':
       return { type: m.type };
     case 'render':

@@ -31,7 +31,9 @@ export { default as bunnyFile } from 'bunny/index.js?raw';
 export function startFrame({ sourceURL, selected }, tell) {
   const mistake = (error, event) => {
     const place = codePlace(typeof error?.stack === 'string' ? error.stack : '', event, sourceURL);
-    tell({ type: 'error', message: errorMessage(error ?? event?.message ?? 'an error'), line: place?.line ?? null, column: place?.column ?? null,
+    // A syntax error of the code's script comes from the append that ran it: its own words are the student's.
+    const message = errorMessage(error ?? event?.message ?? 'an error').replace(/Failed to execute 'append' on '\w+': /, '');
+    tell({ type: 'error', message, line: place?.line ?? null, column: place?.column ?? null,
       exact: error?.name === 'SyntaxError' });
   };
   addEventListener('error', (event) => mistake(event.error, event));

@@ -160,3 +160,22 @@ test('with its code running: axe finds no serious violation, the page reflows at
   const frameWidth = await sketchFrame(page).locator('html').evaluate((html) => html.scrollWidth);
   expect(frameWidth).toBeLessThanOrEqual(320);
 });
+
+test('a loop that never ends is stopped and said, the page answers all the while, and the mended code runs again', async ({ page }) => {
+  await page.goto(PLAYGROUND);
+  await waitForDone(page);
+  await page.getByRole('button', { name: 'Run' }).click();
+  await waitForRun(page, 1);
+  await setCode(page, STARTER.replace('function makeScene() {', 'function makeScene() {\n  for (let i = 0; i < 10; i--) {}'));
+  await expect(page.locator('[data-code-status]')).toHaveText('Running your code (run 2)…');
+  expect(await page.evaluate(() => document.title)).toBe('10 · Playground'); // the page is not held up by the frame's loop
+  const panel = page.locator('[data-error]');
+  await expect(panel.locator('[data-error-message]')).toHaveText(/^Your code did not answer for 8 s: is there a loop that never ends/, { timeout: 30_000 });
+  await expect(panel).toContainText('Fix it in the editor');
+  await expect(page.locator('[data-code-status]')).toHaveText(/^Your code was stopped/);
+  await expect(page.locator('iframe[data-code-frame="starting"]')).toHaveCount(0); // the stuck frame is gone, and its loop with it
+
+  await setCode(page, STARTER);
+  await waitForRun(page, 3, 120_000);
+  await expect(panel).toHaveCount(0);
+});

@@ -12,6 +12,7 @@ describe('readFrameMessage: what the sandboxed frame says, checked field by fiel
     expect(readFrameMessage({ type: 'select', x: null, y: null })).toEqual({ type: 'select', x: null, y: null });
     expect(readFrameMessage({ type: 'check', passed: true })).toEqual({ type: 'check', passed: true });
     expect(readFrameMessage({ type: 'ready' })).toEqual({ type: 'ready' });
+    expect(readFrameMessage({ type: 'alive', at: 'x' })).toEqual({ type: 'alive' });
     expect(readFrameMessage({ type: 'setup', more: 1 })).toEqual({ type: 'setup' });
   });
 
