@@ -89,6 +89,20 @@ test('the playground\'s code, edited in the page, runs in its sandboxed frame fr
   expect(errors).toEqual([]);
 });
 
+test('"Edit this sketch" on a lesson page opens its code and runs it in its sandboxed frame from the sub-path', async ({ page }) => {
+  test.setTimeout(240_000);
+  const errors = watchConsole(page);
+  await page.goto(`${site.url}sketches/04-find-the-pink-pixel.html`);
+  await waitForDone(page, 60_000);
+  await page.locator('[data-edit-sketch]').click();
+  await expect(page.locator('[data-editor]')).toContainText('Find the pink pixel', { timeout: 60_000 });
+  await setCode(page, readFileSync('sketches/04-find-the-pink-pixel.js', 'utf8').replace('label: `The class scene: ', 'label: `My class scene: '));
+  await waitForRun(page, 1, 120_000);
+  await expect(sketchFrame(page).getByText('My class scene: 32 × 24 pixels')).toBeVisible();
+  expect(site.requests).toContain(`${BASE}sketch-code/04-find-the-pink-pixel.js`);
+  expect(errors).toEqual([]);
+});
+
 test('no solution is in the built files, only the line saying where it is', () => {
   const files = builtFiles();
   expect(files.filter((f) => /solutions\/|traffic-signal-[\w-]*\.js$|rear-lights-[\w-]*\.js$/.test(f.name) && !/homework/.test(f.name)).map((f) => f.name)).toEqual([]);
