@@ -35,7 +35,8 @@ for (const name of ['04-find-the-pink-pixel', '07-original-examples', '13-meshes
     await page.goto(`/sketches/${name}.html`);
     await waitForDone(page);
     await page.locator('[data-edit-sketch]').click();
-    await expect(page.locator('[data-editor]')).toHaveAttribute('aria-label', `Code of the sketch, ${name}.js`);
+    // The editor's modules load now, on the first click: seconds on a busy machine.
+    await expect(page.locator('[data-editor]')).toHaveAttribute('aria-label', `Code of the sketch, ${name}.js`, { timeout: 30_000 });
     await expect(page.locator('[data-edit-sketch]')).toHaveCount(0);
     await expect(page.locator('#code-title')).toBeFocused();
     expect(await editorText(page)).toBe(readFileSync(`sketches/${name}.js`, 'utf8'));
@@ -56,7 +57,7 @@ test('by keyboard alone: Edit this sketch, the panel\'s title, Run, the editor (
   await waitForDone(page);
   await page.locator('[data-edit-sketch]').focus();
   await page.keyboard.press('Enter');
-  await expect(page.locator('#code-title')).toBeFocused();
+  await expect(page.locator('#code-title')).toBeFocused({ timeout: 30_000 });
   await page.keyboard.press('Tab');
   await expect(page.getByRole('button', { name: 'Run' })).toBeFocused();
   for (let i = 0; i < 4; i += 1) await page.keyboard.press('Tab'); // Download, Reset, Copy share link, the editor
@@ -86,6 +87,7 @@ test('a link\'s code opens the editor by itself and waits for Run; the student\'
 
   await page.goto(`/sketches/${name}.html`);
   await page.locator('[data-edit-sketch]').click();
+  await expect(page.locator('[data-editor]')).toBeVisible({ timeout: 30_000 });
   await setCode(page, starter.replace(/\n$/, '\n// mine\n'));
   await waitForRun(page, 1, 120_000);
   await page.reload();
