@@ -6,7 +6,7 @@ import { readFileSync } from 'node:fs';
 import { test, expect } from '@playwright/test';
 import { findBrowser } from '../../scripts/find-browser.js';
 import { startClassServer } from './class-server.js';
-import { setCode, waitForRun, sketchFrame } from './code-editor.js';
+import { setCode, editorText, waitForRun, sketchFrame } from './code-editor.js';
 
 const HOST = 'class.test';
 const STARTER = readFileSync('sketches/08-homework-traffic-signal.js', 'utf8');
@@ -30,7 +30,8 @@ test('on the class server, reached by a name: the homework starter edited in the
   const url = server.url.replace('127.0.0.1', HOST);
   await page.goto(`${url}sketches/08-homework-traffic-signal.html`);
   expect(await page.evaluate(() => window.isSecureContext)).toBe(false); // as on a classroom's network
-  await expect(page.locator('[data-editor]')).toContainText('TODO: your three lights here.', { timeout: 60_000 });
+  await expect(page.locator('[data-editor]')).toBeVisible({ timeout: 60_000 });
+  expect(await editorText(page)).toBe(STARTER); // the starter, read as the student saves it
 
   await setCode(page, lights(RED));
   await waitForRun(page, 1, 120_000);
