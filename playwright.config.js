@@ -4,7 +4,7 @@ import { findBrowser } from './scripts/find-browser.js';
 // PW_PORT lets several test runs share a machine without sharing a server.
 const PORT = Number(process.env.PW_PORT ?? 5199);
 const executablePath = findBrowser() ?? undefined;
-const LIVE_SPECS = ['**/mistakes.spec.js', '**/saves.spec.js', '**/swaps.spec.js', '**/class-server.spec.js', '**/class-board.spec.js'];
+const LIVE_SPECS = ['**/mistakes.spec.js', '**/saves.spec.js', '**/swaps.spec.js', '**/class-server.spec.js', '**/class-board.spec.js', '**/code-in-page-class.spec.js'];
 
 // Screenshots are of traced canvases only, at a pinned viewport, headless.
 export default defineConfig({

@@ -8,6 +8,7 @@ import { classBoard } from './scripts/board/plugin.js';
 import { BOARD_ROUTES } from './scripts/board/routes.js';
 import { reloadItsPagesOnly, swapSketchesInPlace, syntaxErrorsWhereTheyAre } from './scripts/vite-live-coding.js';
 import { longLinks } from './scripts/long-links.js';
+import { sketchRuntime } from './scripts/sketch-runtime.js';
 
 // Every page is an entry of the static build: the gallery, the web editor's
 // steps, the teacher's page of progress codes and each sketch (the API reference is made by a plugin).
@@ -34,8 +35,9 @@ export default defineConfig(({ command, mode }) => ({
   // The answers and the class server's ways (compressed, revalidated, p5 minified): scripts/classroom.js.
   // The class board (what students send, the teacher's /board): scripts/board/; its routes pass the class gate by name (BOARD_ROUTES).
   // A link too long for the server gets a page saying so (scripts/long-links.js).
+  // The code editor's frame: p5 and the kit in one module, and each sketch's file as text (scripts/sketch-runtime.js).
   plugins: [teachersAnswers({ served: command === 'serve' ? mode !== 'class' : withSolutions }), ...(mode === 'class' ? [classroom({ isolation, routes: BOARD_ROUTES }), classBoard()] : []), longLinks(),
-    p5OfflineI18n(), reloadItsPagesOnly(), swapSketchesInPlace(), syntaxErrorsWhereTheyAre(), includeText(), oneFileInDev(), apiReference(), apiLine(), fromFileNotice()],
+    p5OfflineI18n(), reloadItsPagesOnly(), swapSketchesInPlace(), syntaxErrorsWhereTheyAre(), includeText(), oneFileInDev(), apiReference(), apiLine(), fromFileNotice(), sketchRuntime()],
   optimizeDeps: { rolldownOptions: { plugins: [p5OfflineI18n()] } },
   build: {
     target: 'es2022',

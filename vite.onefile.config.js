@@ -15,7 +15,7 @@ const INLINE_START = 'new InlineRenderWorker()';
  * there is none, so the worker's code (bundled, a classic script) goes inside
  * the file and starts from a Blob URL: `?worker&inline` is Vite's own way.
  */
-function inlineRenderWorker() {
+export function inlineRenderWorker() {
   return {
     name: 'inline-render-worker',
     enforce: 'pre',
@@ -32,7 +32,7 @@ const STYLE_AT = "new URL('./style.css', import.meta.url).href";
 const STYLE_INSIDE = "'data:text/css;charset=utf-8,' + encodeURIComponent(inlineStyle)";
 
 /** lib/p5/dom.js links style.css from beside it; in one file the link's URL is the stylesheet itself. */
-function inlineStyle() {
+export function inlineStyle() {
   return {
     name: 'inline-style',
     enforce: 'pre',

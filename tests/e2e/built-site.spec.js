@@ -6,6 +6,7 @@ import { readdirSync, readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { watchConsole, waitForDone } from './helpers.js';
 import { buildSite, serveFolder, removeFolder, buildOutput } from './built-site.js';
+import { setCode, waitForRun, sketchFrame } from './code-editor.js';
 import { HOMEWORK, answerFingerprints, ELSEWHERE } from './homework-answers.js';
 
 const BASE = '/some-name/';
@@ -73,6 +74,33 @@ test('a share link made on the published site opens the same scene there', async
   await waitForDone(other);
   await expect(other.locator(`input[name="${radius}"]`)).toHaveValue('6');
   await expect(other.locator('[data-link-problem]')).toBeEmpty();
+});
+
+test('the playground\'s code, edited in the page, runs in its sandboxed frame from the sub-path', async ({ page }) => {
+  test.setTimeout(240_000);
+  const errors = watchConsole(page);
+  await page.goto(`${site.url}sketches/10-playground.html`);
+  await waitForDone(page, 60_000);
+  await setCode(page, readFileSync('sketches/10-playground.js', 'utf8').replace('const WIDTH = 64, HEIGHT = 48;', 'const WIDTH = 40, HEIGHT = 30;'));
+  await waitForRun(page, 1, 120_000);
+  await expect(sketchFrame(page).locator('[data-tracer]')).toHaveAttribute('data-width', '40');
+  expect(site.requests).toContain(`${BASE}sketch-runtime.js`);
+  expect(site.requests).toContain(`${BASE}sketch-code/10-playground.js`);
+  expect(errors).toEqual([]);
+});
+
+test('"Edit this sketch" on a lesson page opens its code and runs it in its sandboxed frame from the sub-path', async ({ page }) => {
+  test.setTimeout(240_000);
+  const errors = watchConsole(page);
+  await page.goto(`${site.url}sketches/04-find-the-pink-pixel.html`);
+  await waitForDone(page, 60_000);
+  await page.locator('[data-edit-sketch]').click();
+  await expect(page.locator('[data-editor]')).toContainText('Find the pink pixel', { timeout: 60_000 });
+  await setCode(page, readFileSync('sketches/04-find-the-pink-pixel.js', 'utf8').replace('label: `The class scene: ', 'label: `My class scene: '));
+  await waitForRun(page, 1, 120_000);
+  await expect(sketchFrame(page).getByText('My class scene: 32 × 24 pixels')).toBeVisible();
+  expect(site.requests).toContain(`${BASE}sketch-code/04-find-the-pink-pixel.js`);
+  expect(errors).toEqual([]);
 });
 
 test('no solution is in the built files, only the line saying where it is', () => {

@@ -3,7 +3,7 @@
 // as `npm run class` starts it, and each of its own routes is asked for.
 import { describe, it, expect, beforeAll, afterAll } from 'vitest';
 import { request } from 'node:http';
-import { mkdtempSync, mkdirSync, writeFileSync, statSync, rmSync } from 'node:fs';
+import { mkdtempSync, mkdirSync, writeFileSync, readFileSync, statSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { createServer } from 'vite';
@@ -70,14 +70,16 @@ describe('the class server, started as npm run class starts it', () => {
       '/__OPEN-IN-EDITOR?file=x', '/lib/../__open-in-editor?file=x', '/%5F_open-in-editor?file=x', '/@fs/etc/passwd', '/@fs/etc/hosts?raw',
       '/node_modules/.vite-class/deps/p5.js.map', '/lib/index.js.map', '/.git/config', '/.GIT/config', '/.ENV', '/.env',
       '/sketches/solutions/08-traffic-signal.js', '/sketches/ſolutions/08-traffic-signal.js', '/sketches/SOLUTIONS/08-traffic-signal.js',
-      '/tests/e2e/homework-answers.js', '/package.json', '/vite.config.js', '/scripts/class.js', '/sketches/%2e%2e/.git/config']) {
+      '/tests/e2e/homework-answers.js', '/package.json', '/vite.config.js', '/scripts/class.js', '/sketches/%2e%2e/.git/config',
+      '/sketch-code/08-traffic-signal.js', '/sketch-code/solutions/08-traffic-signal.js', '/sketch-code/..%2Fsolutions%2F08-traffic-signal.js', '/editor/../vite.config.js']) {
       const answer = await ask(port, path);
       expect([path, answer.status]).toEqual([path, 404]);
     }
   });
 
   it('serves what the students\' pages need', async () => {
-    for (const path of ['/', '/index.html', '/sketches/04-find-the-pink-pixel.html', '/sketches/04-find-the-pink-pixel.js', '/lib/index.js', '/gallery.js', '/@vite/client', '/api/']) {
+    for (const path of ['/', '/index.html', '/sketches/04-find-the-pink-pixel.html', '/sketches/04-find-the-pink-pixel.js', '/lib/index.js', '/gallery.js', '/@vite/client', '/api/',
+      '/editor/code-in-page.js', '/editor/code-in-page.css', '/sketch-code/08-homework-traffic-signal.js']) {
       const answer = await ask(port, path);
       expect([path, answer.status]).toEqual([path, 200]);
     }
@@ -99,6 +101,12 @@ describe('the class server, started as npm run class starts it', () => {
     // A name the server was not told: refused before the board hears of it.
     const rebound = await ask(port, '/class/send', { method: 'POST', host: `rebound.example:${port}`, json: {} });
     expect([rebound.status, rebound.headers['x-refused-by']]).toEqual([403, 'class-gate']);
+  });
+
+  it('gives the editor each sketch\'s own file as its starter, never a solution', async () => {
+    const starter = await ask(port, '/sketch-code/08-homework-traffic-signal.js');
+    expect(starter.body).toContain('TODO');
+    expect(starter.body).toBe(readFileSync('sketches/08-homework-traffic-signal.js', 'utf8'));
   });
 
   it('answers to the computer\'s names, and says how to add another', async () => {
