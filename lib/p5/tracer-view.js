@@ -35,6 +35,7 @@ import { pixelAt, listenForPixels } from './tracer-input.js';
 import { pngDataURL, pngFilename, download, createSaveButton } from './tracer-export.js';
 import { checkScale, pictureScale, sizePicture, watchRoom } from './tracer-layout.js';
 import { createPictureWords } from './picture-words.js';
+import { reducedMotion } from './announce.js';
 import { createEvents } from './tracer-events.js';
 import { engineRenderer, showEngine, checkEngine } from './engines.js';
 import { listenForOrbit } from './gpu-orbit.js';
@@ -273,7 +274,7 @@ export class TracerView {
     const r = this.#renderer;
     if (r.lost) { this.setEngine('cpu'); return; } // the GPU cannot go on (its context lost, a visual mode): engineRenderer says why
     const { changed, done } = r.step(this.budgetMs);
-    if (changed) this.#blit();
+    if (reducedMotion() ? done : changed) this.#blit(); // reduced motion: no passes, the picture once it is done
     this.#showProgress();
     if (this.#events.heard('progress')) this.#events.emit('progress', { progress: done ? 1 : r.progress, done, current: this.current }, this);
     if (r.problem !== this.#shownProblem) this.#shownProblem = showWorkerProblem(this.workerNote, r.problem);
@@ -382,7 +383,7 @@ export class TracerView {
 
   /** Grid, the pixel being traced and the selected pixel's crosshair, on the overlay only (see tracer-overlay.js). */
   #drawOverlay() {
-    const current = this.#renderer.done ? null : this.#renderer.current;
+    const current = this.#renderer.done || reducedMotion() ? null : this.#renderer.current;
     this.#shownCurrent = current && { ...current };
     drawOverlay(this.#overlayCtx, { width: this.width, height: this.height, grid: this.#grid, current, selected: this.#selected });
   }
@@ -403,6 +404,7 @@ export class TracerView {
     this.overlay = element('canvas', { class: 'rt-overlay', 'data-overlay': '', 'aria-hidden': 'true' });
     this.#overlayCtx = this.overlay.getContext('2d');
     const stage = element('div', { class: 'rt-stage' }, c, this.overlay);
+    this.#words.stage(stage); // the application screen readers pass the keys to
 
     this.progressFill = element('div', { class: 'rt-progress-fill' });
     this.progressText = element('span', { class: 'rt-progress-text', 'data-progress-text': '' });
