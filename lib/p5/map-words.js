@@ -64,7 +64,7 @@ export function mapValue(mode, scene, camera, x, y) {
  * camera's rays (at most SUMMARY_SIDE a side). '' for the shaded picture.
  * @example
  * mapSummary('discriminant', scene, camera);
- * // 'Discriminant map: positive (two roots, the ray goes through) on pixels x 20–43, y 6–41; negative (no hit) everywhere else.'
+ * // 'Discriminant map: positive (two hits) on pixels x 14–49, y 6–41; negative (no hit) everywhere else.'
  */
 export function mapSummary(mode, scene, camera) {
   const { width, height } = camera;
@@ -91,8 +91,8 @@ export function mapSummary(mode, scene, camera) {
     }
   }
   const name = mode === 'roots' ? 'Roots map' : 'Discriminant map';
-  const words = mode === 'roots' ? ['0 roots (no hit)', '1 root (a graze)', '2 roots (the ray goes through)']
-    : ['negative (no hit)', 'about 0 (one root, a graze)', 'positive (two roots, the ray goes through)'];
+  const words = mode === 'roots' ? ['0 roots (no hit)', '1 root (a graze)', '2 roots (two hits)']
+    : ['negative (no hit)', 'about 0 (a graze)', 'positive (two hits)'];
   if (!boxes[0] && !boxes[1] && !boxes[2]) return `${name}: no sphere, black everywhere.`;
   const inner = boxes[2] ? 2 : boxes[1] ? 1 : 0;
   const box = boxes[inner];

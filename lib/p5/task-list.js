@@ -41,10 +41,10 @@ export function createTaskList(p, options) {
   return new TaskList(checkOptions(options, OPTIONS, 'createTaskList'));
 }
 
-/** A task's words up to its first colon: "Select any pixel" of "Select any pixel: click it, …". */
+/** A task's words up to its first colon, without its asides: "Select any pixel" of "Select any pixel: click it, …". */
 function shortText(text) {
   const colon = text.indexOf(': ');
-  return (colon > 0 ? text.slice(0, colon) : text).replace(/\.$/, '');
+  return (colon > 0 ? text.slice(0, colon) : text).replace(/ \([^()]*\)/g, '').replace(/\.$/, '');
 }
 
 /** The task list of one page, what `p.createTaskList({ … })` returns. */
