@@ -34,7 +34,7 @@ export function orbitKey(key, shift = false) {
 
 /**
  * Does what `orbitKey` says to the view; true when the key was used.
- * @param {{ turn(yaw: number, pitch: number): unknown, zoom(factor: number): unknown, stop(): unknown, shooting: boolean }} view
+ * @param {{ turn(yaw: number, pitch: number): unknown, zoom(factor: number): unknown, stop(): unknown, shooting: boolean, canvas?: HTMLCanvasElement | null }} view
  */
 export function applyOrbitKey(view, key, shift) {
   const move = orbitKey(key, shift);

@@ -29,7 +29,7 @@ const words = new WeakMap();
  * Keeps a 3D view's canvas named by where it looks from, and says it once it
  * rests after a turn (keys, buttons, a drag). Call it after the view turned;
  * `speak = false` only names it (as the canvas comes).
- * @param {{ canvas: ?HTMLCanvasElement, orbit: { yaw: number, pitch: number } }} view
+ * @param {{ canvas?: HTMLCanvasElement | null }} view its canvas's data-yaw and data-pitch say where it looks from
  */
 export function orbitChanged(view, speak = true) {
   if (!words.has(view)) words.set(view, createOrbitWords(view));
