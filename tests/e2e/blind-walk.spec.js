@@ -268,3 +268,22 @@ test.describe('with reduced motion', () => {
     expect(await page.evaluate(() => document.querySelector('[data-tracer]').closest('[data-tracer-view]').dataset.state)).toBe('done');
   });
 });
+
+test.describe('at 320 CSS px wide', () => {
+  test.use({ viewport: { width: 320, height: 640 } });
+
+  test('sketch 11: the pixel\'s rays table scrolls by keyboard (a focusable, named region), and axe finds nothing serious', async ({ page }) => {
+    test.setTimeout(120_000);
+    await page.goto('/sketches/11-several-rays-per-pixel.html');
+    await waitForDone(page);
+    await page.locator('[data-tracer]').first().focus();
+    await page.keyboard.press('ArrowRight');
+    await waitForDone(page);
+    const wrap = page.locator('.rt-sample-rays > .rt-table-wrap');
+    await expect(wrap).toHaveAttribute('tabindex', '0');
+    await expect(wrap).toHaveAccessibleName('The pixel\'s rays table');
+    const { default: AxeBuilder } = await import('@axe-core/playwright');
+    const { violations } = await new AxeBuilder({ page }).withTags(['wcag2a', 'wcag2aa', 'wcag21a', 'wcag21aa', 'wcag22aa']).analyze();
+    expect(violations.filter((v) => v.impact === 'serious' || v.impact === 'critical').map((v) => v.id)).toEqual([]);
+  });
+});
