@@ -37,7 +37,7 @@ export function orbitChanged(view, speak = true) {
 }
 
 function createOrbitWords(view) {
-  const voice = createAnnouncer({ name: 'view3d' });
+  let voice = null; // made with the first orbit there is to say: a view without a canvas (yet) says nothing
   let said = '';
   return (speak) => {
     const c = view.canvas;
@@ -45,6 +45,7 @@ function createOrbitWords(view) {
     if (!orbit) return;
     const where = orbitWords(orbit);
     c.setAttribute('aria-label', `The scene in 3D, seen ${where}: ${KEYS}`);
+    voice ??= createAnnouncer({ name: 'view3d' });
     if (speak && where !== said) voice.say(`Seen ${where}.`);
     said = where;
   };
