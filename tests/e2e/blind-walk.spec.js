@@ -226,13 +226,18 @@ test('"Copy answer" says what it did', async ({ page }) => {
   const copy = page.getByRole('button', { name: 'Copy answer' });
   await copy.focus();
   await reader.press('Enter');
-  expect(reader.said.at(-1).text).toBe('Nothing to copy yet: check an answer first.');
+  expect(reader.said.at(-1).text).toBe('Check an answer first: nothing to copy yet.');
+  await expect(page.locator('[data-copied]')).toHaveText('Check an answer first: nothing to copy yet.'); // shown as said
   await page.locator('input[name="x"]').fill('16');
   await page.locator('input[name="y"]').fill('12');
   await page.locator('[data-check]').click();
   await copy.focus();
   await reader.press('Enter');
-  expect(reader.said.at(-1).text).toMatch(/^(Copied: Pixel: 16,12; H: 0; V: 0|Not copied: the browser refused\. The answer is Pixel: 16,12; H: 0; V: 0)$/);
+  const said = reader.said.at(-1).text;
+  expect(said).toMatch(/^(Copied: Pixel: 16,12; H: 0; V: 0\. Paste it in the class chat\.|Select the answer and press Ctrl\+C \(⌘C\): Pixel: 16,12; H: 0; V: 0)$/);
+  await expect(page.locator('[data-copied]')).toHaveText(said);
+  // one voice: the note beside the button is no status of its own (it would be said twice)
+  await expect(page.locator('[data-copied]')).not.toHaveAttribute('role', /.*/);
 });
 
 test.describe('with reduced motion', () => {
