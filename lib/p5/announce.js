@@ -56,6 +56,7 @@ function speak(v) {
 export function createAnnouncer({ name = '', order = 0, speaksFor = '', delay = ANNOUNCE_DELAY_MS } = {}) {
   const last = element('p', { hidden: '', 'data-announce': name });
   const v = pageVoice();
+  v.status.before(last); // on the page beside the voice, unless its part puts it in its own place
   const key = name || `part-${v.parts.size}-${Math.random()}`;
   if (speaksFor) v.silenced.set(speaksFor, (v.silenced.get(speaksFor) ?? 0) + 1);
   return {
