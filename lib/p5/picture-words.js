@@ -24,6 +24,11 @@ const TYPE_AHEAD_MS = 800;
 /** Rows of pixels read out at most: beyond, a row is every n-th pixel row. */
 const MAX_ROWS = 240;
 let ids = 0;
+/** The application's name: its keys, by engine. */
+const KEYS = {
+  cpu: 'Arrow keys: a pixel; p: next pink, or a colour\'s first letter',
+  gpu: 'Arrow keys: turn the camera, or move the selected pixel (Escape lets it go); + and −: nearer, farther; p: next pink, or a colour\'s first letter',
+};
 
 /**
  * Makes `canvas` an image described in words inside an application that takes
@@ -46,7 +51,7 @@ export function createPictureWords(canvas, view) {
   const rowsNote = element('p', { class: 'rt-note', 'data-picture-rows-note': '' });
   const details = element('details', { class: 'rt-picture-text' }, element('summary', {}, 'Picture as text'), rowsNote, rows);
   const voice = createAnnouncer({ name: 'picture', order: 1 });
-  let last = -Infinity, timer = 0, names = null, typed = '', typedAt = 0, sought = '', shownRows = '';
+  let last = -Infinity, timer = 0, names = null, typed = '', typedAt = 0, sought = '', shownRows = '', stageElement = null;
   addSkipLink(canvas);
 
   const caption = () => canvas.closest('figure')?.querySelector('figcaption')?.textContent.trim() || 'Traced picture';
@@ -129,9 +134,14 @@ export function createPictureWords(canvas, view) {
     },
     /** Makes the picture's stage the application the keys go to (it holds the focusable picture). */
     stage(stage) {
+      stageElement = stage;
       stage.setAttribute('role', 'application');
       stage.setAttribute('aria-roledescription', 'picture of pixels');
-      stage.setAttribute('aria-label', 'Arrow keys: a pixel; p: next pink, or a colour\'s first letter');
+      this.engine('cpu');
+    },
+    /** The engine tracing now: on the GPU the arrow keys turn the camera until a pixel is selected (gpu-orbit.js); the name says so. */
+    engine(engine) {
+      stageElement?.setAttribute('aria-label', KEYS[engine] ?? KEYS.cpu);
     },
     destroy() {
       clearTimeout(timer);

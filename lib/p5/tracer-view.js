@@ -168,6 +168,7 @@ export class TracerView {
     const { renderer, engine: now, why } = engineRenderer(checkEngine(engine), this.#renderer, { budgetMs: this.budgetMs, shader: modeShader(this.#mode), shaded: this.#mode === 'shaded' });
     if (renderer !== this.#renderer) { this.#renderer.terminate(); this.#renderer = renderer; }
     showEngine(this, now, why);
+    this.#words.engine(now); // the picture's name says what its arrow keys do on this engine
     this.#started();
     return this;
   }
