@@ -65,7 +65,10 @@ export function createPictureWords(canvas, view) {
     timer = 0;
     last = performance.now();
     const map = mapSummary(view.mode, view.scene, view.camera);
-    const text = `${view.width} by ${view.height} pixels. ${map ? `${map} Of the scene: ` : ''}${describeScene(view.scene, view.camera)}`;
+    const full = `${view.width} by ${view.height} pixels. ${map ? `${map} Of the scene: ` : ''}${describeScene(view.scene, view.camera)}`;
+    description.dataset.full = full;
+    const twin = earlierTwin(description);
+    const text = twin ? `${view.width} by ${view.height} pixels. The same scene as ${twin}, seen from the same eye.` : full;
     if (description.textContent !== text) description.textContent = text;
     canvas.setAttribute('aria-label', name());
   };
@@ -100,6 +103,7 @@ export function createPictureWords(canvas, view) {
     const now = performance.now();
     typed = now - typedAt < TYPE_AHEAD_MS ? typed + letter : letter;
     typedAt = now;
+    if (!COLOR_NAMES.some((c) => c.startsWith(typed)) && !/^(.)\1+$/.test(typed)) typed = letter; // w then g: gray, not "wg" (as a list box)
     // the same letter again: the next pixel of the colour already sought
     const again = /^(.)\1+$/.test(typed) && sought.startsWith(letter);
     const all = pictureNames();
@@ -149,6 +153,21 @@ export function createPictureWords(canvas, view) {
       voice.destroy();
     },
   };
+}
+
+/**
+ * The caption of a picture before this one on the page whose description is
+ * the same (sketch 11's two pictures of one scene): the second says so in a
+ * line instead of the whole scene again. Null when there is none.
+ */
+function earlierTwin(description) {
+  for (const other of document.querySelectorAll('[data-picture-description]')) {
+    if (other === description) return null;
+    if (other.dataset.full === description.dataset.full) {
+      return other.closest('figure')?.querySelector('figcaption')?.textContent.trim() || 'the picture before';
+    }
+  }
+  return null;
 }
 
 /** Once a page: its first link, shown when focused, goes to the first picture (the picture takes the keys). */
