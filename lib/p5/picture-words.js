@@ -83,7 +83,7 @@ export function createPictureWords(canvas, view) {
     const again = shownRows !== '' && text !== shownRows;
     shownRows = text;
     rows.replaceChildren(...lines.map((line) => element('li', {}, line)));
-    rowsNote.textContent = `${view.done ? '' : 'Still tracing: '}${view.height} rows of ${view.width} pixels, row 0 at the top, x from 0 at the left${every > 1 ? ` (every ${every}th row)` : ''}.`;
+    rowsNote.textContent = `${view.done ? '' : 'Still tracing: '}${view.height} rows of ${view.width} pixels, row 0 at the top, x from 0 at the left${every > 1 ? ` (${everyNth(every)} row)` : ''}.`;
     if (again) voice.say('Picture as text: the picture was traced again, its rows changed.');
   };
   details.addEventListener('toggle', () => { if (details.open) readRows(); });
@@ -154,6 +154,9 @@ export function createPictureWords(canvas, view) {
     },
   };
 }
+
+/** "every other", "every 3rd", "every 4th": which rows a tall picture's text reads. */
+const everyNth = (n) => (n === 2 ? 'every other' : `every ${n}${(n % 100 > 10 && n % 100 < 14) ? 'th' : ({ 1: 'st', 2: 'nd', 3: 'rd' })[n % 10] ?? 'th'}`);
 
 /**
  * The caption of a picture before this one on the page whose description is
