@@ -130,6 +130,82 @@ test('12: the cone found by its colour\'s letter', async ({ page }) => {
   expect(reader.words, reader.text).toBeLessThanOrEqual(WORD_BUDGET);
 });
 
+/** What the page said (its live news) since the walk began, as one text. */
+const news = (reader) => reader.said.filter((s) => s.how === 'live').map((s) => s.text).join(' ');
+
+/** Presses `key` until `done()` or the walk's key budget is spent; the student decides from what was said. */
+async function pressUntil(reader, key, done, budget) {
+  while (!done() && reader.keys < budget) await reader.press(key);
+}
+
+test('10: the first task by keys, said as the task done', async ({ page }) => {
+  const reader = await open(page, '/sketches/10-playground.html');
+  await toPicture(reader);
+  await reader.press('ArrowRight');
+  await expect(page.locator('[data-task="select"]')).toHaveAttribute('data-done', 'true');
+  const said = reader.said.filter((s) => s.how === 'live').map((s) => s.text);
+  expect(said, reader.text).toHaveLength(1); // the pixel and the task, one message
+  expect(said[0]).toMatch(/^Pixel: \d+,\d+; H: [-\d.]+; V: [-\d.]+\. \w+, the sphere 1\. Task done \(1 of 4\): Select any pixel/);
+  expect(reader.keys, reader.text).toBeLessThanOrEqual(keyBudget(1));
+  expect(reader.words, reader.text).toBeLessThanOrEqual(WORD_BUDGET);
+});
+
+test('11: an edge pixel by keys: the second picture by Tab, then along the sphere\'s rim until a pixel is said to be an edge', async ({ page }) => {
+  const reader = await open(page, '/sketches/11-several-rays-per-pixel.html');
+  await toPicture(reader);
+  await pressUntil(reader, 'Tab', () => /4 rays per pixel graphic/.test(reader.said.at(-1).text), keyBudget(1));
+  expect(reader.said.at(-1).text).toMatch(/4 rays per pixel graphic 64 by 48 pixels\. The same scene as One ray per pixel, seen from the same eye\.$/); // not the scene again
+  expect(reader.mode).toBe('focus');
+  // the page opens on the pink sphere's top edge: the first arrow says where the student is
+  await pressUntil(reader, 'ArrowLeft', () => /an edge: of its 4 rays/.test(news(reader)), keyBudget(1));
+  expect(news(reader)).toMatch(/; an edge: of its 4 rays, \d hit (the [a-z ]+|nothing), \d (the [a-z ]+|nothing)[.;].*Task done \(1 of 3\): Find an edge pixel/);
+  await expect(page.locator('[data-task="edge"]')).toHaveAttribute('data-done', 'true');
+  expect(reader.keys, reader.text).toBeLessThanOrEqual(keyBudget(1));
+  expect(reader.words, reader.text).toBeLessThanOrEqual(WORD_BUDGET);
+});
+
+test('13: the bunny found by its colour, its BVH counts said with the pixel in one message', async ({ page }) => {
+  const reader = await open(page, '/sketches/13-meshes-and-a-bvh.html');
+  await toPicture(reader);
+  expect(reader.said.at(-1).text).toMatch(/An orange mesh called bunny/);
+  await reader.press('o'); // the next orange pixel
+  const said = reader.said.filter((s) => s.how === 'live').map((s) => s.text);
+  expect(said, reader.text).toHaveLength(1);
+  expect(said[0]).toMatch(/^Pixel: \d+,\d+; H: [-\d.]+; V: [-\d.]+\. Orange, the bunny\. Pixel \d+,\d+: the ray tested [\d,]+ boxes and [\d,]+ triangles.* Task done \(1 of 4\): Select a pixel of the bunny/);
+  await expect(page.locator('[data-task="bunny"]')).toHaveAttribute('data-done', 'true');
+  expect(reader.keys, reader.text).toBeLessThanOrEqual(keyBudget(1));
+  expect(reader.words, reader.text).toBeLessThanOrEqual(WORD_BUDGET);
+});
+
+test('14: the penumbra by keys, heard as the disc\'s shadow rays that reach the pixel', async ({ page }) => {
+  const reader = await open(page, '/sketches/14-spot-and-area-lights.html');
+  await toPicture(reader);
+  await pressUntil(reader, 'ArrowDown', () => /in the penumbra of disc/.test(news(reader)), keyBudget(1));
+  expect(news(reader)).toMatch(/the floor; (outside the cone of spot; )?in the penumbra of disc: ([1-9]|1[0-5]) of 16 shadow rays reach it\..*Tasks? done \(\d of 4\): Find a pixel of the penumbra/);
+  await expect(page.locator('[data-task="penumbra"]')).toHaveAttribute('data-done', 'true');
+  expect(reader.keys, reader.text).toBeLessThanOrEqual(keyBudget(1));
+  expect(reader.words, reader.text).toBeLessThanOrEqual(WORD_BUDGET);
+});
+
+test('15: on the GPU the picture says its arrows turn the camera, and a turn is heard in the answer line\'s angles', async ({ page }) => {
+  test.setTimeout(120_000);
+  const reader = await open(page, '/sketches/15-live-on-the-gpu.html');
+  await toPicture(reader);
+  expect(reader.said.at(-1).text).toMatch(/^Arrow keys: turn the camera, or move the selected pixel \(Escape lets it go\); \+ and −: nearer, farther; p: next pink/);
+  expect(reader.mode).toBe('focus');
+  await reader.press('ArrowRight');
+  await expect(page.locator('[data-announce="camera"]')).toHaveText('Camera: H: 5.0; V: -8.0; 26 from the point it turns about.');
+  await reader.press('p'); // a pink pixel: now the arrows move it
+  await expect(page.locator('[data-inspector]')).toContainText('pink');
+  await reader.press('Escape');
+  await expect(page.locator('[data-announce="camera"]')).toHaveText('No pixel selected: the arrow keys turn the camera.');
+  await page.waitForTimeout(500);
+  const said = news(reader);
+  expect(said).toMatch(/Camera: H: 5\.0; V: -8\.0/);
+  expect(said).toMatch(/Pixel: \d+,\d+; H: [-\d.]+; V: [-\d.]+\. Pink, the pink sphere/);
+  expect(reader.words, reader.text).toBeLessThanOrEqual(WORD_BUDGET);
+});
+
 // A read-all as the page opens: the words NVDA says from the top to the end of the page.
 for (const [path, most] of [['01-rays-through-pixels', 430], ['02-the-quadratic', 660], ['04-find-the-pink-pixel', 330], ['12-cylinders-cones-triangles', 420]]) {
   test(`a read-all of ${path} as it opens says at most ${most} words`, async ({ page }) => {
@@ -209,6 +285,10 @@ test('a key finds the next pink pixel; the letters of a colour not in the pictur
   expect(await page.locator('[data-inspector]').getAttribute('data-x')).not.toBe(first); // the next one
   await reader.press('y'); // 01 has no yellow
   expect(reader.said.at(-1).text).toMatch(/^No yellow pixel here\. This picture has .*pink/);
+  const before = await page.locator('[data-inspector]').getAttribute('data-x');
+  await reader.press('p'); // at once, as a list box's letters: "yp" is no colour, so p alone, the next pink one
+  expect(await page.locator('[data-inspector]').getAttribute('data-x')).not.toBe(before);
+  expect(reader.said.at(-1).text).toMatch(/^Pixel: \d+,\d+; .* Pink, the pink sphere\.$/);
 });
 
 test('from the task list back to the picture in two keys', async ({ page }) => {
