@@ -52,6 +52,9 @@ function speak(v) {
  * @param {number} [options.delay=ANNOUNCE_DELAY_MS]
  * @returns {{ element: HTMLElement, say: (text: string) => void, destroy: () => void }} `element` holds the
  *   part's last words for whoever reads the page's text (hidden: the page's status says them)
+ * @example
+ * const voice = createAnnouncer({ name: 'explain', order: 1 }); // after the pixel, in the same message
+ * view.onSelect(() => voice.say('d > r: the ray passes the sphere by.'));
  */
 export function createAnnouncer({ name = '', order = 0, speaksFor = '', delay = ANNOUNCE_DELAY_MS } = {}) {
   const last = element('p', { hidden: '', 'data-announce': name });
