@@ -154,7 +154,7 @@ export class TaskList {
   #announce(newly) {
     const { done, total, finished } = pageProgress(this.#progress, this.#lesson);
     const names = newly.map((t) => shortText(t.text)).join('; ');
-    this.#say(`${newly.length > 1 ? 'Tasks' : 'Task'} done (${done} of ${total}): ${names}.${finished ? ' Every task of this page is done. Well done!' : ''}`);
+    this.#say(`${newly.length > 1 ? 'Tasks' : 'Task'} done (${done} of ${total}): ${names}.${finished ? ' That was every task of this page. Well done!' : ''}`);
   }
 
   /** On the page, and said by the page's voice with the pixel and verdict that did it. */
