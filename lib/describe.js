@@ -298,3 +298,63 @@ function runs(names) {
   }
   return out.join(', ');
 }
+
+/** The names every colour of a picture may have (lib/color.js colorName), for a search by first letters. */
+export const COLOR_NAMES = ['pink', 'red', 'orange', 'yellow', 'green', 'cyan', 'blue', 'purple', 'white', 'gray', 'black', 'brown'];
+
+/**
+ * Each pixel's colour name as an index into COLOR_NAMES, row by row: what the
+ * rows in words and the search for "the next pink pixel" read.
+ * @param {Uint8ClampedArray} rgba the picture, width × height × 4 bytes
+ * @returns {Uint8Array}
+ */
+export function pixelNames(rgba, width, height) {
+  const names = new Uint8Array(width * height);
+  const rgb = [0, 0, 0];
+  for (let i = 0; i < names.length; i++) {
+    rgb[0] = rgba[4 * i]; rgb[1] = rgba[4 * i + 1]; rgb[2] = rgba[4 * i + 2];
+    names[i] = COLOR_NAMES.indexOf(colorName(rgb));
+  }
+  return names;
+}
+
+/**
+ * The traced picture at its own resolution, one line per row of pixels, the
+ * runs of one colour named with their columns, in the coordinates of the
+ * answer line (`Pixel: x,y`, both from 0): `'Row 12: 0–9 white, 10–21 pink, 22–31 white'`.
+ * @param {Uint8Array} names pixelNames' result
+ * @returns {string[]}
+ */
+export function pixelRows(names, width, height) {
+  const lines = [];
+  for (let y = 0; y < height; y++) {
+    const runs = [];
+    for (let x = 0; x < width;) {
+      const name = names[y * width + x];
+      let end = x;
+      while (end + 1 < width && names[y * width + end + 1] === name) end++;
+      runs.push(`${x === end ? x : `${x}–${end}`} ${COLOR_NAMES[name]}`);
+      x = end + 1;
+    }
+    lines.push(`Row ${y}: ${runs.join(', ')}`);
+  }
+  return lines;
+}
+
+/**
+ * The next pixel after `from` (row by row, wrapping round) whose colour name is
+ * `name`: `{ x, y }`, or null when the picture has none. From null: the first.
+ * @param {Uint8Array} names pixelNames' result
+ * @param {string} name a colour name
+ * @param {{x: number, y: number}|null} from
+ * @param {number} [step=1] 1: the next one; -1: the one before
+ */
+export function nextPixelNamed(names, width, name, from, step = 1) {
+  const wanted = COLOR_NAMES.indexOf(name), n = names.length;
+  const start = from ? from.y * width + from.x : step > 0 ? -1 : n;
+  for (let k = 1; k <= n; k++) {
+    const i = (((start + step * k) % n) + n) % n;
+    if (names[i] === wanted) return { x: i % width, y: Math.floor(i / width) };
+  }
+  return null;
+}

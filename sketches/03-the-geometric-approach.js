@@ -10,7 +10,7 @@
  */
 import p5 from 'p5';
 import { Camera, Scene, Sphere, PointLight, intersectQuadratic, intersectGeometric } from '../lib/index.js';
-import { formatLabel } from '../lib/p5/index.js'; // and the sketchbook's p5 addon: p.createTracerView, …
+import { formatLabel, createAnnouncer } from '../lib/p5/index.js'; // and the sketchbook's p5 addon: p.createTracerView, …
 
 // The worksheet's sphere, an eye outside it and an eye inside it (past its centre, a little high).
 const SPHERE_CENTER = [0, 0, -20], SPHERE_RADIUS = 4, COLOR = [1, 0.32, 0.36];
@@ -27,9 +27,10 @@ function makeScene() {
 }
 
 new p5((p) => {
-  let view;
+  let view, voice; // voice: the sentence below the picture, said with the pixel for a screen reader
 
   p.setup = () => {
+    voice = createAnnouncer({ name: 'explain', order: 1 });
     view = p.createTracerView({ scene: makeScene(), camera: new Camera({ width: WIDTH, height: HEIGHT, ...OUTSIDE }), parent: 'picture', scale: 8, label: 'Click a pixel' });
     view.figure.parentElement.prepend(view.figure);
     p.createCanvas(620, 500).parent('diagram');
@@ -88,5 +89,6 @@ new p5((p) => {
         : g.roots === 0 ? `d = ${formatLabel(Math.sqrt(g.d2), 2)} > r = ${SPHERE_RADIUS}: the ray passes the sphere by, no intersection.`
           : `tca = ${formatLabel(g.tca, 2)} ≥ 0 and d ≤ r: the ray hits first at t = tca − thc = ${formatLabel(g.t, 2)}.`;
     p.select('#now').elt.textContent = sentence;
+    voice.say(sentence); // with the pixel, in the page's one message
   }
 }, document.getElementById('sketch'));

@@ -16,7 +16,7 @@ import { formatAngle } from '../lib/p5/index.js'; // and the sketchbook's p5 add
 const WIDTH = 32;
 const HEIGHT = 24;
 const FOV = 30; // vertical field of view, degrees
-const START = { x: 10, y: 12, h: 0, v: 0 };
+const START = { h: 0, v: 0 }; // the pixel boxes start empty: the first answer is the student's
 
 const cameraFor = (h, v) => new Camera({ width: WIDTH, height: HEIGHT, fov: FOV, yaw: h, pitch: v });
 
@@ -37,8 +37,8 @@ new p5((p) => {
     form = p.createAnswerForm({
       parent: 'activity',
       boxes: {
-        x: { label: 'Pixel x', value: START.x, rule: { min: 0, max: WIDTH - 1, integer: true } },
-        y: { label: 'Pixel y', value: START.y, rule: { min: 0, max: HEIGHT - 1, integer: true } },
+        x: { label: 'Pixel x', rule: { min: 0, max: WIDTH - 1, integer: true } },
+        y: { label: 'Pixel y', rule: { min: 0, max: HEIGHT - 1, integer: true } },
         h: { label: 'Camera H', value: START.h, rule: { min: -180, max: 180 } },
         v: { label: 'Camera V', value: START.v, rule: { min: -90, max: 90 } },
       },
@@ -56,7 +56,6 @@ new p5((p) => {
       form.fill({ x: s.x, y: s.y });
       check();
     });
-    check();
     p.createTaskList({ page: '04', view }); // the page's tasks, ticked off as they are done
   };
 

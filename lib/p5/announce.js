@@ -1,31 +1,81 @@
 /**
- * One short spoken line for screen readers: an atomic status (role="status")
- * that says only the last of quick changes. While an arrow key repeats, the
- * selected pixel changes every 30 ms; the status waits until it rests.
+ * The page's one voice for screen readers: one atomic status (role="status")
+ * that says only the last of quick changes, and says together what happened
+ * together. While an arrow key repeats, the selected pixel changes every
+ * 30 ms; the status waits until it rests. One arrow press on sketch 04 moves
+ * the pixel, judges the answer and may tick a task off: the three come as one
+ * message (pixel, then verdict, then task), not three that interrupt each other.
  */
 import { element } from './dom.js';
 
 /** How long the news must rest before it is said, ms. */
 export const ANNOUNCE_DELAY_MS = 200;
-/** The most words one announcement may have. */
+/** The most words one part (the pixel, a verdict, a task) may have. */
 export const MAX_WORDS = 40;
+/** The most words one message of the page may have, all its parts together. */
+export const MAX_MESSAGE_WORDS = 60;
 
 /**
- * @param {object} [options]
- * @param {string} [options.name] the `data-announce` value (what it announces), for tests
- * @param {number} [options.delay=ANNOUNCE_DELAY_MS]
- * @returns {{ element: HTMLElement, say: (text: string) => void, destroy: () => void }}
+ * The page's voice: its status element (made on first use, at the end of the
+ * body), the parts said since it last spoke, and the parts that no longer speak
+ * because another speaks for them (sketch 04's verdict says the pixel as the
+ * line to type, so the inspector's line of the ray's own angles is not said).
  */
-export function createAnnouncer({ name = '', delay = ANNOUNCE_DELAY_MS } = {}) {
-  const status = element('p', { class: 'rt-visually-hidden', role: 'status', 'aria-atomic': 'true', 'data-announce': name });
-  let timer = 0;
+let voice = null;
+
+function pageVoice() {
+  if (voice?.status.isConnected) return voice;
+  const status = element('p', { class: 'rt-visually-hidden', role: 'status', 'aria-atomic': 'true', 'data-announce': 'page' });
+  document.body.append(status);
+  voice = { status, parts: new Map(), silenced: new Map(), timer: 0, delay: ANNOUNCE_DELAY_MS };
+  return voice;
+}
+
+/** Says the parts heard since the last message, in their order, as one message. */
+function speak(v) {
+  v.timer = 0;
+  const parts = [...v.parts.entries()].filter(([name]) => !v.silenced.get(name)).map(([, part]) => part).sort((a, b) => a.order - b.order);
+  v.parts.clear();
+  if (parts.length === 0) return;
+  let text = limitWords(parts.map((p) => p.text).join(' '), MAX_MESSAGE_WORDS);
+  // the same words again (a second press that found the same): a status that does not change says nothing
+  if (v.status.textContent === text) text += '\u00a0';
+  v.status.textContent = text;
+}
+
+/**
+ * One part of the page's voice.
+ * @param {object} [options]
+ * @param {string} [options.name] what it announces ('pixel', 'verdict', 'task', …): its `data-announce`, for tests
+ * @param {number} [options.order=0] where it comes in a message said together with others (smaller first)
+ * @param {string} [options.speaksFor] the name of a part this one says instead (that part is no longer said)
+ * @param {number} [options.delay=ANNOUNCE_DELAY_MS]
+ * @returns {{ element: HTMLElement, say: (text: string) => void, destroy: () => void }} `element` holds the
+ *   part's last words for whoever reads the page's text (hidden: the page's status says them)
+ * @example
+ * const voice = createAnnouncer({ name: 'explain', order: 1 }); // after the pixel, in the same message
+ * view.onSelect(() => voice.say('d > r: the ray passes the sphere by.'));
+ */
+export function createAnnouncer({ name = '', order = 0, speaksFor = '', delay = ANNOUNCE_DELAY_MS } = {}) {
+  const last = element('p', { hidden: '', 'data-announce': name });
+  const v = pageVoice();
+  v.status.before(last); // on the page beside the voice, unless its part puts it in its own place
+  const key = name || `part-${v.parts.size}-${Math.random()}`;
+  if (speaksFor) v.silenced.set(speaksFor, (v.silenced.get(speaksFor) ?? 0) + 1);
   return {
-    element: status,
+    element: last,
     say(text) {
-      clearTimeout(timer);
-      timer = setTimeout(() => { status.textContent = limitWords(text); }, delay);
+      const words = limitWords(text);
+      last.textContent = words;
+      const now = pageVoice();
+      now.parts.set(key, { text: words, order });
+      clearTimeout(now.timer);
+      now.timer = setTimeout(() => speak(now), delay);
     },
-    destroy() { clearTimeout(timer); },
+    destroy() {
+      voice?.parts.delete(key);
+      if (speaksFor && voice) voice.silenced.set(speaksFor, Math.max(0, (voice.silenced.get(speaksFor) ?? 1) - 1));
+    },
   };
 }
 
@@ -33,4 +83,9 @@ export function createAnnouncer({ name = '', delay = ANNOUNCE_DELAY_MS } = {}) {
 export function limitWords(text, max = MAX_WORDS) {
   const words = String(text).trim().split(/\s+/);
   return words.length <= max ? words.join(' ') : `${words.slice(0, max - 1).join(' ')} …`;
+}
+
+/** True when the student asked for less motion (the system's "reduce motion"). */
+export function reducedMotion() {
+  return typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
 }

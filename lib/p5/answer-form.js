@@ -13,6 +13,7 @@ import { valueBox } from './value-box.js';
 import { element, resolveParent, sketchNode, copyText } from './dom.js';
 import { checkOptions } from '../check.js';
 import { joinClassBoard } from './class-board.js';
+import { createAnnouncer } from './announce.js';
 
 /**
  * Reads every box (each bad one shows its message): `{ name: value }`, or
@@ -64,16 +65,23 @@ export function createAnswerForm(p, options) {
   }
 
   const answer = element('code', { class: 'answer', 'data-answer-line': '' });
-  const result = element('span', { class: 'result', 'data-result': '', role: 'status' });
+  const result = element('span', { class: 'result', 'data-result': '' });
   const detail = element('p', { class: 'detail', 'data-answer-detail': '' });
-  const copyButton = element('button', { type: 'button', class: 'rt-button' }, 'Copy answer');
-  const copied = element('span', { class: 'copied', 'data-copied': '', role: 'status' });
+  // The verdict is said with the answer line, as the line to type: it speaks for the
+  // selected pixel too (the inspector's line gives the ray's own angles, not an answer).
+  const verdict = createAnnouncer({ name: 'verdict', order: 1, speaksFor: 'pixel' });
+  // What Copy answer did shows beside it and is said by the page's one voice (not a status of its own).
+  const copyVoice = createAnnouncer({ name: 'copy', order: 3 });
+  const copied = element('span', { class: 'copied', 'data-copied': '' });
+  const copyButton = element('button', { type: 'button', class: 'rt-button', 'data-copy-answer': '' }, 'Copy answer');
+  const tellCopy = (text) => { copied.textContent = text; copyVoice.say(text); };
   copyButton.addEventListener('click', async () => {
-    if (!answer.textContent) { copied.textContent = 'Check an answer first.'; return; }
-    copied.textContent = (await copyText(answer.textContent)) ? 'Copied: paste it in the class chat.' : 'Select the answer and press Ctrl+C (⌘C).';
+    const line = answer.textContent;
+    if (!line) return tellCopy('Check an answer first: nothing to copy yet.');
+    tellCopy(await copyText(line) ? `Copied: ${line}. Paste it in the class chat.` : `Select the answer and press Ctrl+C (⌘C): ${line}`);
   });
   const section = element('section', { class: 'task' },
-    element('h2', {}, title), form, element('div', { class: 'answer-row' }, answer, result, copyButton, copied), detail,
+    element('h2', {}, title), form, element('div', { class: 'answer-row' }, answer, result, copyButton, copied), detail, verdict.element, copyVoice.element,
     note && (note instanceof Node ? note : element('p', { class: 'note' }, note)));
   resolveParent(parent, sketchNode(p)).append(section);
 
@@ -111,6 +119,7 @@ export function createAnswerForm(p, options) {
         const bad = Object.values(boxes).filter((b) => b.message.textContent).map((b) => b.input.getAttribute('aria-label'));
         result.replaceChildren(`Fix ${bad.length === 1 ? 'the box' : 'the boxes'} ${bad.join(', ')} (marked in red, the reason beside it), then Check again.`);
         result.dataset.result = 'error';
+        verdict.say(result.textContent);
       }
       return values;
     },
@@ -127,6 +136,8 @@ export function createAnswerForm(p, options) {
       if (line !== undefined) answer.textContent = line;
       copied.textContent = '';
       if (more !== undefined) detail.textContent = more;
+      // words, not ✔ / ✘ (read as "heavy check mark"); the line first: it is the one to type
+      verdict.say(`${answer.textContent ? `${answer.textContent}. ` : ''}${ok ? 'Right' : 'Wrong'}: ${message}`);
       // The page's tasks (task-list.js) hear of each verdict.
       section.dispatchEvent(new CustomEvent('rt-answer', { bubbles: true, detail: { ok: Boolean(ok), answer: answer.textContent, submitted: byStudent, send } }));
     },

@@ -7,6 +7,7 @@
  * buttons turn it; the slider chooses the depth.
  */
 import { element, useStyle } from './dom.js';
+import { createAnnouncer } from './announce.js';
 import { checkOptions, show } from '../check.js';
 import { Mesh } from '../shapes/mesh.js';
 
@@ -54,12 +55,15 @@ export class BvhView {
   }
 
   #unwatch;
+  /** The counts are said by the page's one voice, after the pixel they belong to: a status of their own was a second message per key. */
+  #voice = createAnnouncer({ name: 'bvh', order: 1 });
 
   /** The selected pixel's ray walked down the tree (null clears it). */
   #select(pixel) {
     this.pixel = pixel;
     this.walk = pixel ? this.mesh.walk(this.view.camera.primaryRay(pixel.x, pixel.y).ray) : null;
     this.counts.textContent = countsText(pixel, this.walk, this.mesh.triangleCount);
+    if (pixel) this.#voice.say(this.counts.textContent); // with the pixel, in the page's one message
     this.draw();
   }
 
@@ -85,7 +89,7 @@ export class BvhView {
     this.canvas.style.maxWidth = '100%'; // a phone's narrow window: smaller, not wider than the page
     this.canvas.style.height = 'auto';
     this.canvas.addEventListener('keydown', (e) => this.#key(e));
-    this.counts = element('p', { 'data-bvh-counts': '', role: 'status' });
+    this.counts = element('p', { 'data-bvh-counts': '' });
     this.slider = element('input', { type: 'range', min: 0, max: this.levels.length - 1, value: this.depth, id: 'rt-bvh-depth' });
     this.slider.addEventListener('input', () => this.setDepth(Number(this.slider.value)));
     this.depthText = element('output', { for: 'rt-bvh-depth' }, `${this.depth}`);
@@ -164,6 +168,7 @@ export class BvhView {
   /** Stops following the tracer view and takes the panel off the page. */
   remove() {
     this.#unwatch();
+    this.#voice.destroy();
     this.panel.remove();
   }
 }

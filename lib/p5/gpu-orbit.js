@@ -4,8 +4,12 @@
  * at, the arrow keys turn it too (while no pixel is selected: they move a
  * selected pixel, as on every view; Escape lets the pixel go), + and − move
  * it closer and farther. A press without a drag still selects its pixel.
+ * A move by keys or a drag is said once it rests, in the lesson's angles
+ * (the camera's H and V), so that a student who cannot see it hears it.
  */
 import { Camera } from '../camera.js';
+import { formatAngle, formatNumber } from '../format.js';
+import { createAnnouncer } from './announce.js';
 
 /** Degrees per screen pixel dragged, per arrow press; the share + and − move the camera by. */
 const DRAG = 0.4, TURN = 5, ZOOM = 0.9;
@@ -15,7 +19,8 @@ const ARROWS = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, 1], ArrowD
 
 /** Listens on the view's canvas; acts only while `view.engine` is 'gpu'. */
 export function listenForOrbit(canvas, view) {
-  let press = null;
+  let press = null, voice = null;
+  const say = (text) => (voice ??= createAnnouncer({ name: 'camera', order: 1 })).say(text);
   canvas.addEventListener('pointerdown', (event) => {
     press = view.engine === 'gpu' ? { x: event.clientX, y: event.clientY, dragging: false } : null;
   }, { capture: true });
@@ -28,18 +33,32 @@ export function listenForOrbit(canvas, view) {
     press.x = event.clientX; press.y = event.clientY;
     orbit(view, dx * DRAG, -dy * DRAG, 1);
   }, { capture: true });
-  canvas.addEventListener('pointerup', () => { press = null; }, { capture: true });
+  canvas.addEventListener('pointerup', () => {
+    if (press?.dragging) say(cameraWords(view));
+    press = null;
+  }, { capture: true });
   canvas.addEventListener('keydown', (event) => {
     if (view.engine !== 'gpu') return;
     const arrow = ARROWS[event.key];
-    if (event.key === 'Escape' && view.selected) view.select(null);
-    else if (event.key === '+' || event.key === '=') orbit(view, 0, 0, ZOOM);
+    if (event.key === 'Escape' && view.selected) { view.select(null); say('No pixel selected: the arrow keys turn the camera.'); return stop(event); }
+    if (event.key === '+' || event.key === '=') orbit(view, 0, 0, ZOOM);
     else if (event.key === '-' || event.key === '_') orbit(view, 0, 0, 1 / ZOOM);
     else if (arrow && !view.selected) orbit(view, arrow[0] * TURN, arrow[1] * TURN, 1);
     else return;
-    event.preventDefault();
-    event.stopImmediatePropagation();
+    say(cameraWords(view));
+    stop(event);
   }, { capture: true });
+}
+
+function stop(event) {
+  event.preventDefault();
+  event.stopImmediatePropagation();
+}
+
+/** Where the camera looks now, in the answer line's angles: `Camera: H: 5; V: -8; 26 from the point it turns about.` */
+export function cameraWords(view) {
+  const c = view.camera;
+  return `Camera: H: ${formatAngle(c.yaw)}; V: ${formatAngle(c.pitch)}; ${formatNumber(view.orbitDistance ?? AHEAD)} from the point it turns about.`;
 }
 
 /** Turns the view's camera by yaw and pitch degrees about the point it looks at, its distance times `scale`. */

@@ -28,4 +28,6 @@ export { pageRenderState } from './page-state.js';
 // A scene in the page's link (#scene=…), page parts built from text (never parsed as HTML), text to the clipboard:
 export { readSceneLink, sceneLinkURL, linkNotice } from './scene-link.js';
 export { element, copyText } from './dom.js';
+// A part of the page's one voice for screen readers: said with the pixel, once the keys rest.
+export { createAnnouncer } from './announce.js';
 export { showInBox, downloadText } from './text-box.js';

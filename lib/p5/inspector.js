@@ -14,7 +14,6 @@
  * or `data-light` where needed) and its full precision in `data-value`, so tests and worksheets can read it.
  */
 import { recordOf } from './pixel-record.js';
-import { kindOf } from '../shapes/index.js';
 import { toHex, colorName } from '../color.js';
 import { formatNumber, formatVector, formatAngle } from '../format.js';
 import { show, checkOptions } from '../check.js';
@@ -24,9 +23,11 @@ import { joinInSlices } from '../slices.js';
 import { pixelCSV, pixelCSVLines, rootsMeaning, routesAgree } from './pixel-csv.js';
 import { gpuDifference } from './engines.js';
 import { createAnnouncer } from './announce.js';
+import { answerLine, pixelAnnouncement } from './pixel-words.js';
 import { virtualRows, VIRTUAL_FROM } from './virtual-rows.js';
 
 export { pixelCSV, pixelCSVLines, csvCell, rootsMeaning, routesAgree, AGREE_TOLERANCE } from './pixel-csv.js';
+export { answerLine, pixelAnnouncement } from './pixel-words.js';
 
 /**
  * A scene with more spheres than this shows only the rows that matter (the
@@ -192,35 +193,6 @@ export class Inspector {
 }
 
 /* ---------------- formatting ---------------- */
-
-/**
- * The lesson's answer format for a pixel's own ray, one decimal: `Pixel: 10,12; H: -1.9; V: 3.2`.
- * @example
- * answerLine({ x: 10, y: 12, h: -1.94, v: 3.21 }); // 'Pixel: 10,12; H: -1.9; V: 3.2'
- */
-export function answerLine({ x, y, h, v }) {
-  return `Pixel: ${x},${y}; H: ${formatAngle(h)}; V: ${formatAngle(v)}`;
-}
-
-/**
- * What a screen reader says of a selected pixel: its answer line, its colour
- * name and what its ray hit, in one short sentence.
- * @example
- * pixelAnnouncement(inspectPixel(classScene(), camera, 11, 12)); // 'Pixel: 11,12; H: -5.7; V: -0.6. Pink, the pink sphere.'
- */
-export function pixelAnnouncement(r) {
-  const name = colorName(r.color);
-  const hit = r.hit ? `the ${hitName(r.hit)}` : 'no hit, the background';
-  return `${answerLine(r)}. ${name.charAt(0).toUpperCase()}${name.slice(1)}, ${hit}.`;
-}
-
-/** "pink sphere" for a sphere named pink; "ground" for one named ground; "sphere 2" for one with no name (the panel's name, from 1). */
-function hitName(hit) {
-  const kind = kindOf(hit.object);
-  const name = shownName(hit.object?.name?.trim() ?? '');
-  if (!name) return hit.name;
-  return /^(pink|red|orange|yellow|green|cyan|blue|purple|white|gray|grey|black|brown)$/i.test(name) ? `${name} ${kind}` : name;
-}
 
 /** The name a light goes by in the panel (shapes have theirs in the record: shapeName). */
 const nameOf = (object, fallback) => object?.name || fallback;

@@ -1,59 +1,181 @@
 /**
- * The tracer view's picture in words: its canvas is an image (`role="img"`)
- * described by what its scene shows through its camera (lib/describe.js),
- * kept current as the scene, camera or mode change; and a "Picture as text"
- * disclosure reads the traced picture row by row in colour names.
+ * The tracer view's picture in words and by keys, for a student who cannot
+ * see it. The canvas is an image (`role="img"`) described by what its scene
+ * shows through its camera (lib/describe.js; a map, by what the map shows:
+ * map-words.js), kept current as the scene, camera or mode change. It sits in
+ * an `application` (its stage): screen readers in browse mode (NVDA, JAWS) keep
+ * the arrow keys for their own cursor unless the focus is in such a widget,
+ * and the picture takes the arrow keys. Its keys beside the arrows: a colour's
+ * first letters jump to the next pixel of that colour (p: the next pink one;
+ * Shift: the one before). A "Skip to the picture" link opens the page, and a
+ * "Picture as text" disclosure reads the traced picture row by row of pixels,
+ * in colour names, saying when the rows change.
  */
-import { describeScene, pictureRows } from '../describe.js';
+import { describeScene, pixelNames, pixelRows, nextPixelNamed, COLOR_NAMES } from '../describe.js';
 import { MODES } from '../modes.js';
 import { element } from './dom.js';
+import { createAnnouncer } from './announce.js';
+import { mapSummary, mapValue } from './map-words.js';
 
 /** A camera that moves every frame re-describes the scene at most this often. */
 const DESCRIBE_EVERY_MS = 250;
+/** Letters typed within this long of each other spell one colour's name (as in a list box). */
+const TYPE_AHEAD_MS = 800;
+/** Rows of pixels read out at most: beyond, a row is every n-th pixel row. */
+const MAX_ROWS = 240;
 let ids = 0;
+/** The application's name: its keys, by engine. */
+const KEYS = {
+  cpu: 'Arrow keys: a pixel; p: next pink, or a colour\'s first letter',
+  gpu: 'Arrow keys: turn the camera, or move the selected pixel (Escape lets it go); + and −: nearer, farther; p: next pink, or a colour\'s first letter',
+};
 
 /**
- * Makes `canvas` an image described in words; returns the disclosure and the
- * description (to put under the picture) and `changed()`, `done()` for the view to call.
+ * Makes `canvas` an image described in words inside an application that takes
+ * the arrow keys and the colour letters; returns the disclosure and the
+ * description (to put under the picture), `stage(element)` to make the
+ * picture's stage the application, and `changed()`, `done()` for the view to call.
  * @param {HTMLCanvasElement} canvas
- * @param {{ scene: object, camera: object, mode: string, width: number, height: number, buffer: Uint8ClampedArray }} view
+ * @param {{ scene: object, camera: object, mode: string, width: number, height: number, buffer: Uint8ClampedArray,
+ *   done: boolean, selected: ?{x: number, y: number}, select(x: number, y: number): unknown, on(event: string, fn: Function): Function }} view
  */
 export function createPictureWords(canvas, view) {
-  const id = `rt-picture-description-${++ids}`;
+  const n = ++ids;
+  const id = `rt-picture-description-${n}`;
+  canvas.id ||= `rt-picture-${n}`;
   // hidden: read as the picture's description, not a second time as the page's text
   const description = element('p', { id, hidden: '', 'data-picture-description': '' });
   canvas.setAttribute('role', 'img');
   canvas.setAttribute('aria-describedby', id);
   const rows = element('ol', { class: 'rt-picture-rows', 'data-picture-rows': '' });
-  const details = element('details', { class: 'rt-picture-text' }, element('summary', {}, 'Picture as text'), rows);
-  let last = -Infinity, timer = 0;
+  const rowsNote = element('p', { class: 'rt-note', 'data-picture-rows-note': '' });
+  const details = element('details', { class: 'rt-picture-text' }, element('summary', {}, 'Picture as text'), rowsNote, rows);
+  const voice = createAnnouncer({ name: 'picture', order: 1 });
+  let last = -Infinity, timer = 0, names = null, typed = '', typedAt = 0, sought = '', shownRows = '', stageElement = null;
+  addSkipLink(canvas);
 
+  const caption = () => canvas.closest('figure')?.querySelector('figcaption')?.textContent.trim() || 'Traced picture';
+  const modeLabel = () => (view.mode === 'shaded' ? '' : MODES.find((m) => m.name === view.mode)?.label ?? view.mode);
+  // a map by its own name (sketch 02's three pictures of one scene are told apart); the size is in the description
+  const name = () => {
+    const map = modeLabel();
+    return `${caption()}${map && !caption().startsWith(map.split(' ')[0]) ? `: ${map} map` : ''}`;
+  };
   const describe = () => {
     timer = 0;
     last = performance.now();
-    const mode = view.mode === 'shaded' ? '' : `${MODES.find((m) => m.name === view.mode)?.label ?? view.mode} map of the scene. `;
-    const text = `${view.width} by ${view.height} pixels. ${mode}${describeScene(view.scene, view.camera)}`;
+    const map = mapSummary(view.mode, view.scene, view.camera);
+    const full = `${view.width} by ${view.height} pixels. ${map ? `${map} Of the scene: ` : ''}${describeScene(view.scene, view.camera)}`;
+    description.dataset.full = full;
+    const twin = earlierTwin(description);
+    const text = twin ? `${view.width} by ${view.height} pixels. The same scene as ${twin}, seen from the same eye.` : full;
     if (description.textContent !== text) description.textContent = text;
+    canvas.setAttribute('aria-label', name());
   };
+  canvas.setAttribute('aria-label', name());
+
+  /** Each pixel's colour name, read once per traced picture (the search and the rows share it). */
+  const pictureNames = () => (names ??= pixelNames(view.buffer, view.width, view.height));
   const readRows = () => {
-    rows.replaceChildren(...pictureRows(view.buffer, view.width, view.height).map((line) => element('li', {}, line)));
+    const every = Math.ceil(view.height / MAX_ROWS);
+    const lines = pixelRows(pictureNames(), view.width, view.height).filter((_, y) => y % every === 0);
+    const text = lines.join('\n');
+    const again = shownRows !== '' && text !== shownRows;
+    shownRows = text;
+    rows.replaceChildren(...lines.map((line) => element('li', {}, line)));
+    rowsNote.textContent = `${view.done ? '' : 'Still tracing: '}${view.height} rows of ${view.width} pixels, row 0 at the top, x from 0 at the left${every > 1 ? ` (${everyNth(every)} row)` : ''}.`;
+    if (again) voice.say('Picture as text: the picture was traced again, its rows changed.');
   };
   details.addEventListener('toggle', () => { if (details.open) readRows(); });
+
+  // a map says what the pixel stands for, when the student is on it (the page's inspector says the pixel)
+  const unlisten = view.on('select', (s) => {
+    if (s && view.mode !== 'shaded' && document.activeElement === canvas) voice.say(mapValue(view.mode, view.scene, view.camera, s.x, s.y));
+  });
+  canvas.addEventListener('keydown', (event) => {
+    if (event.ctrlKey || event.metaKey || event.altKey || !/^[a-z]$/i.test(event.key)) return;
+    const next = colorKey(event.key.toLowerCase(), event.shiftKey);
+    if (next) event.preventDefault();
+  });
+
+  /** A letter typed on the picture: the next pixel of the colour its letters begin; true when it was one. */
+  function colorKey(letter, back) {
+    const now = performance.now();
+    typed = now - typedAt < TYPE_AHEAD_MS ? typed + letter : letter;
+    typedAt = now;
+    if (!COLOR_NAMES.some((c) => c.startsWith(typed)) && !/^(.)\1+$/.test(typed)) typed = letter; // w then g: gray, not "wg" (as a list box)
+    // the same letter again: the next pixel of the colour already sought
+    const again = /^(.)\1+$/.test(typed) && sought.startsWith(letter);
+    const all = pictureNames();
+    const present = COLOR_NAMES.filter((_, i) => all.includes(i));
+    const colour = again ? sought : present.find((c) => c.startsWith(typed));
+    if (!colour) {
+      if (!COLOR_NAMES.some((c) => c.startsWith(typed))) return false; // not a colour's letter (h, v: the 3D view's fans)
+      voice.say(`No ${COLOR_NAMES.find((c) => c.startsWith(typed))} pixel here. This picture has ${present.join(', ')}.`);
+      return true;
+    }
+    sought = colour;
+    const next = nextPixelNamed(all, view.width, colour, view.selected, back ? -1 : 1);
+    if (next) view.select(next.x, next.y); // the inspector (or the activity's verdict) says the pixel
+    return true;
+  }
 
   return {
     details,
     description,
     /** The scene, camera or mode changed: describe it again (in the next task, or later when it changes every frame). */
     changed() {
+      names = null;
       if (details.open) rows.replaceChildren(element('li', {}, 'Tracing…'));
       if (timer) return;
       // In a task of its own, never the edit's: it casts rays at every shape (lib/describe.js).
       timer = setTimeout(describe, Math.max(0, last + DESCRIBE_EVERY_MS - performance.now()));
     },
-    /** The picture is traced: the rows can be read. */
+    /** The picture is traced: the rows can be read, and the colours searched. */
     done() {
+      names = null;
       if (details.open) readRows();
     },
-    destroy() { clearTimeout(timer); },
+    /** Makes the picture's stage the application the keys go to (it holds the focusable picture). */
+    stage(stage) {
+      stageElement = stage;
+      stage.setAttribute('role', 'application');
+      stage.setAttribute('aria-roledescription', 'picture of pixels');
+      this.engine('cpu');
+    },
+    /** The engine tracing now: on the GPU the arrow keys turn the camera until a pixel is selected (gpu-orbit.js); the name says so. */
+    engine(engine) {
+      stageElement?.setAttribute('aria-label', KEYS[engine] ?? KEYS.cpu);
+    },
+    destroy() {
+      clearTimeout(timer);
+      unlisten();
+      voice.destroy();
+    },
   };
+}
+
+/** "every other", "every 3rd", "every 4th": which rows a tall picture's text reads. */
+const everyNth = (n) => (n === 2 ? 'every other' : `every ${n}${(n % 100 > 10 && n % 100 < 14) ? 'th' : ({ 1: 'st', 2: 'nd', 3: 'rd' })[n % 10] ?? 'th'}`);
+
+/**
+ * The caption of a picture before this one on the page whose description is
+ * the same (sketch 11's two pictures of one scene): the second says so in a
+ * line instead of the whole scene again. Null when there is none.
+ */
+function earlierTwin(description) {
+  for (const other of document.querySelectorAll('[data-picture-description]')) {
+    if (other === description) return null;
+    if (other.dataset.full === description.dataset.full) {
+      return other.closest('figure')?.querySelector('figcaption')?.textContent.trim() || 'the picture before';
+    }
+  }
+  return null;
+}
+
+/** Once a page: its first link, shown when focused, goes to the first picture (the picture takes the keys). */
+function addSkipLink(canvas) {
+  if (document.querySelector('[data-skip-to-picture]')) return;
+  const link = element('a', { class: 'rt-skip-link', href: `#${canvas.id}`, 'data-skip-to-picture': '' }, 'Skip to the picture');
+  document.body.prepend(link);
 }

@@ -36,7 +36,8 @@ class SampleRays {
     this.canvas = element('canvas', { width: ZOOM, height: ZOOM, class: 'rt-sample-zoom', role: 'img', 'aria-label': 'The selected pixel, split into its cells' });
     this.average = element('span', { class: 'rt-swatch', 'data-field': 'average' });
     this.words = element('p', { class: 'rt-note', 'data-field': 'average-words' });
-    this.table = element('div', { class: 'rt-table-wrap' });
+    // a region that scrolls sideways on a phone: focusable and named, so the keyboard can scroll it
+    this.table = element('div', { class: 'rt-table-wrap', tabindex: '0', role: 'region', 'aria-label': 'The pixel\'s rays table' });
     this.element = element('section', { class: 'rt-sample-rays', 'data-sample-rays': '', 'aria-label': "The pixel's rays" },
       element('h2', {}, "The pixel's rays"),
       element('div', { class: 'rt-sample-picture' }, this.canvas, this.average, this.words),

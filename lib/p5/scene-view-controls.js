@@ -6,6 +6,8 @@
  */
 import { element } from './dom.js';
 import { createOrbitButtons } from './scene-view-keys.js';
+import { orbitChanged } from './scene-view-words.js';
+import { reducedMotion } from './announce.js';
 
 /** Speeds the shoot slider offers, rays per second. */
 export const SPEEDS = [1, 2, 4, 8, 15, 30, 60, 120];
@@ -22,9 +24,10 @@ export const SPEEDS = [1, 2, 4, 8, 15, 30, 60, 120];
  */
 export function createControls({ raysPerSecond, shoot, stop, setSpeed, reset, orbitView }) {
   const resetButton = element('button', { type: 'button', class: 'rt-button', 'data-view3d-reset': '', title: 'Look from the first point of view again' }, 'Reset view');
-  resetButton.addEventListener('click', () => reset());
+  resetButton.addEventListener('click', () => { reset(); orbitChanged(orbitView); });
   const shootButton = element('button', { type: 'button', class: 'rt-button', 'data-view3d-shoot': '', title: 'Trace the picture again, one ray at a time, and watch each ray fly' }, 'Shoot rays');
-  shootButton.addEventListener('click', () => shoot());
+  // reduced motion: no rays fly; the picture is traced again at once (the selected pixel's rays stay drawn)
+  shootButton.addEventListener('click', () => (reducedMotion() ? orbitView.view.restart() : shoot()));
   const stopButton = element('button', { type: 'button', class: 'rt-button', 'data-view3d-stop': '', title: 'Stop shooting rays (Esc)', disabled: '' }, 'Stop');
   stopButton.addEventListener('click', () => stop());
   const speedText = element('span', { class: 'rt-view3d-speed-text' }, `${raysPerSecond} rays/s`);
@@ -71,7 +74,9 @@ export function dressCanvas(canvas, stage, selected) {
   canvas.style.cursor = 'grab';
   canvas.setAttribute('data-view3d', '');
   canvas.setAttribute('tabindex', '0');
-  canvas.setAttribute('role', 'img');
+  // an application: screen readers in browse mode pass it the arrow keys (scene-view-words.js says where it looks from)
+  canvas.setAttribute('role', 'application');
+  canvas.setAttribute('aria-roledescription', '3D view');
   canvas.setAttribute('aria-label', 'The scene in 3D: the arrow keys or dragging turn it, + and − or the wheel zoom it, Esc stops shooting rays; click a pixel of the image plane to select it');
   canvas.classList.add('rt-view3d-canvas');
   canvas.setAttribute('data-selected', selected ? `${selected.x},${selected.y}` : '');

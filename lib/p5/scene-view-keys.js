@@ -4,6 +4,7 @@
  * moves as buttons beside it, for a pointer that cannot drag.
  */
 import { element } from './dom.js';
+import { orbitChanged } from './scene-view-words.js';
 
 /** Degrees one arrow press turns the view (Shift: three times as far). */
 export const TURN_STEP = 10;
@@ -33,7 +34,7 @@ export function orbitKey(key, shift = false) {
 
 /**
  * Does what `orbitKey` says to the view; true when the key was used.
- * @param {{ turn(yaw: number, pitch: number): unknown, zoom(factor: number): unknown, stop(): unknown, shooting: boolean }} view
+ * @param {{ turn(yaw: number, pitch: number): unknown, zoom(factor: number): unknown, stop(): unknown, shooting: boolean, canvas?: HTMLCanvasElement | null }} view
  */
 export function applyOrbitKey(view, key, shift) {
   const move = orbitKey(key, shift);
@@ -45,6 +46,7 @@ export function applyOrbitKey(view, key, shift) {
     view.zoom(move.zoom);
   } else {
     view.turn(move.yaw, move.pitch);
+    orbitChanged(view); // its name says where it looks from now, and the page says it once it rests
   }
   return true;
 }
@@ -58,6 +60,8 @@ export function listenForOrbitKeys(canvas, figure, view) {
   figure.addEventListener('keydown', (e) => {
     if (e.key === 'Escape' && applyOrbitKey(view, e.key, false)) e.preventDefault();
   });
+  canvas.addEventListener('pointerup', () => orbitChanged(view)); // after a drag
+  queueMicrotask(() => orbitChanged(view, false)); // once the view has drawn its first orbit: the name says where from
 }
 
 /** Buttons that turn and zoom the view, each named in words: `{ element }`. */

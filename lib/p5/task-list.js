@@ -20,6 +20,7 @@ import { loadProgress, saveProgress } from './progress-store.js';
 import { checkOptions, show } from '../check.js';
 import { element, resolveParent, useStyle } from './dom.js';
 import { joinClassBoard } from './class-board.js';
+import { createAnnouncer } from './announce.js';
 
 const OPTIONS = ['page', 'view', 'parent', 'parts', 'hintAfterMs', 'hintAfterTries'];
 /** What the student does that may finish a task whose state it changes (a box, a switch, a drag in 3D). */
@@ -43,10 +44,17 @@ export function createTaskList(p, options) {
   return new TaskList(checkOptions(options, OPTIONS, 'createTaskList'));
 }
 
+/** A task's words up to its first colon, without its asides: "Select any pixel" of "Select any pixel: click it, …". */
+function shortText(text) {
+  const colon = text.indexOf(': ');
+  return (colon > 0 ? text.slice(0, colon) : text).replace(/ \([^()]*\)/g, '').replace(/\.$/, '');
+}
+
 /** The task list of one page, what `p.createTaskList({ … })` returns. */
 export class TaskList {
   #lesson; #view; #parts; #progress; #memory = {}; #items = new Map();
   #last = null; #tries = 0; #hintAfterTries; #timer = 0; #pending = 0; #cleanups = [];
+  #voice = createAnnouncer({ name: 'task', order: 2 }); // after the pixel and the verdict that did it
 
   constructor({ page, view, parent, parts = {}, hintAfterMs = 60_000, hintAfterTries = 6 }) {
     this.#lesson = lessonOf(page);
@@ -74,7 +82,7 @@ export class TaskList {
     this.#progress = clearProgress(loadProgress(), this.#lesson.page);
     this.#memory = {};
     saveProgress(this.#progress);
-    this.status.textContent = 'Started again: every task of this page is to do.';
+    this.#say('Started again: every task of this page is to do.');
     this.#show();
   }
 
@@ -83,6 +91,7 @@ export class TaskList {
     for (const cleanup of this.#cleanups) cleanup();
     clearTimeout(this.#timer);
     clearTimeout(this.#pending);
+    this.#voice.destroy();
     this.element.remove();
     this.strip?.remove();
   }
@@ -146,11 +155,17 @@ export class TaskList {
 
   /* ---------------- on the page ---------------- */
 
+  /** Names every task just done (one press may do two), each by its words up to the first colon. */
   #announce(newly) {
     const { done, total, finished } = pageProgress(this.#progress, this.#lesson);
-    const last = newly[newly.length - 1];
-    this.status.textContent = finished ? `Task done: every task of this page (${total} of ${total}). Well done!`
-      : `Task done (${done} of ${total}): ${last.text}`;
+    const names = newly.map((t) => shortText(t.text)).join('; ');
+    this.#say(`${newly.length > 1 ? 'Tasks' : 'Task'} done (${done} of ${total}): ${names}.${finished ? ' That was every task of this page. Well done!' : ''}`);
+  }
+
+  /** On the page, and said by the page's voice with the pixel and verdict that did it. */
+  #say(text) {
+    this.status.textContent = text;
+    this.#voice.say(text);
   }
 
   #showHints() {
@@ -160,9 +175,10 @@ export class TaskList {
   /** Every task's tick, the count, the strip. */
   #show() {
     for (const task of this.tasks) {
-      const { item, mark } = this.#items.get(task.id);
+      const { item, mark, state } = this.#items.get(task.id);
       item.dataset.done = String(task.done);
       mark.textContent = task.done ? '✓' : '';
+      state.textContent = task.done ? 'Done: ' : ''; // the ✓ in words: the list reads differently once a task is done
       item.classList.toggle('rt-task-done', task.done);
     }
     const progress = pageProgress(this.#progress, this.#lesson);
@@ -176,19 +192,24 @@ export class TaskList {
     const list = element('ol', { class: 'rt-task-items' });
     for (const task of this.#lesson.tasks) {
       const mark = element('span', { class: 'rt-task-mark', 'aria-hidden': 'true' });
+      const state = element('span', { class: 'rt-visually-hidden', 'data-task-state': '' });
       const hint = element('p', { class: 'rt-task-hint', 'data-hint': '', hidden: '' }, `Hint: ${task.hint}`);
-      const item = element('li', { 'data-task': task.id, 'data-done': 'false' }, mark, element('span', { class: 'rt-task-text' }, task.text), hint);
+      const item = element('li', { 'data-task': task.id, 'data-done': 'false' }, mark, state, element('span', { class: 'rt-task-text' }, task.text), hint);
       list.append(item);
-      this.#items.set(task.id, { item, mark, hint });
+      this.#items.set(task.id, { item, mark, state, hint });
     }
     this.count = element('span', { class: 'rt-task-count', 'data-task-count': '' });
-    this.status = element('p', { class: 'rt-task-status', role: 'status', 'data-task-status': '' });
+    // not a live region: the page's voice says it (announce.js), with what did it
+    this.status = element('p', { class: 'rt-task-status', 'data-task-status': '' });
     const again = element('button', { type: 'button', class: 'rt-button', 'data-tasks-again': '' }, 'Start again');
     again.addEventListener('click', () => this.startAgain());
+    // back from the list to the picture in one key, not 16 Shift+Tabs past every control
+    const canvas = this.#view.canvas;
+    const back = canvas?.id ? element('a', { href: `#${canvas.id}`, class: 'rt-back-to-picture', 'data-back-to-picture': '' }, 'Back to the picture') : null;
     const heading = element('h2', { id: 'tasks-heading' }, 'Tasks ', this.count);
     this.element = element('section', { class: 'rt-tasks card', id: 'tasks', 'data-tasks': this.#lesson.page, 'aria-labelledby': 'tasks-heading' },
-      heading, element('p', { class: 'rt-task-about' }, 'Each task ticks itself off when you do it. Your progress stays in this browser; the gallery shows it, with a code for your teacher.'),
-      list, this.status, again);
+      heading, element('p', { class: 'rt-task-about' }, 'Each ticks itself off when done, kept in this browser; the gallery gives a code for your teacher.'),
+      list, this.status, ...[again, back].filter(Boolean));
     const main = document.querySelector('main');
     if (parent != null) resolveParent(parent, main).append(this.element);
     else if (main) main.after(this.element);

@@ -19,9 +19,9 @@
  * keeps the page's render state. Its parts live beside it: tracer-layout.js
  * (the size on screen), tracer-overlay.js (grid and marks over the picture),
  * tracer-input.js (press, drag, arrow keys), tracer-export.js (the PNG),
+ * tracer-progress.js (the progress bar and the workers' note),
  * tracer-events.js (what it tells listeners: `view.on('select' | 'restart' | 'progress', fn)`).
  */
-import { formatRate } from '../format.js';
 import { ORDERS } from '../progressive.js';
 import { WorkerProgressiveRenderer } from '../workers/progressive.js';
 import { PathProgressiveRenderer } from '../pathtrace/progressive.js';
@@ -37,7 +37,9 @@ import { pixelAt, listenForPixels } from './tracer-input.js';
 import { pngDataURL, pngFilename, download, createSaveButton } from './tracer-export.js';
 import { checkScale, pictureScale, sizePicture, watchRoom } from './tracer-layout.js';
 import { createPictureWords } from './picture-words.js';
+import { reducedMotion } from './announce.js';
 import { createEvents } from './tracer-events.js';
+import { createTracerProgress } from './tracer-progress.js';
 import { engineRenderer, showEngine, checkEngine } from './engines.js';
 import { listenForOrbit } from './gpu-orbit.js';
 
@@ -95,8 +97,7 @@ export class TracerView {
   #scale; #grid; #mode; #selected = null; #events = createEvents(EVENTS);
   /** The selected pixel's inspectPixel record (null: none selected; undefined: not made yet for this selection and scene). */
   #record;
-  #shownCurrent = null; #progressText = ''; #shownProblem = null;
-  #ctx; #overlayCtx; #unwatchRoom; #words;
+  #shownCurrent = null; #ctx; #overlayCtx; #unwatchRoom; #words; #progress;
 
   /**
    * @param {import('p5').default} p
@@ -183,6 +184,7 @@ export class TracerView {
     const { renderer, engine: now, why } = engineRenderer(checkEngine(engine), this.#renderer, { budgetMs: this.budgetMs, shader: modeShader(this.#mode), shaded: this.#mode === 'shaded' });
     if (renderer !== this.#renderer) { this.#renderer.terminate(); this.#renderer = renderer; }
     showEngine(this, now, why);
+    this.#words.engine(now); // the picture's name says what its arrow keys do on this engine
     this.#started();
     return this;
   }
@@ -304,10 +306,9 @@ export class TracerView {
     const r = this.#renderer;
     if (r.lost) { this.setEngine('cpu'); return; } // the GPU cannot go on (its context lost, a visual mode): engineRenderer says why
     const { changed, done } = r.step(this.budgetMs);
-    if (changed) this.#blit();
-    this.#showProgress();
+    if (reducedMotion() ? done : changed) this.#blit(); // reduced motion: no passes, the picture once it is done
+    this.#progress.show(r); // the bar, and the note when the workers failed
     if (this.#events.heard('progress')) this.#events.emit('progress', { progress: done ? 1 : r.progress, done, current: this.current }, this);
-    if (r.problem !== this.#shownProblem) this.#shownProblem = showWorkerProblem(this.workerNote, r.problem);
     const c = r.current;
     if (c && (c.x !== this.#shownCurrent?.x || c.y !== this.#shownCurrent?.y)) this.#drawOverlay();
     if (done) {
@@ -380,17 +381,6 @@ export class TracerView {
     this.#ctx.putImageData(this.#imageData, 0, 0);
   }
 
-  #showProgress() {
-    const r = this.#renderer;
-    const percent = r.done ? 100 : Math.min(99, Math.floor(r.progress * 100));
-    const text = 'progressText' in r ? r.progressText : `${percent}% · ${formatRate(r.raysPerSecond)} rays/s`;
-    if (text === this.#progressText) return;
-    this.#progressText = text;
-    this.progressFill.style.width = `${percent}%`;
-    this.progressBar.setAttribute('aria-valuenow', String(percent));
-    this.progressText.textContent = text;
-  }
-
   /** The mode's key under the picture (none for the shaded picture itself). */
   #showLegend() {
     const host = this.legendHost;
@@ -414,7 +404,7 @@ export class TracerView {
 
   /** Grid, the pixel being traced and the selected pixel's crosshair, on the overlay only (see tracer-overlay.js). */
   #drawOverlay() {
-    const current = this.#renderer.done ? null : this.#renderer.current;
+    const current = this.#renderer.done || reducedMotion() ? null : this.#renderer.current;
     this.#shownCurrent = current && { ...current };
     drawOverlay(this.#overlayCtx, { width: this.width, height: this.height, grid: this.#grid, current, selected: this.#selected });
   }
@@ -435,18 +425,14 @@ export class TracerView {
     this.overlay = element('canvas', { class: 'rt-overlay', 'data-overlay': '', 'aria-hidden': 'true' });
     this.#overlayCtx = this.overlay.getContext('2d');
     const stage = element('div', { class: 'rt-stage' }, c, this.overlay);
+    this.#words.stage(stage); // the application screen readers pass the keys to
 
-    this.progressFill = element('div', { class: 'rt-progress-fill' });
-    this.progressText = element('span', { class: 'rt-progress-text', 'data-progress-text': '' });
-    this.progressBar = element('div', {
-      class: 'rt-progress', 'data-progress': '', role: 'progressbar',
-      'aria-valuemin': '0', 'aria-valuemax': '100', 'aria-label': 'Rendering progress',
-    }, this.progressFill, this.progressText);
-    const save = createSaveButton(() => this.downloadPNG());
+    this.#progress = createTracerProgress();
+    this.workerNote = this.#progress.note; // lib/p5/engines.js puts the engine's note before it
     this.legendHost = element('div', { class: 'rt-legend-host' });
-    this.workerNote = element('p', { class: 'rt-note rt-view-note', 'data-message': 'view-workers', role: 'status', hidden: true });
+    const save = createSaveButton(() => this.downloadPNG());
 
-    this.figure.append(stage, element('div', { class: 'rt-bar' }, this.progressBar, save), this.workerNote, this.legendHost, this.#words.details, this.#words.description);
+    this.figure.append(stage, element('div', { class: 'rt-bar' }, this.#progress.bar, save), this.workerNote, this.legendHost, this.#words.details, this.#words.description);
     parent.append(this.figure);
   }
 
@@ -457,16 +443,6 @@ export class TracerView {
 }
 
 /* ---------------- helpers ---------------- */
-
-/**
- * The note under a view whose Web Workers failed (their frames are then traced
- * on the page's thread, the same picture): says so and why, or hides. Returns `problem`.
- */
-function showWorkerProblem(note, problem) {
-  note.hidden = problem === null;
-  note.textContent = problem === null ? '' : `Workers unavailable: rendering on the page's thread instead — ${problem}.`;
-  return problem;
-}
 
 /** A render order ('coarse', 'scanline', 'slow'), checked before anything changes. */
 function checkOrder(order, field = 'order') {

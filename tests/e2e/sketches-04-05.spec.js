@@ -111,6 +111,8 @@ test.describe('04 · Find the pink pixel', () => {
 
   test('near V = ±90 the camera\'s H stays what was typed, and the picture does not jump', async ({ page }) => {
     await open(page, PINK);
+    await page.locator('input[name="x"]').fill('10'); // the pixel boxes start empty
+    await page.locator('input[name="y"]').fill('12');
     const pixels = (c) => Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data);
     const shots = {};
     for (const v of ['89.9', '90', '-89.9', '-90']) {
@@ -189,6 +191,8 @@ test.describe('04 · Find the pink pixel', () => {
 
   test('changing the camera\'s H turns the camera: a new picture, traced to the end', async ({ page }) => {
     await open(page, PINK);
+    await enter(page, 'x', '10'); // the pixel boxes start empty: an answer first
+    await enter(page, 'y', '12');
     const before = await picture(page);
     const answerBefore = await page.locator('[data-answer-line]').textContent();
     const detailBefore = await page.locator('[data-answer-detail]').textContent();
