@@ -164,7 +164,7 @@ const everyNth = (n) => (n === 2 ? 'every other' : `every ${n}${(n % 100 > 10 &&
  * line instead of the whole scene again. Null when there is none.
  */
 function earlierTwin(description) {
-  for (const other of document.querySelectorAll('[data-picture-description]')) {
+  for (const other of /** @type {NodeListOf<HTMLElement>} */ (document.querySelectorAll('[data-picture-description]'))) {
     if (other === description) return null;
     if (other.dataset.full === description.dataset.full) {
       return other.closest('figure')?.querySelector('figcaption')?.textContent.trim() || 'the picture before';

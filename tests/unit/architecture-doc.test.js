@@ -37,7 +37,7 @@ it('names every file under lib/', () => {
 it('names no file of lib/ that is gone', () => {
   const gone = named.filter((name) => {
     const path = underLib(name);
-    if (name.startsWith('lib/') || !/^(tests|scripts|sketches|bench|docs)\//.test(name)) {
+    if (name.startsWith('lib/') || !/^(tests|scripts|sketches|bench|docs|editor)\//.test(name)) {
       return !files.includes(path) && !files.some((f) => f.endsWith(`/${path}`)) && !(name.indexOf('/') < 0 && count.has(name));
     }
     return !existsSync(new URL(name, ROOT)); // a file outside lib/: it is there too
