@@ -15,19 +15,4 @@ import './live-coding.js'; // mistakes shown on the page (data-error); a save's 
 
 registerAddon(sketchbookAddon); // p5.registerAddon on 2.x; on 1.x, p5.prototype and registerMethod
 
-export { sketchbookAddon, FACTORIES } from './addon.js';
-export { TracerView } from './tracer-view.js';
-export { orbit } from './gpu-orbit.js'; // turn a view's camera about the point it looks at (as a drag on a GPU view does)
-export { SceneView } from './scene-view.js';
-export { PhotonView } from './photon-view.js';
-export { Inspector, answerLine } from './inspector.js';
-export { formatAngle, formatLabel, fmt } from '../format.js';
-export { SceneAnimation } from './animation.js';
-export { exampleInLink } from './example-picker.js';
-export { pageRenderState } from './page-state.js';
-// A scene in the page's link (#scene=…), page parts built from text (never parsed as HTML), text to the clipboard:
-export { readSceneLink, sceneLinkURL, linkNotice } from './scene-link.js';
-export { element, copyText } from './dom.js';
-// A part of the page's one voice for screen readers: said with the pixel, once the keys rest.
-export { createAnnouncer } from './announce.js';
-export { showInBox, downloadText } from './text-box.js';
+export * from './exports.js'; // every name the addon exports, listed there (the mistake hints read them without loading this entry)

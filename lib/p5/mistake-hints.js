@@ -12,7 +12,7 @@
  */
 import p5 from 'p5';
 import * as library from '../index.js';
-import * as addon from './index.js';
+import * as addon from './exports.js'; // the entry's names, not the entry: it installs the panel that loads this module
 import { closestName } from '../check.js';
 
 /**
