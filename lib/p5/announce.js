@@ -73,6 +73,7 @@ export function createAnnouncer({ name = '', order = 0, speaksFor = '', delay = 
       now.timer = setTimeout(() => speak(now), delay);
     },
     destroy() {
+      last.remove(); // its part is gone: a sketch swapped in place makes its own again
       voice?.parts.delete(key);
       if (speaksFor && voice) voice.silenced.set(speaksFor, Math.max(0, (voice.silenced.get(speaksFor) ?? 1) - 1));
     },

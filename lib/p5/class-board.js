@@ -226,7 +226,7 @@ function nameBar(outbox) {
     element('button', { type: 'submit', class: 'rt-button' }, 'Save name'));
   const problem = element('span', { class: 'rt-class-problem', role: 'status' });
   const poll = /\/poll\.html$/.test(location.pathname) ? null : element('a', { href: new URL('/poll.html', location.href).href }, 'The lesson\'s poll');
-  const bar = element('aside', { class: 'rt-class-bar', 'aria-label': 'Class board' },
+  const bar = element('aside', { class: 'rt-class-bar', 'aria-label': 'Class board', 'data-class-bar': '' },
     element('span', {}, 'Class board: the teacher sees you as ', shown, '.'), form, poll, problem);
   form.addEventListener('submit', (event) => {
     event.preventDefault();
