@@ -4,8 +4,8 @@
  * section under the cards lists the achievements, the progress code to give
  * the teacher (teacher.html reads it) and "Start again" for every page.
  */
-import { LESSONS } from './lib/lesson-tasks.js';
-import { achievements, pageProgress, progressText, progressCode } from './lib/tasks.js';
+import { LESSONS } from './lib/lesson/tasks.js';
+import { achievements, pageProgress, progressText, progressCode } from './lib/lesson/progress.js';
 import { loadProgress, saveProgress } from './lib/p5/progress-store.js';
 import { element, copyText } from './lib/p5/dom.js';
 

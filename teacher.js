@@ -1,11 +1,11 @@
 /**
  * The teacher's view of the students' progress, without a server: each line
  * pasted (or the link's #code=…) holds a progress code, maybe after a name.
- * A code is checked, not trusted (lib/tasks.js's readProgressCode): only the
+ * A code is checked, not trusted (lib/lesson/progress.js's readProgressCode): only the
  * kit's own task texts come out of it, and everything is shown as text.
  */
-import { LESSONS } from './lib/lesson-tasks.js';
-import { readProgressLine, pageProgress, progressText, achievements } from './lib/tasks.js';
+import { LESSONS } from './lib/lesson/tasks.js';
+import { readProgressLine, pageProgress, progressText, achievements } from './lib/lesson/progress.js';
 
 /** More than this is not read: a class, not a file dump. */
 const MAX_LINES = 200;

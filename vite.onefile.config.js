@@ -11,7 +11,7 @@ const WORKER_START = "new Worker(new URL('./render-worker.js', import.meta.url),
 const INLINE_START = 'new InlineRenderWorker()';
 
 /**
- * lib/workers/parallel.js starts its worker from a file beside it; in one file
+ * lib/tracing/workers/parallel.js starts its worker from a file beside it; in one file
  * there is none, so the worker's code (bundled, a classic script) goes inside
  * the file and starts from a Blob URL: `?worker&inline` is Vite's own way.
  */
@@ -20,8 +20,8 @@ export function inlineRenderWorker() {
     name: 'inline-render-worker',
     enforce: 'pre',
     transform(code, id) {
-      if (!id.endsWith('/lib/workers/parallel.js')) return null;
-      if (!code.includes(WORKER_START)) this.error(`lib/workers/parallel.js no longer starts its worker with ${WORKER_START}: update vite.onefile.config.js`);
+      if (!id.endsWith('/lib/tracing/workers/parallel.js')) return null;
+      if (!code.includes(WORKER_START)) this.error(`lib/tracing/workers/parallel.js no longer starts its worker with ${WORKER_START}: update vite.onefile.config.js`);
       return `import InlineRenderWorker from './render-worker.js?worker&inline';\n${code.replace(WORKER_START, INLINE_START)}`;
     },
   };

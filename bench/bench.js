@@ -34,7 +34,7 @@ import { spawnSync } from 'node:child_process';
 import { mkdtempSync, readFileSync, rmSync } from 'node:fs';
 import { join } from 'node:path';
 import { Camera, classScene, render, inspectPixel } from '../lib/index.js';
-import { ProgressiveRenderer } from '../lib/progressive.js';
+import { ProgressiveRenderer } from '../lib/tracing/frames.js';
 
 const FRAMES = 15;
 const WARMUP = 5;

@@ -7,7 +7,7 @@
 import { GCProfiler, getHeapStatistics } from 'node:v8';
 import bunny from 'bunny';
 import { Mesh } from '../lib/shapes/mesh.js';
-import { Ray } from '../lib/ray.js';
+import { Ray } from '../lib/math/ray.js';
 
 const mesh = new Mesh(bunny);
 let seed = 5; const rnd = () => (seed = (seed * 16807) % 2147483647) / 2147483647;

@@ -7,7 +7,7 @@
  * (2) A 320×240 frame of the Stanford bunny (the `bunny` package, 3674
  *     triangles) on one thread: primary rays, nearest hit, Lambert shading
  *     from one direction (goal ≤ 250 ms); then the same view as a Scene
- *     through render(), the kernel (lib/kernel.js) against trace.js (the
+ *     through render(), the kernel (lib/tracing/kernel.js) against trace.js (the
  *     mesh's `hit` replaced by itself, which packScene refuses): full
  *     shading with one point light and shadow rays.
  *
@@ -19,14 +19,14 @@ import { loadavg, availableParallelism } from 'node:os';
 import { pathToFileURL, fileURLToPath } from 'node:url';
 import { execFileSync } from 'node:child_process';
 import bunny from 'bunny';
-import { Camera } from '../lib/camera.js';
-import { Ray } from '../lib/ray.js';
-import { Vec3 } from '../lib/vec3.js';
+import { Camera } from '../lib/math/camera.js';
+import { Ray } from '../lib/math/ray.js';
+import { Vec3 } from '../lib/math/vec3.js';
 import { Mesh } from '../lib/shapes/mesh.js';
-import { Scene } from '../lib/scene.js';
-import { PointLight } from '../lib/lights.js';
-import { render } from '../lib/render.js';
-import { packScene } from '../lib/kernel.js';
+import { Scene } from '../lib/scene/scene.js';
+import { PointLight } from '../lib/lights/point-light.js';
+import { render } from '../lib/tracing/render.js';
+import { packScene } from '../lib/tracing/kernel.js';
 
 const ROUNDS = 15;
 const WARMUP = 3;

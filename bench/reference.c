@@ -1,10 +1,10 @@
 /*
  * The C reference for `npm run bench`: the work of render() on the class scene
- * (lib/scenes.js, 640x480, fov 30, eye at the origin looking down -z) in plain
+ * (lib/scene/examples.js, 640x480, fov 30, eye at the origin looking down -z) in plain
  * C, one thread: per pixel the primary ray, the nearest of the 7 spheres, then
  * for each of the 2 emissive spheres (the lights) a shadow ray and Lambert's
  * cos term; the background where nothing is hit. Same formulas as
- * lib/camera.js, lib/shapes/sphere.js (hit) and lib/trace.js, in doubles.
+ * lib/math/camera.js, lib/shapes/sphere.js (hit) and lib/tracing/trace.js, in doubles.
  *
  *   cc -O3 -march=native -o reference bench/reference.c -lm
  *   ./reference FRAMES [out.rgba]   prints one line per frame: milliseconds

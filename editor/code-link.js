@@ -9,7 +9,7 @@
  * Code read from a link is only text for the editor: it runs when the
  * student presses Run, and then in the sandboxed frame.
  */
-import { isBase64url, toBase64url, fromBase64url } from '../lib/scene-codec.js';
+import { isBase64url, toBase64url, fromBase64url } from '../lib/scene/codec.js';
 
 /** A sketch's code may unpack to this many bytes, no more. */
 export const MAX_CODE_BYTES = 512 * 1024;

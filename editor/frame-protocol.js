@@ -13,7 +13,7 @@
  *     { type: 'error', message, line, column, exact }   a mistake, at a line of the editor's code (or null)
  *     { type: 'select', x, y }                   the pixel selected in the frame's first tracer view
  *     { type: 'check', passed }                  a homework self-check ran on the edited code
- *     { type: 'progress', text }                 the task list's progress, as the kit stores it (lib/tasks.js)
+ *     { type: 'progress', text }                 the task list's progress, as the kit stores it (lib/lesson/progress.js)
  *     { type: 'size', height }                   the frame's content height in CSS pixels
  *   page → frame
  *     { type: 'run', runtime, code, sourceURL, imports, selected }

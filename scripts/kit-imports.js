@@ -10,7 +10,7 @@
 import { existsSync, readFileSync, readdirSync, statSync } from 'node:fs';
 import { basename, dirname, relative, resolve } from 'node:path';
 import { parseAst } from 'vite';
-import { closestName } from '../lib/check.js';
+import { closestName } from '../lib/text/check.js';
 
 /** Export names of each module read so far: path → { mtime, names }. */
 const cache = new Map();

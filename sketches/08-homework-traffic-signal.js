@@ -24,7 +24,7 @@ export function addLights(scene) {
 }
 /* ----------------------------------------------------------------------- */
 
-/** The street (lib/homework-scenes.js: a road, the pole, the signal's housing, the sun); then the lights. */
+/** The street (lib/lesson/homework-scenes.js: a road, the pole, the signal's housing, the sun); then the lights. */
 export function makeScene(addTheLights = addLights) {
   const scene = trafficSignalScene();
   addTheLights(scene);

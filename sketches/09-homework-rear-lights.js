@@ -24,7 +24,7 @@ export function addLights(scene) {
 }
 /* ----------------------------------------------------------------------- */
 
-/** A road, a car seen from behind (lib/homework-scenes.js), the sun; then the lights. */
+/** A road, a car seen from behind (lib/lesson/homework-scenes.js), the sun; then the lights. */
 export function makeScene(addTheLights = addLights) {
   const scene = rearLightsScene();
   addTheLights(scene);

@@ -2,7 +2,7 @@
  * 13 · Meshes and a BVH: the Stanford bunny (npm package bunny, 3,674 triangles).
  *
  * A loop over every triangle tests 3,674 of them for each ray. The bounding
- * volume hierarchy (lib/bvh.js) tests the ray against a box first: a miss skips
+ * volume hierarchy (lib/shapes/bvh.js) tests the ray against a box first: a miss skips
  * every triangle inside. mesh.walk(ray) says which boxes the ray entered, how
  * many box and triangle tests it made and which triangle it hit.
  * The picture is traced on Web Workers (the mesh goes to them as scene JSON).

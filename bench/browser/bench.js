@@ -23,7 +23,7 @@
 import p5 from 'p5';
 import { Camera, classScene, classSceneAt, render } from '../../lib/index.js';
 import '../../lib/p5/index.js';
-import { ParallelRenderer } from '../../lib/workers/parallel.js';
+import { ParallelRenderer } from '../../lib/tracing/workers/parallel.js';
 
 const WIDTH = 640, HEIGHT = 480, BUDGET_MS = 8;
 const params = new URLSearchParams(location.search);

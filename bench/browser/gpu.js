@@ -10,7 +10,7 @@
  */
 import { classScene, Camera, render } from '../../lib/index.js';
 import { GpuTracer } from '../../lib/gpu/engine.js';
-import { ParallelRenderer } from '../../lib/workers/parallel.js';
+import { ParallelRenderer } from '../../lib/tracing/workers/parallel.js';
 
 /** The class scene's camera turned `yaw` degrees about the pink sphere (the orbit a drag makes). */
 function turned(width, height, yaw) {

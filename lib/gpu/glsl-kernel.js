@@ -1,10 +1,10 @@
 /**
- * lib/kernel.js as a WebGL2 fragment shader, one pixel a fragment: nearestHit,
+ * lib/tracing/kernel.js as a WebGL2 fragment shader, one pixel a fragment: nearestHit,
  * surfaceAt, lightPoint (with shadowRay), mirrorAndGlass, step for step with
  * the same names, reading the packed scene the kernel reads (uploaded by
  * lib/gpu/upload.js as float textures) with its layout's own constants: the
  * offsets below come from lib/shapes/packed.js, lib/lights/packed.js and
- * lib/material.js's table of fields, so a change of layout there is one edit.
+ * lib/shapes/material.js's table of fields, so a change of layout there is one edit.
  *
  * GLSL has no recursion, so the tree of mirror and glass rays that
  * kernel.js walks by calling traceRay again is a stack of rays here, each
@@ -26,7 +26,7 @@
  * tested), y, the sphere it runs inside (its far root only); −1 for none.
  */
 import { SHAPE, KIND } from '../shapes/packed.js';
-import { MATERIAL_NUMBERS, MATERIAL_AT } from '../material.js';
+import { MATERIAL_NUMBERS, MATERIAL_AT } from '../shapes/material.js';
 import { LIGHT, POSITION, LIGHT_EMISSION, LIGHT_SHAPE, ATTENUATION, IS_SPOT, AXIS, COS_OUTER, COS_INNER } from '../lights/packed.js';
 import { OPTICS_GLSL } from './glsl-optics.js';
 import { SHAPES_GLSL } from './glsl-shapes.js';
@@ -34,7 +34,7 @@ import { SHAPES_GLSL } from './glsl-shapes.js';
 /** The shader's code for each shape class it can draw, by the class's `type`. */
 export const SHAPE_CODES = Object.freeze({ sphere: 0, plane: 1, box: 2, cylinder: 3, cone: 4, triangle: 5, mesh: 6 });
 
-/** How many kind numbers (lib/kernel.js) the shader maps to its shape codes. */
+/** How many kind numbers (lib/tracing/kernel.js) the shader maps to its shape codes. */
 export const MAX_KINDS = 16;
 
 /** How deep a mesh's tree may be for the shader's walk (its stack). */
@@ -46,7 +46,7 @@ const RAY_STACK = 18;
 /** Numbers per texture row (lib/gpu/upload.js lays every array out in rows of this many). */
 export const ROW = 1024;
 
-/** The material offsets the shader reads, by their names in lib/material.js's table. */
+/** The material offsets the shader reads, by their names in lib/shapes/material.js's table. */
 const { emission: EMISSION, reflection: REFLECTION, transparency: TRANSPARENCY, ior: IOR, specular: SPECULAR, shininess: SHININESS } = MATERIAL_AT;
 
 /** The #defines of the layout: every offset from the module that owns it. */
@@ -140,7 +140,7 @@ vec3 surfaceAt(int object, int item, vec3 P, vec3 D, out bool inside) {
 // How much light gets through from o to reach along the shadow ray toward light l (1 clear, 0 blocked).
 float shadowRay(vec3 o, vec3 d, float reach, int l, ivec2 self) {
   int lightObject = int(light(l * LIGHT + LIGHT_SHAPE)), row = l * uCount, item;
-  float beyond = reach + 2.0 * uBias + 1e-5 * reach; // lib/kernel.js outOfReach
+  float beyond = reach + 2.0 * uBias + 1e-5 * reach; // lib/tracing/kernel.js outOfReach
   float transmission = 1.0;
   for (int i = 0; i < uCount; i++) {
     if (i == lightObject || i == self.x || number(uApart, row + i) > beyond || hitShape(i, o, d, uEpsilon, i == self.y, item) >= reach) continue;

@@ -1,7 +1,7 @@
 /**
- * lib/optics.js in GLSL, one function for one function, the same formulas in
+ * lib/tracing/optics.js in GLSL, one function for one function, the same formulas in
  * the same order: the GPU engine's shading (lib/gpu/glsl-kernel.js) calls
- * these as lib/kernel.js calls those. tests/e2e/gpu-formulas.spec.js checks
+ * these as lib/tracing/kernel.js calls those. tests/e2e/gpu-formulas.spec.js checks
  * each against optics.js on sampled inputs.
  *
  * Two names differ, because GLSL has built-ins by the JS names:

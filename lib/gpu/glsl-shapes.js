@@ -198,7 +198,7 @@ vec3 triangleNormal(int b) {
 }
 
 #if HAS_MESH
-// The slab test on a BVH node's box (lib/bvh.js enterBox): where the ray enters it, or NO_HIT.
+// The slab test on a BVH node's box (lib/shapes/bvh.js enterBox): where the ray enters it, or NO_HIT.
 float enterBox(int j, vec3 o, vec3 inv, float tMin, float best) {
   float tNear = tMin, tFar = best;
   for (int a = 0; a < 3; a++) {
@@ -210,7 +210,7 @@ float enterBox(int j, vec3 o, vec3 inv, float tMin, float best) {
   return tNear <= tFar ? tNear : NO_HIT;
 }
 
-// A mesh (lib/bvh.js walk): the nearest triangle through its tree; its index into item.
+// A mesh (lib/shapes/bvh.js walk): the nearest triangle through its tree; its index into item.
 // The mesh's table: where its boxes, nodes, order, corners and normals start.
 float meshHit(int b, vec3 o, vec3 d, float tMin, out int item) {
   int at = tableStart(int(shape(b)));

@@ -3,17 +3,17 @@
  * with WebGL2 (no p5 needed). One engine (one WebGL2 context) serves every
  * call, made at the first; a lost context is made again at the next call.
  */
-import { checkSceneAndCamera } from '../render.js';
+import { checkSceneAndCamera } from '../tracing/render.js';
 import { GpuTracer } from './engine.js';
 
 let engine = null;
 
 /**
  * The frame `render(scene, camera)` gives, traced by a WebGL2 fragment shader
- * that follows lib/kernel.js step for step in float32: per channel within 2
+ * that follows lib/tracing/kernel.js step for step in float32: per channel within 2
  * of render()'s bytes on all but grazing pixels (tests/e2e/gpu.spec.js).
- * @param {import('../scene.js').Scene} scene
- * @param {import('../camera.js').Camera} camera
+ * @param {import('../scene/scene.js').Scene} scene
+ * @param {import('../math/camera.js').Camera} camera
  * @returns {Uint8ClampedArray} RGBA, width × height × 4, row 0 at the top
  * @throws {Error} without WebGL2, or for a shape the GPU cannot draw (the error names it)
  * @example

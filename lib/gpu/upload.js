@@ -1,5 +1,5 @@
 /**
- * The packed scene (lib/kernel.js PackedScene: the shapes' numbers, their
+ * The packed scene (lib/tracing/kernel.js PackedScene: the shapes' numbers, their
  * materials, the lights, the side tables) as the float arrays the GPU engine
  * uploads, one texture each, in rows of ROW numbers: the same numbers in the
  * same places, as float32. No WebGL here, so Node can test it.
@@ -7,9 +7,9 @@
  * The side tables become one array: first each table's start, then the
  * tables. A triangle's table is its 12 numbers as they are; a mesh's is five
  * starts (its tree's boxes, nodes and order, its corners in the tree's
- * order, its triangles' normals) followed by those arrays (lib/bvh.js).
+ * order, its triangles' normals) followed by those arrays (lib/shapes/bvh.js).
  */
-import { PackedScene } from '../kernel.js';
+import { PackedScene } from '../tracing/kernel.js';
 import { plainClassOf, classOf } from '../shapes/index.js';
 import { SHAPE_CODES, MAX_KINDS, BVH_STACK, ROW } from './glsl-kernel.js';
 import { SHAPE, KIND } from '../shapes/packed.js';

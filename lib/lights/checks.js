@@ -3,8 +3,8 @@
  * how it fades with distance, its name. Each light class checks its own
  * fields (a spot's angle, a disc's radius) and these through the same calls.
  */
-import { toColor, MAX_COLOR } from '../color.js';
-import { finiteNumber, show } from '../check.js';
+import { toColor, MAX_COLOR } from '../math/color.js';
+import { finiteNumber, show } from '../text/check.js';
 
 /** A light's colour as [r, g, b] (an array, '#ff5160', 'pink'). */
 export function lightColor(value) {
@@ -20,7 +20,7 @@ export function lightIntensity(value) {
 }
 
 /**
- * A light's `attenuation`, k in 1 / (1 + k·d²) (lib/optics.js's falloff): a
+ * A light's `attenuation`, k in 1 / (1 + k·d²) (lib/tracing/optics.js's falloff): a
  * finite number ≥ 0; 0 (the default) keeps the light as strong at any distance.
  */
 export function checkAttenuation(value) {

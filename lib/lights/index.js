@@ -12,10 +12,10 @@
  * shadow rays as one group) and `roundTrips` (built again from its JSON, the
  * same to the bit).
  */
-import { PointLight } from '../lights.js';
-import { SpotLight } from '../spot-light.js';
-import { AreaLight } from '../area-light.js';
-import { show } from '../check.js';
+import { PointLight } from './point-light.js';
+import { SpotLight } from './spot-light.js';
+import { AreaLight } from './area-light.js';
+import { show } from '../text/check.js';
 
 /** Every light class, in the order the lesson meets them. A new light is one more entry here. */
 const LIGHTS = [PointLight, AreaLight, SpotLight];

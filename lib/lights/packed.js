@@ -1,6 +1,6 @@
 /**
  * The packed layout of the scene's light sources, as render()'s kernel
- * (lib/kernel.js) reads them and the GPU engine uploads them: LIGHT numbers
+ * (lib/tracing/kernel.js) reads them and the GPU engine uploads them: LIGHT numbers
  * per source, each at its named offset. Every light answers with its
  * sources (`sources()`: position, emission, attenuation, an optional cone),
  * so one function packs any light, a light of a test's own too.

@@ -29,7 +29,7 @@ import { drawSideView, drawTopView } from './diagrams/plane-views.js';
 import { drawGeometricConstruction } from './diagrams/construction.js';
 import { drawParabola } from './diagrams/parabola.js';
 import { drawLegend } from './diagrams/legend.js';
-import { show } from '../check.js';
+import { show } from '../text/check.js';
 
 /**
  * `name: (p, options) => part`: what each p5 method makes.
@@ -62,7 +62,7 @@ export const FACTORIES = {
    * A visual mode's legend drawn into the sketch's canvas: its title, colour bar and note.
    * @param {import('p5').default} p the sketch
    * @param {object} options
-   * @param {object} options.legend what to draw, `{ title, stops, note }` (lib/modes.js's modeLegend makes one per visual mode)
+   * @param {object} options.legend what to draw, `{ title, stops, note }` (lib/tracing/modes.js's modeLegend makes one per visual mode)
    * @param {number} options.x the box it is drawn in: left
    * @param {number} options.y top
    * @param {number} options.w width

@@ -17,8 +17,8 @@
  */
 import { registerView } from './page-state.js';
 import { element } from './dom.js';
-import { ParallelRenderer } from '../workers/parallel.js';
-import { checkOptions } from '../check.js';
+import { ParallelRenderer } from '../tracing/workers/parallel.js';
+import { checkOptions } from '../text/check.js';
 
 /** Frames under way on the workers at most: one shown while the next ones are traced. */
 export const PIPELINE = 2;
@@ -113,8 +113,8 @@ export class SceneAnimation {
   /**
    * @param {import('./tracer-view.js').TracerView} view where the frames are shown
    * @param {object} options
-   * @param {(t: number) => import('../scene.js').Scene} options.sceneAt the scene t seconds in
-   * @param {import('../camera.js').Camera} options.camera the camera of every frame
+   * @param {(t: number) => import('../scene/scene.js').Scene} options.sceneAt the scene t seconds in
+   * @param {import('../math/camera.js').Camera} options.camera the camera of every frame
    * @param {number} [options.workers=4] how many workers share a frame on 'workers'
    * @param {{ elt?: HTMLElement }|HTMLElement} [options.stats] gets the stats line and data-frame, data-fps, data-time
    * @param {(playing: boolean) => void} [options.onPlay] after Play / Pause

@@ -11,7 +11,7 @@
  */
 import { valueBox } from './value-box.js';
 import { element, resolveParent, sketchNode, copyText } from './dom.js';
-import { checkOptions } from '../check.js';
+import { checkOptions } from '../text/check.js';
 import { joinClassBoard } from './class-board.js';
 import { createAnnouncer } from './announce.js';
 

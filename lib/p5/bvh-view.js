@@ -8,7 +8,7 @@
  */
 import { element, useStyle } from './dom.js';
 import { createAnnouncer } from './announce.js';
-import { checkOptions, show } from '../check.js';
+import { checkOptions, show } from '../text/check.js';
 import { Mesh } from '../shapes/mesh.js';
 
 const STEP = Math.PI / 12; // one key press or button: 15°

@@ -2,7 +2,7 @@
  * Small DOM helpers shared by the tracer view, the inspector panel and the
  * controls: the stylesheet, elements built from text, where a part goes, the clipboard.
  */
-import { show } from '../check.js';
+import { show } from '../text/check.js';
 
 const STYLE_URL = new URL('./style.css', import.meta.url).href;
 

@@ -6,10 +6,10 @@
  * visual mode other than the shaded picture, set before or after) the view
  * stays on, or goes back to, the CPU, and a line under the picture says why.
  */
-import { WorkerProgressiveRenderer } from '../workers/progressive.js';
+import { WorkerProgressiveRenderer } from '../tracing/workers/worker-frames.js';
 import { GpuRenderer } from './gpu-renderer.js';
 import { element } from './dom.js';
-import { show } from '../check.js';
+import { show } from '../text/check.js';
 
 const ENGINES = ['cpu', 'gpu'];
 

@@ -11,7 +11,7 @@ export { orbit } from './gpu-orbit.js'; // turn a view's camera about the point 
 export { SceneView } from './scene-view.js';
 export { PhotonView } from './photon-view.js';
 export { Inspector, answerLine } from './inspector.js';
-export { formatAngle, formatLabel, fmt } from '../format.js';
+export { formatAngle, formatLabel, fmt } from '../text/format.js';
 export { SceneAnimation } from './animation.js';
 export { exampleInLink } from './example-picker.js';
 export { pageRenderState } from './page-state.js';

@@ -1,6 +1,6 @@
 /**
  * The tracer view's GPU engine: the renderer the view drives (as it drives
- * lib/workers/progressive.js's), but each step is a whole frame traced by
+ * lib/tracing/workers/worker-frames.js's), but each step is a whole frame traced by
  * the GPU engine (lib/gpu/engine.js) and drawn onto the view's canvas: no
  * progressive passes, a whole new frame on the animation frame after every
  * change (of camera or scene), and nothing while nothing changes (a page
@@ -9,10 +9,10 @@
  * the frame loop waits for nothing.
  */
 import { GpuTracer } from '../gpu/engine.js';
-import { Scene } from '../scene.js';
-import { Camera } from '../camera.js';
-import { show } from '../check.js';
-import { renderPixel } from '../render.js';
+import { Scene } from '../scene/scene.js';
+import { Camera } from '../math/camera.js';
+import { show } from '../text/check.js';
+import { renderPixel } from '../tracing/render.js';
 
 export class GpuRenderer {
   /** The engine's canvas and context are made here: an Error saying why when there is no WebGL2 or the scene cannot go to the GPU. */

@@ -1,6 +1,6 @@
 /**
  * The homework pages' self-check: a "Check my scene" button under the
- * picture and the result of a check (lib/homework.js) as a list, ✓, ✗ or –
+ * picture and the result of a check (lib/lesson/homework.js) as a list, ✓, ✗ or –
  * per check, in the student's words. Its hints name the library's classes as
  * the page does: `new RT.Sphere(…)` in a global-mode sketch of the one-file
  * build, `new Sphere(…)` in a module. Each check sends an `rt-check` event
@@ -11,7 +11,7 @@
  */
 import { element, resolveParent, sketchNode, useStyle } from './dom.js';
 import { createAnnouncer } from './announce.js';
-import { checkOptions } from '../check.js';
+import { checkOptions } from '../text/check.js';
 import { joinClassBoard } from './class-board.js';
 
 /**

@@ -1,7 +1,7 @@
 /**
  * The inspector panel: the whole story of the selected pixel, in the
  * lesson's words and numbers. It follows a tracer view's selection and shows
- * what `inspectPixel` (lib/explain.js) records — the very values the renderer
+ * what `inspectPixel` (lib/lesson/inspect.js) records — the very values the renderer
  * computed:
  *   - the answer line `Pixel: X,Y; H: a; V: b` (the class activity's format);
  *   - the final colour: swatch, hex and the nearest simple colour name;
@@ -14,12 +14,12 @@
  * or `data-light` where needed) and its full precision in `data-value`, so tests and worksheets can read it.
  */
 import { recordOf } from './pixel-record.js';
-import { toHex, colorName } from '../color.js';
-import { formatNumber, formatVector, formatAngle } from '../format.js';
-import { show, checkOptions } from '../check.js';
+import { toHex, colorName } from '../math/color.js';
+import { formatNumber, formatVector, formatAngle } from '../text/format.js';
+import { show, checkOptions } from '../text/check.js';
 import { useStyle, element, resolveParent, copyText, shownName, nameTitle } from './dom.js';
 import { showInBox, downloadText } from './text-box.js';
-import { joinInSlices } from '../slices.js';
+import { joinInSlices } from '../text/slices.js';
 import { pixelCSV, pixelCSVLines, rootsMeaning, routesAgree } from './pixel-csv.js';
 import { gpuDifference } from './engines.js';
 import { createAnnouncer } from './announce.js';
@@ -134,7 +134,7 @@ export class Inspector {
    * Copies the CSV to the clipboard when the browser allows it; the text is
    * always in the panel's text box too, selected, ready for Ctrl+C (up to
    * the box's limit, lib/p5/text-box.js; "Download CSV" saves it all).
-   * Built in slices (lib/slices.js): 10,000 rows are 1 MB of text.
+   * Built in slices (lib/text/slices.js): 10,000 rows are 1 MB of text.
    */
   async copyCSV() {
     const r = this.record;

@@ -4,12 +4,12 @@
  * cannot see the colours hears the discriminant, the roots, H or V, the
  * normal or the depth t of the pixel they select.
  */
-import { Ray } from '../ray.js';
-import { copy, scaleAndAdd, Vec3 } from '../vec3.js';
-import { sphereFocus } from '../modes.js';
-import { nearestHit } from '../trace.js';
-import { horizontalAngle, verticalAngle } from '../camera.js';
-import { formatNumber, formatVector, formatAngle } from '../format.js';
+import { Ray } from '../math/ray.js';
+import { copy, scaleAndAdd, Vec3 } from '../math/vec3.js';
+import { sphereFocus } from '../tracing/modes.js';
+import { nearestHit } from '../tracing/trace.js';
+import { horizontalAngle, verticalAngle } from '../math/camera.js';
+import { formatNumber, formatVector, formatAngle } from '../text/format.js';
 
 /** The grid of rays a map's summary looks at, at most this many a side. */
 const SUMMARY_SIDE = 64;
@@ -32,7 +32,7 @@ const ROOTS_MEANING = ['no hit', 'one root: the ray grazes the sphere', 'two roo
 /**
  * What pixel (x, y) of a `mode` map stands for, in a few words:
  * `'Discriminant −12.3, negative: no hit.'`, `'H 3.2°.'`; '' for the shaded picture.
- * @param {string} mode a visual mode's name (lib/modes.js)
+ * @param {string} mode a visual mode's name (lib/tracing/modes.js)
  */
 export function mapValue(mode, scene, camera, x, y) {
   const ray = primaryRay(camera, x, y);

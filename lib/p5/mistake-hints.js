@@ -2,7 +2,7 @@
  * "Did you mean …?" for a name that is not there, as p5's Friendly Error
  * System does: the error panel (error-panel.js) loads this module only when
  * a message names a missing name, and shows the nearest name the kit, p5 or
- * the module imported from has (check.js's closestName, the same as for a
+ * the module imported from has (text/check.js's closestName, the same as for a
  * misspelt option):
  *
  *   p.createTracerVeiw is not a function            → did you mean p.createTracerView?
@@ -13,7 +13,7 @@
 import p5 from 'p5';
 import * as library from '../index.js';
 import * as addon from './exports.js'; // the entry's names, not the entry: it installs the panel that loads this module
-import { closestName } from '../check.js';
+import { closestName } from '../text/check.js';
 
 /**
  * The hint for `message`, or null when no name is near enough.

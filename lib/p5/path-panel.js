@@ -15,8 +15,8 @@
  * bounce's row), its full precision in `data-value`.
  */
 import { inspectPath } from '../pathtrace/inspect-path.js';
-import { formatNumber, formatVector } from '../format.js';
-import { show, checkOptions } from '../check.js';
+import { formatNumber, formatVector } from '../text/format.js';
+import { show, checkOptions } from '../text/check.js';
 import { useStyle, element, resolveParent, sketchNode, shownName } from './dom.js';
 
 const OPTIONS = ['view', 'parent', 'onPath', 'sceneView'];

@@ -1,5 +1,5 @@
 /**
- * The photon view: light-based tracing as a picture (lib/photons.js). Photons
+ * The photon view: light-based tracing as a picture (lib/tracing/photons.js). Photons
  * leave the lights a batch per animation frame; the few that reach the eye
  * build the picture, under a live count ("of 1,000,000 rays from the light,
  * 58 reached the eye: 0.0058 %"). Once the photons are sent it hands a sample
@@ -12,22 +12,22 @@
  * data-width, data-height); it holds the page in "rendering" while photons
  * are still on their way.
  */
-import { PhotonTracer } from '../photons.js';
-import { checkOptions, positiveInteger, show } from '../check.js';
+import { PhotonTracer } from '../tracing/photons.js';
+import { checkOptions, positiveInteger, show } from '../text/check.js';
 import { registerView } from './page-state.js';
 import { useStyle, element, resolveParent, sketchNode } from './dom.js';
 import { RAY_COLORS } from './scene-view.js';
 import { arrowMove } from './tracer-input.js';
 import { cappedScale, roomFor, watchRoom } from './tracer-layout.js';
-import { describeScene } from '../describe.js';
+import { describeScene } from '../lesson/describe.js';
 
 const OPTIONS = ['scene', 'camera', 'seed', 'eyeRadius', 'photons', 'samplePaths', 'scale', 'parent', 'label', 'budgetMs', 'link', 'sceneView'];
 
 /**
  * @param {import('p5').default} p the sketch
  * @param {object} options
- * @param {import('../scene.js').Scene} options.scene
- * @param {import('../camera.js').Camera} options.camera
+ * @param {import('../scene/scene.js').Scene} options.scene
+ * @param {import('../math/camera.js').Camera} options.camera
  * @param {number} [options.seed=1] the photons' random sequence: the same seed, the same picture
  * @param {number} [options.eyeRadius=2] the pupil's radius in scene units
  * @param {number} [options.photons=1000000] photons per run (the "more" button sends as many again)

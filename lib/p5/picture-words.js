@@ -1,7 +1,7 @@
 /**
  * The tracer view's picture in words and by keys, for a student who cannot
  * see it. The canvas is an image (`role="img"`) described by what its scene
- * shows through its camera (lib/describe.js; a map, by what the map shows:
+ * shows through its camera (lib/lesson/describe.js; a map, by what the map shows:
  * map-words.js), kept current as the scene, camera or mode change. It sits in
  * an `application` (its stage): screen readers in browse mode (NVDA, JAWS) keep
  * the arrow keys for their own cursor unless the focus is in such a widget,
@@ -11,8 +11,8 @@
  * "Picture as text" disclosure reads the traced picture row by row of pixels,
  * in colour names, saying when the rows change.
  */
-import { describeScene, pixelNames, pixelRows, nextPixelNamed, COLOR_NAMES } from '../describe.js';
-import { MODES } from '../modes.js';
+import { describeScene, pixelNames, pixelRows, nextPixelNamed, COLOR_NAMES } from '../lesson/describe.js';
+import { MODES } from '../tracing/modes.js';
 import { element } from './dom.js';
 import { createAnnouncer } from './announce.js';
 import { mapSummary, mapValue } from './map-words.js';
@@ -128,7 +128,7 @@ export function createPictureWords(canvas, view) {
       names = null;
       if (details.open) rows.replaceChildren(element('li', {}, 'Tracing…'));
       if (timer) return;
-      // In a task of its own, never the edit's: it casts rays at every shape (lib/describe.js).
+      // In a task of its own, never the edit's: it casts rays at every shape (lib/lesson/describe.js).
       timer = setTimeout(describe, Math.max(0, last + DESCRIBE_EVERY_MS - performance.now()));
     },
     /** The picture is traced: the rows can be read, and the colours searched. */

@@ -11,7 +11,7 @@
  *   p.draw = () => pinkOnes.draw();
  */
 import { element } from './dom.js';
-import { checkOptions } from '../check.js';
+import { checkOptions } from '../text/check.js';
 
 /**
  * Every pixel `{ x, y }` of an RGBA buffer whose `[r, g, b]` (0–255) passes

@@ -1,10 +1,10 @@
 /**
  * The record of a selected pixel, for a tracer view's listeners: the view's
- * own `record` (lib/explain.js inspectPixel, made once per selection and
+ * own `record` (lib/lesson/inspect.js inspectPixel, made once per selection and
  * scene however many panels follow the view), or, for a pixel the view has
  * not selected, one made here.
  */
-import { inspectPixel } from '../explain.js';
+import { inspectPixel } from '../lesson/inspect.js';
 
 /**
  * @param {{ scene: object, camera: object, selected?: { x: number, y: number }|null, record?: object|null }} view

@@ -8,8 +8,8 @@
  * different things.
  */
 import { kindOf } from '../shapes/index.js';
-import { colorName } from '../color.js';
-import { formatAngle } from '../format.js';
+import { colorName } from '../math/color.js';
+import { formatAngle } from '../text/format.js';
 import { shownName } from './dom.js';
 
 /**

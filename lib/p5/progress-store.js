@@ -1,11 +1,11 @@
 /**
  * The students' progress kept in this browser (localStorage, under
- * lib/tasks.js's versioned key), for the task lists and the gallery. Storage
+ * lib/lesson/progress.js's versioned key), for the task lists and the gallery. Storage
  * that is off, full, empty, corrupt or foreign never raises an error: it
  * reads as nothing done, and the page works on without keeping anything.
  */
-import { LESSONS } from '../lesson-tasks.js';
-import { PROGRESS_KEY, parseProgress, serializeProgress } from '../tasks.js';
+import { LESSONS } from '../lesson/tasks.js';
+import { PROGRESS_KEY, parseProgress, serializeProgress } from '../lesson/progress.js';
 
 /** The progress kept in this browser, `{ '01': ['select', …], … }`. */
 export function loadProgress(storage = globalThis.localStorage) {

@@ -10,9 +10,9 @@
  *   p.createSampleRays({ view });
  */
 import { recordOf } from './pixel-record.js';
-import { toHex, colorName } from '../color.js';
-import { formatAngle, formatNumber } from '../format.js';
-import { show, checkOptions } from '../check.js';
+import { toHex, colorName } from '../math/color.js';
+import { formatAngle, formatNumber } from '../text/format.js';
+import { show, checkOptions } from '../text/check.js';
 import { element, useStyle, resolveParent } from './dom.js';
 
 /** Screen pixels of the drawn pixel's side. */

@@ -2,21 +2,21 @@
  * The scene form: value boxes (value-box.js) for a whole scene (every
  * sphere's centre, radius, colour, reflection, transparency and emission,
  * every point light) that hand back a new Scene only when the values are good.
- * A change is checked and applied on its own object (lib/scene-edits.js), not
+ * A change is checked and applied on its own object (lib/scene/edits.js), not
  * on the whole scene again: at 1,000 spheres that is what keeps a typed value
  * or "Add sphere" quick.
  *
  *   const form = p.createSceneForm({ json: sceneToJSON(scene), parent, onChange: (scene, json) => view.setScene(scene) });
  *
  * Which boxes each kind of object gets, and the new JSON a box's value makes:
- * lib/scene-fields.js.
+ * lib/scene/fields.js.
  */
-import { colorToHex } from '../color.js';
-import { readColor, colorText } from '../values.js';
-import { tableColumns, fieldText, formTypes } from '../scene-fields.js';
+import { colorToHex } from '../math/color.js';
+import { readColor, colorText } from '../scene/values.js';
+import { tableColumns, fieldText, formTypes } from '../scene/fields.js';
 import { shapeClass } from '../shapes/index.js';
-import { SceneEdits } from '../scene-edits.js';
-import { show, checkOptions } from '../check.js';
+import { SceneEdits } from '../scene/edits.js';
+import { show, checkOptions } from '../text/check.js';
 import { useStyle, element, shownName, nameTitle } from './dom.js';
 import { valueBox } from './value-box.js';
 
@@ -47,7 +47,7 @@ export const FORM_ROWS = 40;
  * @param {object} options
  * @param {object} options.json scene JSON (sceneToJSON)
  * @param {HTMLElement} options.parent
- * @param {(scene: import('../scene.js').Scene, json: object) => void} options.onChange
+ * @param {(scene: import('../scene/scene.js').Scene, json: object) => void} options.onChange
  * @example
  * p.createSceneForm({
  *   json: sceneToJSON(classScene()), parent: document.getElementById('values'),
@@ -81,7 +81,7 @@ export class SceneForm {
 
   /** The current scene (the last good one). */
   get scene() { return this.#edits.scene; }
-  /** Its JSON; the objects in the order of the rows (see lib/scene-edits.js). */
+  /** Its JSON; the objects in the order of the rows (see lib/scene/edits.js). */
   get json() { return this.#edits.json; }
 
   /** Replaces every box from `json` (after add/remove, or a new scene). */

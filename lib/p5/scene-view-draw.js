@@ -5,8 +5,8 @@
  * WEBGL y points down).
  */
 import p5 from 'p5';
-import { Vec3, sub, dot } from '../vec3.js';
-import { imagePlane } from '../rays3d.js';
+import { Vec3, sub, dot } from '../math/vec3.js';
+import { imagePlane } from '../lesson/rays3d.js';
 import { buildMeshes, shapesKey, lightLoops } from './scene-view-mesh.js';
 import { INK, MUTED, RAY, NORMAL, LIT, SHADOW, CONSTRUCT } from './diagrams/style.js';
 
@@ -120,7 +120,7 @@ function dot3(g, at, color, r) {
   g.pop();
 }
 
-/** One segment of a pixel's story (lib/rays3d.js raySegments) in its colour; `radius` is the scene's, for the dots. */
+/** One segment of a pixel's story (lib/lesson/rays3d.js raySegments) in its colour; `radius` is the scene's, for the dots. */
 export function drawSegment(g, s, radius) {
   if (s.kind === 'shadow') {
     if (!s.facing) return line3(g, s.from, s.to, RAY_COLORS.away, 1);

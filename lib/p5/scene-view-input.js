@@ -5,9 +5,9 @@
  * The arrow keys and the buttons are scene-view-keys.js. The orbit's maths
  * (how far a drag turns, how near the wheel may come) is here, with no page.
  */
-import { clamp } from '../numbers.js';
-import { show, checkOptions } from '../check.js';
-import { screenRay, pickImagePlane } from '../rays3d.js';
+import { clamp } from '../math/numbers.js';
+import { show, checkOptions } from '../text/check.js';
+import { screenRay, pickImagePlane } from '../lesson/rays3d.js';
 import { listenForOrbitKeys } from './scene-view-keys.js';
 
 /** Mouse travel (px) under which a press and release is a click, not a turn. */
@@ -41,12 +41,12 @@ export function wheelFactor(deltaY) {
 }
 
 /**
- * The traced pixel `{ x, y, point, t }` under a point of the 3D canvas (lib/rays3d.js pickImagePlane), or null off the
+ * The traced pixel `{ x, y, point, t }` under a point of the 3D canvas (lib/lesson/rays3d.js pickImagePlane), or null off the
  * image plane: the ray from the orbit's eye through that point, met with the plane.
  * @param {{ left: number, top: number, width: number, height: number }} box the canvas's box on screen
  * @param {number} clientX @param {number} clientY the point, in client coordinates
  * @param {{ eye: object, camera: object, planeDistance: number, width: number, height: number, fovy: number }} view
- *   the orbit camera (lib/rays3d.js orbitCamera), the traced camera, the plane's distance, the canvas's size and field
+ *   the orbit camera (lib/lesson/rays3d.js orbitCamera), the traced camera, the plane's distance, the canvas's size and field
  */
 export function pixelUnder(box, clientX, clientY, { eye, camera, planeDistance, width, height, fovy }) {
   const px = ((clientX - box.left) / box.width) * width, py = ((clientY - box.top) / box.height) * height;

@@ -6,8 +6,8 @@
  * the orbit camera; a point behind the view has no label.
  */
 import { intersectGeometric } from '../shapes/sphere.js';
-import { Vec3 } from '../vec3.js';
-import { geometricConstruction, projectToScreen } from '../rays3d.js';
+import { Vec3 } from '../math/vec3.js';
+import { geometricConstruction, projectToScreen } from '../lesson/rays3d.js';
 import { INK, NORMAL, CONSTRUCT, FONT } from './diagrams/style.js';
 
 /**
@@ -35,7 +35,7 @@ export function constructionOf(record, sphere) {
 }
 
 /**
- * Where each label goes on a width × height canvas seen from `orbit` (lib/rays3d.js
+ * Where each label goes on a width × height canvas seen from `orbit` (lib/lesson/rays3d.js
  * orbitCamera) with vertical field of view `fovy`: `[{ text, color, x, y }]` in
  * CSS px, `y` moved by the label's `dy`; labels behind the view are left out.
  * @param {Array<{ at: {x: number, y: number, z: number}, text: string, color?: string, dy?: number }>} labels

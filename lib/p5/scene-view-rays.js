@@ -1,12 +1,12 @@
 /**
  * The rays the 3D view shows for pixels, read from inspectPixel's record (so
- * the rays and the traced colour always agree, see lib/rays3d.js raySegments):
+ * the rays and the traced colour always agree, see lib/lesson/rays3d.js raySegments):
  * the selected pixel's whole story, the primary rays of its row or column
  * (keys h / v), and the story of a pixel Shoot sends flying. Lengths scale
  * with the scene's radius `r`: a missing ray goes 2.5 r out, a normal is short.
  */
-import { inspectPixel } from '../explain.js';
-import { raySegments, sampleSegments, primarySegment } from '../rays3d.js';
+import { inspectPixel } from '../lesson/inspect.js';
+import { raySegments, sampleSegments, primarySegment } from '../lesson/rays3d.js';
 
 /**
  * The story of a pixel (its inspectPixel record) as segments: primary ray,

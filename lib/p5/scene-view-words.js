@@ -2,7 +2,7 @@
  * The 3D view in words: where it looks from, in its name and said once it
  * rests, so that turning it by keys or buttons is heard, not only seen.
  * Yaw 0 looks from behind the eye the way the eye looks; yaw < 0 from its
- * right; pitch > 0 from above (lib/rays3d.js orbitCamera).
+ * right; pitch > 0 from above (lib/lesson/rays3d.js orbitCamera).
  */
 import { createAnnouncer } from './announce.js';
 

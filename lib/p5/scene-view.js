@@ -23,11 +23,11 @@
  */
 import p5 from 'p5';
 import { ballOf } from '../shapes/index.js';
-import { inspectPixel } from '../explain.js';
+import { inspectPixel } from '../lesson/inspect.js';
 import { recordOf } from './pixel-record.js';
-import { Vec3 } from '../vec3.js';
-import { show, checkOptions } from '../check.js';
-import { pixelCenter, sceneBounds, orbitCamera, projectToScreen } from '../rays3d.js';
+import { Vec3 } from '../math/vec3.js';
+import { show, checkOptions } from '../text/check.js';
+import { pixelCenter, sceneBounds, orbitCamera, projectToScreen } from '../lesson/rays3d.js';
 import { useStyle, resolveParent } from './dom.js';
 import { nearestAhead } from './scene-view-mesh.js';
 import { RAY_COLORS, StillGeometry, PlaneTexture, wireSphere, line3, drawSegment, drawImagePlane, drawFrustum, drawLightOutlines } from './scene-view-draw.js';
@@ -138,7 +138,7 @@ export class SceneView {
   get ready() { return this.#ready; }
   /** Where the view looks from: `{ yaw, pitch, distance }` (degrees, scene units). */
   get orbit() { return { yaw: this.#orbit.yaw, pitch: this.#orbit.pitch, distance: this.#orbit.distance }; }
-  /** The selected pixel's segments (see lib/rays3d.js raySegments), [] when none. */
+  /** The selected pixel's segments (see lib/lesson/rays3d.js raySegments), [] when none. */
   get segments() { return this.#segments; }
   /** How long the last draw took, ms (for the benchmark). */
   get lastDrawMs() { return this.#lastDrawMs; }
@@ -365,7 +365,7 @@ export class SceneView {
     this.canvas.dataset.state = this.#view.done && !this.#raf ? 'done' : 'drawing';
   };
 
-  /** The orbit camera as vectors (lib/rays3d.js orbitCamera). */
+  /** The orbit camera as vectors (lib/lesson/rays3d.js orbitCamera). */
   #eye() {
     return orbitCamera({ target: this.#target, yaw: this.#orbit.yaw, pitch: this.#orbit.pitch, distance: this.#orbit.distance });
   }

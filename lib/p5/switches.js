@@ -12,7 +12,7 @@
  * Every text is set as text, never parsed as HTML.
  */
 import { element, withText } from './dom.js';
-import { checkOptions } from '../check.js';
+import { checkOptions } from '../text/check.js';
 
 /**
  * @param {import('p5').default} p the sketch (its DOM functions make the parts)

@@ -1,8 +1,8 @@
 /**
- * A lesson page's tasks (lib/lesson-tasks.js) as a list under the page, each
+ * A lesson page's tasks (lib/lesson/tasks.js) as a list under the page, each
  * ticked off by what the student does there: a pixel selected, a value
  * changed, a picture traced again, the activity's verdict, a self-check. What
- * is done is kept in the browser (localStorage, lib/tasks.js), shown as a
+ * is done is kept in the browser (localStorage, lib/lesson/progress.js), shown as a
  * strip in the page's header, and announced in one polite status line.
  *
  *   p.createTaskList({ page: '01', view });                      // after the page's own setup
@@ -14,10 +14,10 @@
  * (the ids): on a page served by `npm run class` they go to the teacher's board.
  */
 import { recordOf } from './pixel-record.js';
-import { lessonOf, LESSONS } from '../lesson-tasks.js';
-import { markDone, clearProgress, pageProgress, progressText } from '../tasks.js';
+import { lessonOf, LESSONS } from '../lesson/tasks.js';
+import { markDone, clearProgress, pageProgress, progressText } from '../lesson/progress.js';
 import { loadProgress, saveProgress } from './progress-store.js';
-import { checkOptions, show } from '../check.js';
+import { checkOptions, show } from '../text/check.js';
 import { element, resolveParent, useStyle } from './dom.js';
 import { joinClassBoard } from './class-board.js';
 import { createAnnouncer } from './announce.js';

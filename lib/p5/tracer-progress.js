@@ -5,7 +5,7 @@
  * more pixels touches nothing on the page.
  */
 import { element } from './dom.js';
-import { formatRate } from '../format.js';
+import { formatRate } from '../text/format.js';
 
 /**
  * @returns {{ bar: HTMLElement, note: HTMLElement, show: (renderer: { done: boolean, progress: number, raysPerSecond: number, progressText?: string, problem?: ?string }) => void }}

@@ -22,12 +22,12 @@
  * tracer-progress.js (the progress bar and the workers' note),
  * tracer-events.js (what it tells listeners: `view.on('select' | 'restart' | 'progress', fn)`).
  */
-import { ORDERS } from '../progressive.js';
-import { WorkerProgressiveRenderer } from '../workers/progressive.js';
+import { ORDERS } from '../tracing/frames.js';
+import { WorkerProgressiveRenderer } from '../tracing/workers/worker-frames.js';
 import { PathProgressiveRenderer } from '../pathtrace/progressive.js';
-import { modeShader, modeLegend } from '../modes.js';
-import { pixelCoordinate, show, checkOptions } from '../check.js';
-import { inspectPixel } from '../explain.js';
+import { modeShader, modeLegend } from '../tracing/modes.js';
+import { pixelCoordinate, show, checkOptions } from '../text/check.js';
+import { inspectPixel } from '../lesson/inspect.js';
 import { registerView } from './page-state.js';
 import { useStyle, element, resolveParent, sketchNode } from './dom.js';
 import { addProjectorSwitch } from './projector.js';
@@ -47,8 +47,8 @@ import { listenForOrbit } from './gpu-orbit.js';
  * Creates a tracer view inside a p5 sketch (call it from setup()).
  * @param {import('p5').default} p the sketch (instance mode), used for its parent node and its lifetime
  * @param {object} options
- * @param {import('../scene.js').Scene} options.scene
- * @param {import('../camera.js').Camera} options.camera its width × height is the traced resolution
+ * @param {import('../scene/scene.js').Scene} options.scene
+ * @param {import('../math/camera.js').Camera} options.camera its width × height is the traced resolution
  * @param {'auto'|number} [options.scale='auto'] on-screen pixels per traced pixel with 16 px text (more, in whole steps, when the page's text is larger); 'auto' = the largest whole number that fits
  * @param {boolean} [options.grid=false] draw the pixel grid (on an overlay, never into the picture)
  * @param {string} [options.mode='shaded'] visual mode: 'shaded', 'discriminant', 'roots', 'h', 'v', 'normals', 'depth'
@@ -111,7 +111,7 @@ export class TracerView {
     this.#mode = mode;
     if (order !== undefined && renderMode !== undefined) throw new TypeError('createTracerView takes order or renderMode (its old name), not both');
     // The renderer checks scene, camera and the order (its `mode`); modeShader checks the visual mode.
-    // Large shaded frames go to Web Workers (lib/workers/progressive.js); the rest is traced here.
+    // Large shaded frames go to Web Workers (lib/tracing/workers/worker-frames.js); the rest is traced here.
     if (path !== undefined && (mode !== 'shaded' || order !== undefined || renderMode !== undefined)) throw new TypeError('a path-traced view (path) shows the shaded picture, sample after sample: no mode or order');
     this.#renderer = path !== undefined ? new PathProgressiveRenderer({ scene, camera, path, budgetMs: this.budgetMs }) : new WorkerProgressiveRenderer({ scene, camera, mode: checkOrder(order ?? renderMode ?? 'coarse', renderMode === undefined ? 'order' : 'renderMode'), budgetMs: this.budgetMs, shader: modeShader(mode), workers });
     this.showLegend = legend;
@@ -151,7 +151,7 @@ export class TracerView {
   /** The selected pixel `{ x, y }` in traced-image coordinates, or null. */
   get selected() { return this.#selected && { ...this.#selected }; }
   /**
-   * The selected pixel's whole record (lib/explain.js inspectPixel), or null:
+   * The selected pixel's whole record (lib/lesson/inspect.js inspectPixel), or null:
    * made when first asked after each selection or new scene, so every 'select'
    * listener (inspector, 3D view, tasks, sample rays) reads the same one.
    */
@@ -201,7 +201,7 @@ export class TracerView {
   setScene(scene) { return this.#change({ scene }); }
   /** Traces through a new camera (a new size changes the traced resolution). */
   setCamera(camera) { return this.#change({ camera }); }
-  /** Shows another visual mode (see lib/modes.js). */
+  /** Shows another visual mode (see lib/tracing/modes.js). */
   setMode(mode) {
     const shader = modeShader(mode); // throws on an unknown mode, before anything changes
     this.#mode = mode;

@@ -1,9 +1,9 @@
 /**
  * A value box: a labelled text box with a message beside it, read by
- * lib/values.js (a number by default), for any form of the kit: the scene
+ * lib/scene/values.js (a number by default), for any form of the kit: the scene
  * form's cells, the answer form's boxes. Its look is in style.css (`.sf-…`).
  */
-import { readNumber } from '../values.js';
+import { readNumber } from '../scene/values.js';
 import { useStyle, element } from './dom.js';
 
 /**

@@ -15,8 +15,8 @@
  * `tracePath` writes the sample's light into `radiance` and allocates nothing;
  * given a `record` list it also pushes each bounce's story (inspectPath's).
  */
-import { Ray } from '../ray.js';
-import { Vec3 } from '../vec3.js';
+import { Ray } from '../math/ray.js';
+import { Vec3 } from '../math/vec3.js';
 import { scatter, MATERIAL, EMISSION, P, N, D, INSIDE, SURFACE, DIRECTION, WEIGHT, PDF, LOBE, BELOW, EVENT, DIFFUSE, ABSORBED, LOBE_NAMES } from './materials.js';
 import { skyLight } from './sky.js';
 import { pathNumbers } from './scratch.js';
@@ -117,7 +117,7 @@ function primaryRay(camera, x, y) {
 /**
  * The nearest shape along `ray` past the scene's epsilon, its t kept in
  * `surface[P]` for surfaceAt; -1 for none. When the scene packs
- * (lib/kernel.js), each kind of shape is tested in numbers (the same t, bit
+ * (lib/tracing/kernel.js), each kind of shape is tested in numbers (the same t, bit
  * for bit) by a loop of its own: a call V8 does not inline boxes the numbers
  * it passes and returns, and one loop calling several shapes' tests is more
  * than V8 inlines: each loop is called apart (apart.js), compiled on its own

@@ -4,9 +4,9 @@
  * lesson's quadratic At² + Bt + C = 0 with y treated apart, and both may be
  * closed by flat discs (caps).
  */
-import { toVec3, Vec3 } from '../vec3.js';
-import { finiteNumber, bool } from '../check.js';
-import { Material, shapeOptions, materialOptions } from '../material.js';
+import { toVec3, Vec3 } from '../math/vec3.js';
+import { finiteNumber, bool } from '../text/check.js';
+import { Material, shapeOptions, materialOptions } from './material.js';
 import { vector, materialToJSON } from './json.js';
 import { axialTriangles } from './tessellate.js';
 import { P, N } from './packed.js';
@@ -179,7 +179,7 @@ export class AxialShape {
   /** The radius at its top: the cylinder's own, a cone's 0. */
   get topRadius() { return this.radius; }
 
-  /** Its scene JSON (lib/serialize.js). */
+  /** Its scene JSON (lib/scene/json.js). */
   toJSON() {
     return { type: /** @type {any} */ (this.constructor).type, name: this.name ?? '', center: vector(this.center), radius: this.radius, height: this.height, capped: this.capped, material: materialToJSON(this.material) };
   }

@@ -1,9 +1,9 @@
 /**
  * An axis-aligned box between corners `min` and `max` (the slab method).
  */
-import { toVec3, Vec3, set } from '../vec3.js';
-import { shapeOptions } from '../material.js';
-import { EPSILON } from '../constants.js';
+import { toVec3, Vec3, set } from '../math/vec3.js';
+import { shapeOptions } from './material.js';
+import { EPSILON } from '../math/constants.js';
 import { vector, materialToJSON } from './json.js';
 import { xyz, share, SURFACE } from './form.js';
 import { P, N, scratchNumbers } from './packed.js';
@@ -14,7 +14,7 @@ export class Box {
   /**
    * @param {number[]|{x,y,z}} min the corner with the smallest x, y, z
    * @param {number[]|{x,y,z}} max the opposite corner; larger on every axis
-   * @param {import('../material.js').Material|object} [material] a Material or its options, which may also give the shape a `name`
+   * @param {import('./material.js').Material|object} [material] a Material or its options, which may also give the shape a `name`
    * @example
    * const housing = new Box([-0.8, 3.4, -16.8], [0.8, 7.4, -16.2], { color: [0.15, 0.15, 0.16] }); // two opposite corners
    */
@@ -109,18 +109,18 @@ export class Box {
     kit.box(into, this.min, this.max, rgb);
   }
 
-  /** Its scene JSON (lib/serialize.js). */
+  /** Its scene JSON (lib/scene/json.js). */
   toJSON() {
     return { type: 'box', name: this.name ?? '', min: vector(this.min), max: vector(this.max), material: materialToJSON(this.material) };
   }
 
   /** Its type in scene JSON. */
   static get type() { return 'box'; }
-  /** The class's name in the code that builds it (lib/serialize.js, sceneToCode). */
+  /** The class's name in the code that builds it (lib/scene/json.js, sceneToCode). */
   static get codeName() { return 'Box'; }
   /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
   viewKey() { const a = this.min, b = this.max; return `${a.x},${a.y},${a.z},${b.x},${b.y},${b.z}`; }
-  /** Built again from its JSON, the same to the bit (lib/scene-edits.js need not build it twice). */
+  /** Built again from its JSON, the same to the bit (lib/scene/edits.js need not build it twice). */
   static get roundTrips() { return true; }
 
   /** Its JSON fields, in the order the constructor takes them. */

@@ -6,8 +6,8 @@
  * At² + Bt + C = 0 again, with A = Xd² + Zd² − k²·Yd², which may be 0 or
  * negative: a ray parallel to the cone's slope meets it once.
  */
-import { Vec3, set } from '../vec3.js';
-import { EPSILON } from '../constants.js';
+import { Vec3, set } from '../math/vec3.js';
+import { EPSILON } from '../math/constants.js';
 import { AxialShape, MAX_SIZE, axialPacked, solveQuadratic, recordSide, capCrossing, withinSpan, orNull } from './axial.js';
 
 const _roots = new Float64Array(2);
@@ -85,7 +85,7 @@ export class Cone extends AxialShape {
 
   /** Its type in scene JSON. */
   static get type() { return 'cone'; }
-  /** The class's name in the code that builds it (lib/serialize.js, sceneToCode). */
+  /** The class's name in the code that builds it (lib/scene/json.js, sceneToCode). */
   static get codeName() { return 'Cone'; }
 
   /** Its packed form for render()'s kernel (lib/shapes/packed.js): cx cy cz radius height capped (1 or 0). */

@@ -4,8 +4,8 @@
  * so A = Xd² + Zd², not 1. A ray straight along the axis has A = 0 and never
  * meets the curved side; only the caps can stop it.
  */
-import { Vec3, set } from '../vec3.js';
-import { EPSILON } from '../constants.js';
+import { Vec3, set } from '../math/vec3.js';
+import { EPSILON } from '../math/constants.js';
 import { AxialShape, axialPacked, solveQuadratic, recordSide, capCrossing, withinSpan, orNull } from './axial.js';
 
 const _roots = new Float64Array(2);
@@ -76,7 +76,7 @@ export class Cylinder extends AxialShape {
 
   /** Its type in scene JSON. */
   static get type() { return 'cylinder'; }
-  /** The class's name in the code that builds it (lib/serialize.js, sceneToCode). */
+  /** The class's name in the code that builds it (lib/scene/json.js, sceneToCode). */
   static get codeName() { return 'Cylinder'; }
 
   /** Its packed form for render()'s kernel (lib/shapes/packed.js): cx cy cz radius height capped (1 or 0). */

@@ -19,8 +19,8 @@ import { Cylinder } from './cylinder.js';
 import { Cone } from './cone.js';
 import { Triangle } from './triangle.js';
 import { Mesh } from './mesh.js';
-import { Material } from '../material.js';
-import { show } from '../check.js';
+import { Material } from './material.js';
+import { show } from '../text/check.js';
 
 /**
  * A shape class as the list knows it.

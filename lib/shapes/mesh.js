@@ -1,14 +1,14 @@
 /**
  * A triangle mesh (a bunny, a teapot): many triangles under a bounding
- * volume hierarchy (lib/bvh.js), so a ray tests the few triangles in the
+ * volume hierarchy (lib/shapes/bvh.js), so a ray tests the few triangles in the
  * boxes it passes through: the same nearest t as a loop over every triangle,
  * at a cost that grows with the log of their number.
  */
-import { toVec3, Vec3, set } from '../vec3.js';
-import { show } from '../check.js';
-import { shapeOptions } from '../material.js';
-import { EPSILON } from '../constants.js';
-import { BVH } from '../bvh.js';
+import { toVec3, Vec3, set } from '../math/vec3.js';
+import { show } from '../text/check.js';
+import { shapeOptions } from './material.js';
+import { EPSILON } from '../math/constants.js';
+import { BVH } from './bvh.js';
 import { intersectTriangle, FLAT, edgeScale, checkSides } from './triangle.js';
 import { parseOBJ } from './obj.js';
 import { materialToJSON } from './json.js';
@@ -19,7 +19,7 @@ export class Mesh {
   /**
    * @param {{ positions: number[][], cells: number[][] }} data the vertices `[x, y, z]`
    *   and the triangles, each 3 indices into positions, counterclockwise seen from the front
-   * @param {import('../material.js').Material|object} [options] a Material or its options, which may also give the shape a `name`
+   * @param {import('./material.js').Material|object} [options] a Material or its options, which may also give the shape a `name`
    * @example
    * // the Stanford bunny (npm package bunny): new Mesh(bunny, { color: [0.9, 0.8, 0.7] }), bunny being { positions, cells }
    * const tetra = new Mesh({ positions: [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], cells: [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]] });
@@ -58,7 +58,7 @@ export class Mesh {
    * into n − 2 triangles; other statements are passed over, and a malformed
    * `v` or `f` line is a RangeError naming its line (lib/shapes/obj.js).
    * @param {string} text
-   * @param {import('../material.js').Material|object} [options]
+   * @param {import('./material.js').Material|object} [options]
    */
   static fromOBJ(text, options) {
     return new Mesh(parseOBJ(text), options);
@@ -99,7 +99,7 @@ export class Mesh {
    * order; `bvh.box(i)` is each one's box), `triangleTests`, `triangle` (the
    * index into cells of the nearest hit, −1 when none), `t` (Infinity when
    * none) and `loopCost`, what a loop over every triangle would test.
-   * @param {import('../ray.js').Ray} ray
+   * @param {import('../math/ray.js').Ray} ray
    */
   walk(ray) {
     const stats = { boxTests: 0, boxesEntered: 0, entered: [], itemTests: 0 };
@@ -172,14 +172,14 @@ export class Mesh {
     kit.triangles(into, meshTriangles(this.vertices, this.indices), rgb);
   }
 
-  /** Its scene JSON (lib/serialize.js): its positions and cells. */
+  /** Its scene JSON (lib/scene/json.js): its positions and cells. */
   toJSON() {
     return { type: 'mesh', name: this.name ?? '', positions: this.positions.map((p) => [...p]), cells: this.cells.map((c) => [...c]), material: materialToJSON(this.material) };
   }
 
   /** Its type in scene JSON. */
   static get type() { return 'mesh'; }
-  /** The class's name in the code that builds it (lib/serialize.js, sceneToCode). */
+  /** The class's name in the code that builds it (lib/scene/json.js, sceneToCode). */
   static get codeName() { return 'Mesh'; }
   /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
   viewKey() { return meshKey(this); }
@@ -193,7 +193,7 @@ export class Mesh {
   }
 
   /**
-   * A mesh checked again as it is now (a restart's check, lib/scene-check.js):
+   * A mesh checked again as it is now (a restart's check, lib/scene/check.js):
    * when its positions and cells still hold what it was built from, nothing
    * is built (restarts built every BVH again: 4 s for a million triangles);
    * when they were changed in place, they are checked as the constructor

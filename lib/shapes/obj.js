@@ -6,7 +6,7 @@
  * materials) are skipped; a malformed `v` or `f` line is an error naming
  * its line number.
  */
-import { show } from '../check.js';
+import { show } from '../text/check.js';
 import { checkArea } from './triangle.js';
 
 /**

@@ -1,5 +1,5 @@
 /**
- * The packed layout render()'s fast kernel (lib/kernel.js) reads shapes in,
+ * The packed layout render()'s fast kernel (lib/tracing/kernel.js) reads shapes in,
  * in a module of its own below both the kernel and the shapes: each shape
  * class writes its own numbers and does its own numbers-only hit and normal,
  * and neither imports the other.
@@ -34,7 +34,7 @@ export const P = 0, N = 3;
 /**
  * Checks a module's literal copies of layout offsets against the module that
  * owns them, and throws at load when one differs, naming it. The hot loops
- * (lib/kernel.js, a shape's numbers-only hit and normal) keep copies because
+ * (lib/tracing/kernel.js, a shape's numbers-only hit and normal) keep copies because
  * V8 folds a module's own literal constant into them but reads an imported
  * one from its module at every use: render() of the class scene ran 6–7 %
  * slower on imported offsets (docs/performance.md).

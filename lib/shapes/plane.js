@@ -1,9 +1,9 @@
 /**
  * An infinite plane through `point` with unit `normal` (a floor, a wall).
  */
-import { toVec3, toUnit, Vec3, copy } from '../vec3.js';
-import { shapeOptions } from '../material.js';
-import { EPSILON } from '../constants.js';
+import { toVec3, toUnit, Vec3, copy } from '../math/vec3.js';
+import { shapeOptions } from './material.js';
+import { EPSILON } from '../math/constants.js';
 import { vector, materialToJSON } from './json.js';
 import { xyz, share, SURFACE } from './form.js';
 import { N } from './packed.js';
@@ -15,7 +15,7 @@ export class Plane {
   /**
    * @param {number[]|{x,y,z}} point any point on the plane
    * @param {number[]|{x,y,z}} normal the side it faces; normalised here, not zero-length
-   * @param {import('../material.js').Material|object} [material] a Material or its options, which may also give the shape a `name`
+   * @param {import('./material.js').Material|object} [material] a Material or its options, which may also give the shape a `name`
    * @example
    * const ground = new Plane([0, -4, 0], [0, 1, 0], { color: [0.5, 0.5, 0.5] }); // a point on it, the way it faces
    * const scene = new Scene().add(ground);
@@ -74,14 +74,14 @@ export class Plane {
     kit.ground(into, this.point, this.normal, 0, rgb);
   }
 
-  /** Its scene JSON (lib/serialize.js). */
+  /** Its scene JSON (lib/scene/json.js). */
   toJSON() {
     return { type: 'plane', name: this.name ?? '', point: vector(this.point), normal: vector(this.normal), material: materialToJSON(this.material) };
   }
 
   /** Its type in scene JSON. */
   static get type() { return 'plane'; }
-  /** The class's name in the code that builds it (lib/serialize.js, sceneToCode). */
+  /** The class's name in the code that builds it (lib/scene/json.js, sceneToCode). */
   static get codeName() { return 'Plane'; }
   /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
   viewKey() { const p = this.point, n = this.normal; return `${p.x},${p.y},${p.z},${n.x},${n.y},${n.z}`; }
@@ -115,7 +115,7 @@ const PACKED = Object.freeze({
   },
 });
 
-/** The ray–plane test in numbers only (Plane#hit, and lib/kernel.js): t > tMin where the ray meets the plane, or Infinity. */
+/** The ray–plane test in numbers only (Plane#hit, and lib/tracing/kernel.js): t > tMin where the ray meets the plane, or Infinity. */
 export function planeHit(px, py, pz, nx, ny, nz, ox, oy, oz, dx, dy, dz, tMin) {
   const denom = nx * dx + ny * dy + nz * dz;
   if (Math.abs(denom) < PARALLEL) return Infinity;

@@ -2,10 +2,10 @@
  * A sphere, and the lesson's two ways to intersect a ray with it:
  * the quadratic (A, B, C, discriminant) and the geometric route (L, tca, d², thc).
  */
-import { toVec3, Vec3, sub, normalize } from '../vec3.js';
-import { finiteNumber } from '../check.js';
-import { shapeOptions } from '../material.js';
-import { EPSILON } from '../constants.js';
+import { toVec3, Vec3, sub, normalize } from '../math/vec3.js';
+import { finiteNumber } from '../text/check.js';
+import { shapeOptions } from './material.js';
+import { EPSILON } from '../math/constants.js';
 import { vector, materialToJSON } from './json.js';
 import { xyz, share, SURFACE } from './form.js';
 import * as layout from './packed.js';
@@ -28,7 +28,7 @@ export class Sphere {
   /**
    * @param {number[]|{x,y,z}} center Sc
    * @param {number} radius Sr, > 0
-   * @param {import('../material.js').Material|object} [material] a Material or its options, which may also give the shape a `name`
+   * @param {import('./material.js').Material|object} [material] a Material or its options, which may also give the shape a `name`
    * @example
    * const ball = new Sphere([0, 0, -20], 4, { color: [1, 0.32, 0.36] });             // center, radius, material
    * const lamp = new Sphere([0, 20, -30], 3, { color: [0, 0, 0], emission: 1.2 }); // a light you can see
@@ -94,18 +94,18 @@ export class Sphere {
     kit.ball(into, this.center, this.radius, rgb, !this.material.isEmissive);
   }
 
-  /** Its scene JSON (lib/serialize.js). */
+  /** Its scene JSON (lib/scene/json.js). */
   toJSON() {
     return { type: 'sphere', name: this.name ?? '', center: vector(this.center), radius: this.radius, material: materialToJSON(this.material) };
   }
 
   /** Its type in scene JSON. */
   static get type() { return 'sphere'; }
-  /** The class's name in the code that builds it (lib/serialize.js, sceneToCode). */
+  /** The class's name in the code that builds it (lib/scene/json.js, sceneToCode). */
   static get codeName() { return 'Sphere'; }
   /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
   viewKey() { const c = this.center; return `${c.x},${c.y},${c.z},${this.radius}`; }
-  /** Built again from its JSON, the same to the bit (lib/scene-edits.js need not build it twice). */
+  /** Built again from its JSON, the same to the bit (lib/scene/edits.js need not build it twice). */
   static get roundTrips() { return true; }
 
   /** Its JSON fields, in the order the constructor takes them. */
@@ -147,7 +147,7 @@ const PACKED = Object.freeze({
 
 /**
  * The ray–sphere test in numbers only (Sphere#hit, and render()'s fast path
- * over packed scenes, lib/kernel.js): the geometric route, L = Sc − Ro,
+ * over packed scenes, lib/tracing/kernel.js): the geometric route, L = Sc − Ro,
  * tca = L·Rd, d² = L·L − tca², thc = √(r² − d²); the smallest t = tca ∓ thc
  * greater than tMin, or Infinity.
  */

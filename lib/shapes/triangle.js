@@ -7,9 +7,9 @@
  * sphere again: no single answer. The ray is inside when u ≥ 0, v ≥ 0 and
  * u + v ≤ 1.
  */
-import { toVec3, Vec3, sub, cross, dot, length, normalize, scale } from '../vec3.js';
-import { shapeOptions } from '../material.js';
-import { EPSILON } from '../constants.js';
+import { toVec3, Vec3, sub, cross, dot, length, normalize, scale } from '../math/vec3.js';
+import { shapeOptions } from './material.js';
+import { EPSILON } from '../math/constants.js';
 import { vector, materialToJSON } from './json.js';
 import { N, sideTables } from './packed.js';
 
@@ -43,7 +43,7 @@ export class Triangle {
    * @param {number[]|{x,y,z}} a a corner
    * @param {number[]|{x,y,z}} b the next corner
    * @param {number[]|{x,y,z}} c the last; a, b, c counterclockwise as seen from the front (the normal's side)
-   * @param {import('../material.js').Material|object} [options] a Material or its options, which may also give the shape a `name`
+   * @param {import('./material.js').Material|object} [options] a Material or its options, which may also give the shape a `name`
    * @example
    * const sail = new Triangle([-2, 0, -20], [2, 0, -20], [0, 4, -20], { color: 'white' });
    */
@@ -101,14 +101,14 @@ export class Triangle {
     kit.triangles(into, [a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z], rgb);
   }
 
-  /** Its scene JSON (lib/serialize.js). */
+  /** Its scene JSON (lib/scene/json.js). */
   toJSON() {
     return { type: 'triangle', name: this.name ?? '', a: vector(this.a), b: vector(this.b), c: vector(this.c), material: materialToJSON(this.material) };
   }
 
   /** Its type in scene JSON. */
   static get type() { return 'triangle'; }
-  /** The class's name in the code that builds it (lib/serialize.js, sceneToCode). */
+  /** The class's name in the code that builds it (lib/scene/json.js, sceneToCode). */
   static get codeName() { return 'Triangle'; }
   /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
   viewKey() { return [this.a, this.b, this.c].map((p) => `${p.x},${p.y},${p.z}`).join(','); }

@@ -2,11 +2,11 @@
  * What a student's page sends to the class board, checked field by field
  * before anything is stored: every field known, every text capped, every
  * number in its range, the answer line read by the lesson's own reader
- * (lib/activity.js) and judged again on the server (./judge.js): the page's
+ * (lib/lesson/activity.js) and judged again on the server (./judge.js): the page's
  * verdict is kept only as what the page said.
  */
-import { readAnswerLine, ANSWER_LINE_MAX } from '../../lib/activity.js';
-import { LESSONS, lessonOf } from '../../lib/lesson-tasks.js';
+import { readAnswerLine, ANSWER_LINE_MAX } from '../../lib/lesson/activity.js';
+import { LESSONS, lessonOf } from '../../lib/lesson/tasks.js';
 import { judgeAnswer } from './judge.js';
 
 /** A nickname's most characters (as the page's box allows). */

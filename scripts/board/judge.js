@@ -1,7 +1,7 @@
 /**
  * The server's own verdict on an answer of the pink-pixel activity (sketch
  * 04): the pixel's ray traced again in the class scene with the student's
- * camera, and judged by lib/activity.js, as the page does. The page's verdict
+ * camera, and judged by lib/lesson/activity.js, as the page does. The page's verdict
  * is never taken on trust.
  */
 import { Camera, classScene, inspectPixel, pinkPixelVerdict, answerText, toHex } from '../../lib/index.js';

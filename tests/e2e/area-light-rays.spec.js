@@ -5,7 +5,7 @@
 // (lit, or blocked on the ball) and, with several rays per pixel, the sub-pixel rays.
 import { test, expect } from '@playwright/test';
 import { clickPixel, expectQuietConsole, waitForDone } from './helpers.js';
-import { inspectPixel } from '../../lib/explain.js';
+import { inspectPixel } from '../../lib/lesson/inspect.js';
 import { penumbraScene, penumbraCamera, pointsSeen } from '../unit/penumbra-scene.js';
 
 const PAGE = '/tests/e2e/pages/area-light.html';

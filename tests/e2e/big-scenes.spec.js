@@ -7,12 +7,12 @@
 import { test, expect } from '@playwright/test';
 import { watchConsole, waitForDone, clickPixel } from './helpers.js';
 import { Scene, Sphere, Plane, Cylinder, Mesh, AreaLight, PointLight, classScene } from '../../lib/index.js';
-import { MAX_SHADOW_RAYS, MAX_SCENE_TRIANGLES } from '../../lib/scene-work.js';
-import { sceneToJSON } from '../../lib/serialize.js';
+import { MAX_SHADOW_RAYS, MAX_SCENE_TRIANGLES } from '../../lib/scene/work.js';
+import { sceneToJSON } from '../../lib/scene/json.js';
 import { encodeSceneLink } from '../../lib/p5/scene-link.js';
 import { SPHERE_ROWS } from '../../lib/p5/inspector.js';
 import { FORM_ROWS } from '../../lib/p5/scene-form.js';
-import { MAX_SCENE_OBJECTS } from '../../lib/scene-codec.js';
+import { MAX_SCENE_OBJECTS } from '../../lib/scene/codec.js';
 import { BOX_CHARS } from '../../lib/p5/text-box.js';
 
 const SPHERES = 1000;
@@ -282,7 +282,7 @@ test.describe(`${MAX_SCENE_OBJECTS.toLocaleString('en')} spheres (the limit) in 
   });
 });
 
-/** Scenes at the limits of work (lib/scene-work.js), each over a floor: the most shadow rays, the most triangles, the most cylinders. */
+/** Scenes at the limits of work (lib/scene/work.js), each over a floor: the most shadow rays, the most triangles, the most cylinders. */
 const AT_THE_LIMITS = {
   'the class scene (for comparison)': () => sceneToJSON(classScene()),
   'area lights': () => {

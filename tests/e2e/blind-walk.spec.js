@@ -3,7 +3,7 @@
 // and focus modes on the browser's accessibility tree). Each walk is held to
 // a budget: at most twice a sighted student's actions plus ten keys, a bounded
 // number of words, and on sketch 04 no answer said that would be judged
-// otherwise if typed (lib/activity.js judges it, as the class server does).
+// otherwise if typed (lib/lesson/activity.js judges it, as the class server does).
 import { test, expect } from '@playwright/test';
 import { expectQuietConsole, waitForDone } from './helpers.js';
 import { ScreenReader, countWords } from './screen-reader.js';

@@ -51,7 +51,7 @@ test('with a wall in front of a sphere, the diagrams explain the sphere the disc
   // The mode's colour there is that sphere's discriminant, with two roots: the colour of what the diagram draws.
   const [shown, expected] = await page.evaluate(async () => {
     const { Camera, intersectQuadratic } = await import('/lib/index.js');
-    const { discriminantColor } = await import('/lib/modes.js');
+    const { discriminantColor } = await import('/lib/tracing/modes.js');
     const c = document.querySelector('[data-tracer]');
     const shown = Array.from(c.getContext('2d').getImageData(16, 12, 1, 1).data.slice(0, 3));
     const { ray } = new Camera({ width: 32, height: 24, fov: 30 }).primaryRay(16, 12);

@@ -85,7 +85,7 @@ test('no WebGL2: renderGPU throws an Error saying so', async ({ page }) => {
   expect(message).toMatch(/needs WebGL2.*no WebGL2 context/);
 });
 
-test('each GLSL optics formula gives lib/optics.js\'s number on sampled inputs (a float texture read back)', async ({ page }) => {
+test('each GLSL optics formula gives lib/tracing/optics.js\'s number on sampled inputs (a float texture read back)', async ({ page }) => {
   await page.goto('/tests/e2e/pages/gpu-formulas.html');
   await page.waitForFunction(() => window.gpuFormulas);
   const names = await page.evaluate(() => window.gpuFormulas.names);

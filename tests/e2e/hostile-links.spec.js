@@ -6,9 +6,9 @@ import { test, expect } from '@playwright/test';
 import { readdirSync } from 'node:fs';
 import { watchConsole, waitForDone, clickPixel } from './helpers.js';
 import { EVERY_PAGE, PAGE_PARAMETERS } from './link-parameters.js';
-import { sceneToJSON } from '../../lib/serialize.js';
-import { classScene } from '../../lib/scenes.js';
-import { encodeScene } from '../../lib/scene-codec.js';
+import { sceneToJSON } from '../../lib/scene/json.js';
+import { classScene } from '../../lib/scene/examples.js';
+import { encodeScene } from '../../lib/scene/codec.js';
 import { encodeSceneLink } from '../../lib/p5/scene-link.js';
 
 const PAGES = ['index.html', ...readdirSync('sketches').filter((f) => f.endsWith('.html')).map((f) => `sketches/${f}`)];

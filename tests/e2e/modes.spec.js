@@ -2,7 +2,7 @@
 // screenshot of the traced canvas, its legend shown, and no console errors.
 import { test, expect } from '@playwright/test';
 import { expectCanvasScreenshot, watchConsole, waitForDone } from './helpers.js';
-import { MODES } from '../../lib/modes.js';
+import { MODES } from '../../lib/tracing/modes.js';
 
 for (const { name } of MODES) {
   test(`visual mode "${name}"`, async ({ page }) => {

@@ -4,8 +4,8 @@
 import { test, expect } from '@playwright/test';
 import { watchConsole, waitForDone } from './helpers.js';
 import { Scene, Sphere, classScene } from '../../lib/index.js';
-import { sceneToJSON } from '../../lib/serialize.js';
-import { encodeScene } from '../../lib/scene-codec.js';
+import { sceneToJSON } from '../../lib/scene/json.js';
+import { encodeScene } from '../../lib/scene/codec.js';
 import { encodeSceneLink, LINK_WARN_LENGTH } from '../../lib/p5/scene-link.js';
 
 const BOXES = '/sketches/05-value-boxes.html';

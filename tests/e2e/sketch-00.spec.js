@@ -1,10 +1,10 @@
 // Sketch 00: light-based tracing beside eye-based tracing. The photon picture
-// and its count come from the seed: the page shows what lib/photons.js gives
+// and its count come from the seed: the page shows what lib/tracing/photons.js gives
 // in Node for the same seed; the 3D view follows the selection.
 import { test, expect } from '@playwright/test';
-import { PhotonTracer } from '../../lib/photons.js';
-import { classScene } from '../../lib/scenes.js';
-import { Camera } from '../../lib/camera.js';
+import { PhotonTracer } from '../../lib/tracing/photons.js';
+import { classScene } from '../../lib/scene/examples.js';
+import { Camera } from '../../lib/math/camera.js';
 import { clickPixel, expectQuietConsole, waitForDone } from './helpers.js';
 
 const PAGE = '/sketches/00-light-or-eye.html';

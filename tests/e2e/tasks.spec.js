@@ -2,8 +2,8 @@
 // the progress kept in the browser, shown in the gallery, and read on the teacher's page.
 import { test, expect } from '@playwright/test';
 import { clickPixel, expectQuietConsole, waitForDone } from './helpers.js';
-import { progressCode } from '../../lib/tasks.js';
-import { LESSONS } from '../../lib/lesson-tasks.js';
+import { progressCode } from '../../lib/lesson/progress.js';
+import { LESSONS } from '../../lib/lesson/tasks.js';
 
 expectQuietConsole(test);
 

@@ -63,7 +63,7 @@ test('what a sketch needs is the view\'s own: the picture\'s bytes and the slow-
 });
 
 /**
- * Counts the page's inspectPixel calls: lib/explain.js as the dev server sends
+ * Counts the page's inspectPixel calls: lib/lesson/inspect.js as the dev server sends
  * it, with inspectPixel wrapped to count into window.inspections.
  */
 async function countInspections(page) {

@@ -27,7 +27,7 @@ const frameShown = (page) => page.locator('[data-stats]').evaluate((el) => Numbe
 
 /** Bytes of the paused canvas that differ from render() of the frame's moment on this thread. */
 const canvasVersusRender = (page) => page.evaluate(async () => {
-  const { render } = await import('/lib/render.js');
+  const { render } = await import('/lib/tracing/render.js');
   const c = document.querySelector('[data-tracer]');
   const shown = c.getContext('2d').getImageData(0, 0, c.width, c.height).data;
   const expected = render(window.sketch.sceneAt(Number(document.querySelector('[data-stats]').dataset.time)), window.sketch.camera);

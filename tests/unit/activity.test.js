@@ -1,7 +1,7 @@
 // The class activity's verdict on one pixel: pink, or its colour and what its ray hit.
 import { describe, it, expect } from 'vitest';
 import { Camera, classScene, inspectPixel } from '../../lib/index.js';
-import { pinkPixelVerdict, answerText, readAnswerLine } from '../../lib/activity.js';
+import { pinkPixelVerdict, answerText, readAnswerLine } from '../../lib/lesson/activity.js';
 
 const camera = new Camera({ width: 32, height: 24, fov: 30 }); // sketch 04's screen
 const verdictAt = (x, y) => pinkPixelVerdict(inspectPixel(classScene(), camera, x, y));
@@ -52,7 +52,7 @@ describe('the answer line', () => {
 
 describe('readAnswerLine on long pasted text', () => {
   it('reads a line in time proportional to its length, whatever its spacing', async () => {
-    const { answerLineBoxes } = await import('../../lib/activity.js');
+    const { answerLineBoxes } = await import('../../lib/lesson/activity.js');
     const { timeRatio } = await import('./linear-time.js');
     const spaces = timeRatio(answerLineBoxes, (n) => `pixel 1,1 h 1 v 1${' '.repeat(n)}x`);
     const pad = (n) => ' '.repeat(n / 4);
@@ -62,7 +62,7 @@ describe('readAnswerLine on long pasted text', () => {
   });
 
   it('still reads a line with long runs of spaces up to the cap, and is null past it (an ordinary paste)', async () => {
-    const { ANSWER_LINE_MAX } = await import('../../lib/activity.js');
+    const { ANSWER_LINE_MAX } = await import('../../lib/lesson/activity.js');
     const wide = `pixel 1,2${' '.repeat(150)}h 3 v 4`;
     expect(wide.length).toBeLessThanOrEqual(ANSWER_LINE_MAX);
     expect(readAnswerLine(wide)).toEqual({ x: '1', y: '2', h: '3', v: '4' });

@@ -2,7 +2,7 @@
 // at most PIPELINE frames under way, and what is shown is render()'s picture of its moment.
 import { describe, it, expect, vi, afterEach } from 'vitest';
 import { SceneAnimation, PIPELINE } from '../../lib/p5/animation.js';
-import { workerHandler } from '../../lib/workers/split.js';
+import { workerHandler } from '../../lib/tracing/workers/split.js';
 import { render, Camera, classSceneAt } from '../../lib/index.js';
 
 /** A Web Worker stand-in that holds its jobs until run() (the real worker code, on structured clones). */

@@ -1,6 +1,6 @@
 import { describe, it, expect } from 'vitest';
 import { Scene, Sphere, Plane, PointLight, Camera, render, inspectPixel } from '../../lib/index.js';
-import { AreaLight, concentric } from '../../lib/area-light.js';
+import { AreaLight, concentric } from '../../lib/lights/area-light.js';
 
 const floorScene = (light) => new Scene({ background: [0.8, 0.9, 1], ambient: 0.1 })
   .add(new Plane([0, -4, 0], [0, 1, 0], { color: [0.9, 0.9, 0.9] }))

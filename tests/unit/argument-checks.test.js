@@ -3,8 +3,8 @@
 // bright that colour × intensity could overflow to NaN.
 import { describe, it, expect } from 'vitest';
 import { Scene, Sphere, PointLight, Camera, Material, render, inspectPixel } from '../../lib/index.js';
-import { MAX_CAMERA_SIDE, MAX_CAMERA_PIXELS } from '../../lib/camera.js';
-import { MAX_COLOR, toColor } from '../../lib/color.js';
+import { MAX_CAMERA_SIDE, MAX_CAMERA_PIXELS } from '../../lib/math/camera.js';
+import { MAX_COLOR, toColor } from '../../lib/math/color.js';
 
 const camera = new Camera({ width: 8, height: 6 });
 const scene = new Scene().add(new Sphere([0, 0, -10], 2)).add(new PointLight([5, 5, 0]));

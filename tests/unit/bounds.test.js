@@ -3,8 +3,8 @@
 import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
 import { Camera, Scene, Sphere, Box, Plane, render, classScene } from '../../lib/index.js';
-import { renderPixel } from '../../lib/render.js';
-import { screenBounds, tileCandidates, TILE } from '../../lib/bounds.js';
+import { renderPixel } from '../../lib/tracing/render.js';
+import { screenBounds, tileCandidates, TILE } from '../../lib/tracing/bounds.js';
 
 const coord = fc.double({ min: -30, max: 30, noNaN: true });
 

@@ -1,7 +1,7 @@
 import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
 import { Camera } from '../../lib/index.js';
-import { angles } from '../../lib/camera.js';
+import { angles } from '../../lib/math/camera.js';
 
 const DEG = Math.PI / 180;
 

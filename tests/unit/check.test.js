@@ -1,14 +1,14 @@
 import { describe, it, expect } from 'vitest';
-import { checkOptions, editDistance, closestName } from '../../lib/check.js';
-import { Material } from '../../lib/material.js';
-import { Scene } from '../../lib/scene.js';
-import { Camera } from '../../lib/camera.js';
-import { PointLight } from '../../lib/lights.js';
+import { checkOptions, editDistance, closestName } from '../../lib/text/check.js';
+import { Material } from '../../lib/shapes/material.js';
+import { Scene } from '../../lib/scene/scene.js';
+import { Camera } from '../../lib/math/camera.js';
+import { PointLight } from '../../lib/lights/point-light.js';
 import { Sphere } from '../../lib/shapes/sphere.js';
 import { Plane } from '../../lib/shapes/plane.js';
 import { Box } from '../../lib/shapes/box.js';
-import { ProgressiveRenderer } from '../../lib/progressive.js';
-import { ParallelRenderer } from '../../lib/workers/parallel.js';
+import { ProgressiveRenderer } from '../../lib/tracing/frames.js';
+import { ParallelRenderer } from '../../lib/tracing/workers/parallel.js';
 
 describe('editDistance', () => {
   it('counts inserts, deletes, replacements and swapped neighbours', () => {

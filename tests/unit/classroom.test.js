@@ -23,7 +23,7 @@ describe('the teacher\'s files', () => {
 
   it('leave every other file alone', () => {
     for (const url of ['/', '/sketches/08-homework-traffic-signal.js', '/sketches/solutions-notes.html', '/testsuite.html',
-      '/lib/homework.js', '/api/', '/sketches/08-homework-traffic-signal.html?solution=1', '/%E0%A4%A',
+      '/lib/lesson/homework.js', '/api/', '/sketches/08-homework-traffic-signal.html?solution=1', '/%E0%A4%A',
       '/tests/e2e/__screenshots__/gallery.spec.js/05-value-boxes-view0.png?import']) { // the gallery's thumbnails
       expect(isTeacherOnly(url, ROOT), url).toBe(false);
     }

@@ -1,6 +1,6 @@
 import { describe, it, expect } from 'vitest';
 import { toColor, toHex, colorName } from '../../lib/index.js';
-import { colorToHex } from '../../lib/color.js';
+import { colorToHex } from '../../lib/math/color.js';
 
 const close = (actual, expected) => expected.forEach((c, i) => expect(actual[i]).toBeCloseTo(c, 12));
 
@@ -103,7 +103,7 @@ describe('pink through the shading', () => {
 
 describe('a misspelt colour name', () => {
   it('names the nearest colour name, and none when nothing is near', async () => {
-    const { toColor } = await import('../../lib/color.js');
+    const { toColor } = await import('../../lib/math/color.js');
     expect(() => toColor('pinkk')).toThrow(`color must be a colour like '#ff5160', 'rgb(255, 81, 96)' or 'pink', got "pinkk" (did you mean 'pink'?)`);
     expect(() => toColor('Yelow', 'material.color')).toThrow(/^material\.color must be .* got "yelow" \(did you mean 'yellow'\?\)$/);
     expect(() => toColor('pinkish')).toThrow(/got "pinkish"$/);

@@ -1,6 +1,6 @@
 import { describe, it, expect } from 'vitest';
 import { Ray, EPSILON } from '../../lib/index.js';
-import { Vec3 } from '../../lib/vec3.js';
+import { Vec3 } from '../../lib/math/vec3.js';
 import { Cone } from '../../lib/shapes/cone.js';
 import { seeded, convexInterval, nearestOf, randomDirection } from './convex-reference.js';
 

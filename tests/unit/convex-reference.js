@@ -7,8 +7,8 @@
  * No quadratic, no discriminant: nothing shared with the code under test.
  */
 
-/** The kit's seeded PRNG (mulberry32, lib/photons.js): the same "random" rays every run. It is not under test here. */
-export { seededRandom as seeded } from '../../lib/photons.js';
+/** The kit's seeded PRNG (mulberry32, lib/tracing/photons.js): the same "random" rays every run. It is not under test here. */
+export { seededRandom as seeded } from '../../lib/tracing/photons.js';
 
 /** The t where a convex `g` first and last is ≤ 0 along the ray, within ±span, or null when it never is. */
 export function convexInterval(g, ray, span = 1e4) {

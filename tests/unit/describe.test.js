@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import { describeScene, pictureRows, sampleScene } from '../../lib/describe.js';
+import { describeScene, pictureRows, sampleScene } from '../../lib/lesson/describe.js';
 import { Scene, Sphere, Plane, Box, PointLight, Camera, classScene, render } from '../../lib/index.js';
 
 const camera = new Camera({ width: 64, height: 48 });

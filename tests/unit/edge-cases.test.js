@@ -1,7 +1,7 @@
 // Numerical edge cases handled on purpose: directions with huge or tiny components.
 import { describe, it, expect } from 'vitest';
 import { Ray, Plane, Scene, Sphere, Box, PointLight, intersectQuadratic, intersectGeometric } from '../../lib/index.js';
-import { trace } from '../../lib/trace.js';
+import { trace } from '../../lib/tracing/trace.js';
 
 describe('numerical edge cases', () => {
   it('a direction with huge components is normalised, not zeroed', () => {

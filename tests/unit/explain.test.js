@@ -1,6 +1,6 @@
 import { describe, it, expect } from 'vitest';
 import { Scene, Sphere, Plane, Box, PointLight, Camera, classScene, inspectPixel, colorName, render } from '../../lib/index.js';
-import { angles } from '../../lib/camera.js';
+import { angles } from '../../lib/math/camera.js';
 import { penumbraScene, penumbraCamera, pointsSeen, penumbraPixel } from './penumbra-scene.js';
 
 describe('inspectPixel: the full record of one pixel', () => {

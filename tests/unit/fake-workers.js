@@ -1,5 +1,5 @@
 /** Stand-ins for Web Workers in Node: the real worker code, run on structured clones of the messages. */
-import { workerHandler } from '../../lib/workers/split.js';
+import { workerHandler } from '../../lib/tracing/workers/split.js';
 
 /**
  * A stand-in for a Web Worker: runs the real worker code (workerHandler)

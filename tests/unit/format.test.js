@@ -1,7 +1,7 @@
 // Numbers as the kit prints them: each formatter prints what the pages, the
 // legends and the screenshots have always shown.
 import { describe, it, expect } from 'vitest';
-import { formatLabel, sign, formatNumber, formatVector, formatAngle, formatRounded, formatPowerOfTen, formatRate } from '../../lib/format.js';
+import { formatLabel, sign, formatNumber, formatVector, formatAngle, formatRounded, formatPowerOfTen, formatRate } from '../../lib/text/format.js';
 
 describe('formatLabel, the diagrams\' labels', () => {
   it('rounds to one decimal (or `digits`) with a real minus sign, and never prints −0', () => {

@@ -5,9 +5,9 @@
 import { describe, it, expect } from 'vitest';
 import { classScene, Scene, Sphere, Mesh, Triangle, PointLight, Camera, renderGPU } from '../../lib/index.js';
 import { gpuScene, inRows } from '../../lib/gpu/upload.js';
-import { packScene } from '../../lib/kernel.js';
+import { packScene } from '../../lib/tracing/kernel.js';
 import { LIGHT, LIGHT_EMISSION } from '../../lib/lights/packed.js';
-import { MATERIAL_NUMBERS, MATERIAL_AT } from '../../lib/material.js';
+import { MATERIAL_NUMBERS, MATERIAL_AT } from '../../lib/shapes/material.js';
 import { SHAPE, KIND } from '../../lib/shapes/packed.js';
 import { SHAPE_CODES, ROW, kernelSource } from '../../lib/gpu/glsl-kernel.js';
 

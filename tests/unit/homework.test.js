@@ -2,7 +2,7 @@
 // with the right message, and each kind of mistake fails on its own check.
 import { describe, test, expect, vi } from 'vitest';
 import { Sphere, Camera, Scene, PointLight, sceneToJSON, trafficSignalScene, trafficSignalCamera, rearLightsScene, rearLightsCamera } from '../../lib/index.js';
-import { checkTrafficSignal, checkRearLights, lightColor, findLights, solutionParameter } from '../../lib/homework.js';
+import { checkTrafficSignal, checkRearLights, lightColor, findLights, solutionParameter } from '../../lib/lesson/homework.js';
 
 // The sketches are p5 sketches; their scenes are plain library code. Without
 // a browser, p5 and the adapter are stand-ins that do nothing.

@@ -1,9 +1,9 @@
 // Hostile scene JSON: deep nesting, huge arrays, huge keys. Each gives a
 // TypeError/RangeError that names the path, in a message of a few lines.
 import { describe, it, expect } from 'vitest';
-import { sceneFromJSON, cameraFromJSON, MAX_JSON_DEPTH } from '../../lib/serialize.js';
-import { decodeScene } from '../../lib/scene-codec.js';
-import { show, SHOW_MAX } from '../../lib/check.js';
+import { sceneFromJSON, cameraFromJSON, MAX_JSON_DEPTH } from '../../lib/scene/json.js';
+import { decodeScene } from '../../lib/scene/codec.js';
+import { show, SHOW_MAX } from '../../lib/text/check.js';
 
 const SHORT = 400; // no message longer than this
 
@@ -47,7 +47,7 @@ describe('deep nesting', () => {
   });
 
   it('the reading before JSON.parse names the same path as the walk after it, brackets and quotes in text passed over', async () => {
-    const { tooDeepAt } = await import('../../lib/json-depth.js');
+    const { tooDeepAt } = await import('../../lib/scene/json-depth.js');
     const text = `{"q[":[1,"[[{\\"[",{"b":2,"c":[0,0,${nested(40)}]}]}`; // a bracket in a key, brackets and an escaped quote in a string
     expect(tooDeepAt(text, 32)).toBe(`q[[2].c[2]${'[0]'.repeat(28)}`);
     expect(errorOf(() => sceneFromJSON(JSON.parse(text))).message).toBe(`scene is nested more than 32 levels deep, at ${tooDeepAt(text, 32)}`);

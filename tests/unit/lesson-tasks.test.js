@@ -1,7 +1,7 @@
 // The lesson pages' tasks: their shape, and the predicates against real scenes and records.
 import { describe, it, expect } from 'vitest';
 import { Camera, Scene, Sphere, Plane, Cylinder, Cone, Triangle, Mesh, PointLight, AreaLight, SpotLight, classScene, inspectPixel } from '../../lib/index.js';
-import { LESSONS, lessonOf, sphereTest, nearZeroDiscriminant, eyeInside, hasAcne, inShadowOf, shadowsOnOthers } from '../../lib/lesson-tasks.js';
+import { LESSONS, lessonOf, sphereTest, nearZeroDiscriminant, eyeInside, hasAcne, inShadowOf, shadowsOnOthers } from '../../lib/lesson/tasks.js';
 
 const select = (scene, camera, x, y) => ({ type: 'select', record: inspectPixel(scene, camera, x, y), scene, camera, parts: {}, mode: 'shaded', order: 'coarse' });
 const task = (page, id) => lessonOf(page).tasks.find((t) => t.id === id);

@@ -1,7 +1,7 @@
 import { describe, it, expect } from 'vitest';
 import { PointLight, SpotLight, AreaLight, Scene, Sphere, Box, Plane, Camera, Ray, render, sceneToJSON, sceneFromJSON, sceneToCode } from '../../lib/index.js';
-import { trace } from '../../lib/trace.js';
-import { falloff } from '../../lib/optics.js';
+import { trace } from '../../lib/tracing/trace.js';
+import { falloff } from '../../lib/tracing/optics.js';
 
 describe('PointLight', () => {
   it('has a position, a colour and an intensity; emits colour × intensity', () => {

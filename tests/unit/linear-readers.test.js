@@ -7,14 +7,14 @@
 import { describe, it, expect } from 'vitest';
 import { timeRatio, quietly } from './linear-time.js';
 import { parseOBJ } from '../../lib/shapes/obj.js';
-import { sceneFromJSON, cameraFromJSON } from '../../lib/serialize.js';
-import { decodeScene } from '../../lib/scene-codec.js';
-import { toColor } from '../../lib/color.js';
-import { readProgressCode, readProgressLine, parseProgress } from '../../lib/tasks.js';
-import { LESSONS } from '../../lib/lesson-tasks.js';
-import { readNumber, readColor } from '../../lib/values.js';
-import { answerLineBoxes } from '../../lib/activity.js';
-import { solutionParameter } from '../../lib/homework.js';
+import { sceneFromJSON, cameraFromJSON } from '../../lib/scene/json.js';
+import { decodeScene } from '../../lib/scene/codec.js';
+import { toColor } from '../../lib/math/color.js';
+import { readProgressCode, readProgressLine, parseProgress } from '../../lib/lesson/progress.js';
+import { LESSONS } from '../../lib/lesson/tasks.js';
+import { readNumber, readColor } from '../../lib/scene/values.js';
+import { answerLineBoxes } from '../../lib/lesson/activity.js';
+import { solutionParameter } from '../../lib/lesson/homework.js';
 import { exampleInLink } from '../../lib/p5/example-picker.js';
 
 const LINEAR = 400; // × for 100 × the text: linear is ~100, quadratic ~10,000

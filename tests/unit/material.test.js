@@ -1,9 +1,9 @@
 import { describe, it, expect } from 'vitest';
 import { Material, Sphere, Plane, Box, PointLight, Scene } from '../../lib/index.js';
-import { MATERIAL_FIELDS, MATERIAL_NUMBERS, MATERIAL_AT, packMaterial } from '../../lib/material.js';
+import { MATERIAL_FIELDS, MATERIAL_NUMBERS, MATERIAL_AT, packMaterial } from '../../lib/shapes/material.js';
 import { materialToJSON } from '../../lib/shapes/json.js';
-import { sceneFromJSON, sceneToCode } from '../../lib/serialize.js';
-import { packScene } from '../../lib/kernel.js';
+import { sceneFromJSON, sceneToCode } from '../../lib/scene/json.js';
+import { packScene } from '../../lib/tracing/kernel.js';
 
 describe('Material', () => {
   it('defaults: white, no emission, no reflection, no transparency', () => {

@@ -1,7 +1,7 @@
 import { describe, it, expect } from 'vitest';
 import bunny from 'bunny';
 import { Ray, EPSILON } from '../../lib/index.js';
-import { Vec3 } from '../../lib/vec3.js';
+import { Vec3 } from '../../lib/math/vec3.js';
 import { Mesh } from '../../lib/shapes/mesh.js';
 import { triangleHit, Triangle } from '../../lib/shapes/triangle.js';
 import { seeded, randomDirection } from './convex-reference.js';

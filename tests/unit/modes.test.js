@@ -1,14 +1,14 @@
 import { describe, it, expect } from 'vitest';
-import { modeShader, modeLegend, MODES, discriminantColor, angleColor, angleRange, depthRange, isHuge, sphereFocus } from '../../lib/modes.js';
+import { modeShader, modeLegend, MODES, discriminantColor, angleColor, angleRange, depthRange, isHuge, sphereFocus } from '../../lib/tracing/modes.js';
 import { focusTest } from '../../lib/p5/diagrams/focus.js';
 import { Plane } from '../../lib/shapes/plane.js';
 import { Box } from '../../lib/shapes/box.js';
-import { Camera } from '../../lib/camera.js';
-import { Scene } from '../../lib/scene.js';
+import { Camera } from '../../lib/math/camera.js';
+import { Scene } from '../../lib/scene/scene.js';
 import { Sphere, intersectQuadratic } from '../../lib/shapes/sphere.js';
-import { render } from '../../lib/render.js';
-import { classScene } from '../../lib/scenes.js';
-import { inspectPixel } from '../../lib/explain.js';
+import { render } from '../../lib/tracing/render.js';
+import { classScene } from '../../lib/scene/examples.js';
+import { inspectPixel } from '../../lib/lesson/inspect.js';
 
 const camera = new Camera({ width: 64, height: 48, fov: 30 });
 const scene = classScene();

@@ -8,18 +8,18 @@
  */
 import { describe, it, expect } from 'vitest';
 import { Scene, Sphere, Plane, Camera, render, inspectPixel } from '../../lib/index.js';
-import { sceneToJSON, sceneFromJSON, sceneToCode } from '../../lib/serialize.js';
-import { renderPixel } from '../../lib/render.js';
-import { packScene } from '../../lib/kernel.js';
-import { checkScene } from '../../lib/scene-check.js';
-import { raySegments, sceneBounds } from '../../lib/rays3d.js';
+import { sceneToJSON, sceneFromJSON, sceneToCode } from '../../lib/scene/json.js';
+import { renderPixel } from '../../lib/tracing/render.js';
+import { packScene } from '../../lib/tracing/kernel.js';
+import { checkScene } from '../../lib/scene/check.js';
+import { raySegments, sceneBounds } from '../../lib/lesson/rays3d.js';
 import { registerLight } from '../../lib/lights/index.js';
 import { LIGHT, POSITION, LIGHT_EMISSION, ATTENUATION, IS_SPOT } from '../../lib/lights/packed.js';
 import { lightColor, lightIntensity, lightName, definedOnly } from '../../lib/lights/checks.js';
 import { vector } from '../../lib/shapes/json.js';
 import { buildMeshes, shapesKey, lightLoops } from '../../lib/p5/scene-view-mesh.js';
-import { toVec3, Vec3 } from '../../lib/vec3.js';
-import { checkOptions } from '../../lib/check.js';
+import { toVec3, Vec3 } from '../../lib/math/vec3.js';
+import { checkOptions } from '../../lib/text/check.js';
 
 /** A strip of light from `a` to `b` (a fluorescent tube), lit from `samples` fixed points along it. */
 class StripLight {

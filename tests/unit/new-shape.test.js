@@ -6,20 +6,20 @@
  */
 import { describe, it, expect } from 'vitest';
 import { Scene, Sphere, PointLight, Camera, render, inspectPixel } from '../../lib/index.js';
-import { sceneToJSON, sceneFromJSON, sceneToCode } from '../../lib/serialize.js';
-import { renderPixel } from '../../lib/render.js';
-import { packScene } from '../../lib/kernel.js';
-import { screenBounds } from '../../lib/bounds.js';
-import { checkScene } from '../../lib/scene-check.js';
+import { sceneToJSON, sceneFromJSON, sceneToCode } from '../../lib/scene/json.js';
+import { renderPixel } from '../../lib/tracing/render.js';
+import { packScene } from '../../lib/tracing/kernel.js';
+import { screenBounds } from '../../lib/tracing/bounds.js';
+import { checkScene } from '../../lib/scene/check.js';
 import { registerShape } from '../../lib/shapes/index.js';
 import { N } from '../../lib/shapes/packed.js';
 import { materialToJSON, vector } from '../../lib/shapes/json.js';
 import { xyz } from '../../lib/shapes/form.js';
-import { formTypes, tableColumns, fieldText } from '../../lib/scene-fields.js';
-import { toVec3, Vec3, set } from '../../lib/vec3.js';
-import { finiteNumber } from '../../lib/check.js';
-import { shapeOptions } from '../../lib/material.js';
-import { EPSILON } from '../../lib/constants.js';
+import { formTypes, tableColumns, fieldText } from '../../lib/scene/fields.js';
+import { toVec3, Vec3, set } from '../../lib/math/vec3.js';
+import { finiteNumber } from '../../lib/text/check.js';
+import { shapeOptions } from '../../lib/shapes/material.js';
+import { EPSILON } from '../../lib/math/constants.js';
 
 /** The numbers-only test of a flat disc facing +y, shared by hit and the packed form. */
 function discHit(cx, cy, cz, r, ox, oy, oz, dx, dy, dz, tMin) {

@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import { clamp, niceTicks } from '../../lib/numbers.js';
+import { clamp, niceTicks } from '../../lib/math/numbers.js';
 
 describe('clamp', () => {
   it('holds a value within lo and hi, and leaves one inside alone', () => {

@@ -1,10 +1,10 @@
-// The leaf formulas trace.js and the fast path share (lib/optics.js), each
+// The leaf formulas trace.js and the fast path share (lib/tracing/optics.js), each
 // against what the lesson says it is.
 import { describe, it, expect } from 'vitest';
-import { lambert, specular, lightShare, refract, schlick, fresnel, mix } from '../../lib/optics.js';
-import { Vec3, reflect, reflectInto } from '../../lib/vec3.js';
+import { lambert, specular, lightShare, refract, schlick, fresnel, mix } from '../../lib/tracing/optics.js';
+import { Vec3, reflect, reflectInto } from '../../lib/math/vec3.js';
 
-describe('lib/optics.js', () => {
+describe('lib/tracing/optics.js', () => {
   it("Lambert's cos is N·L: 1 head on, 0 edge on, negative from behind", () => {
     expect(lambert(0, 1, 0, 0, 1, 0)).toBe(1);
     expect(lambert(0, 1, 0, 1, 0, 0)).toBe(0);

@@ -34,7 +34,7 @@ describe('npm pack', () => {
 
   it('holds the library, its types, the README and the licence, and no tests', () => {
     for (const file of ['package.json', 'README.md', 'LICENSE', 'lib/index.js', 'lib/p5/index.js', 'lib/p5/style.css',
-      'lib/workers/render-worker.js', 'types/index.d.ts', 'types/p5/index.d.ts', 'types/shapes/sphere.d.ts']) {
+      'lib/tracing/workers/render-worker.js', 'types/index.d.ts', 'types/p5/index.d.ts', 'types/shapes/sphere.d.ts']) {
       expect(files, file).toContain(file);
     }
     const strays = files.filter((f) => !/^(lib|types)\//.test(f) && !['package.json', 'README.md', 'LICENSE'].includes(f));

@@ -3,7 +3,7 @@
 // shadow rays that reach the disc themselves, with the sphere's own formula,
 // to check what the record says.
 import { Scene, Sphere, Plane, Camera, inspectPixel } from '../../lib/index.js';
-import { AreaLight } from '../../lib/area-light.js';
+import { AreaLight } from '../../lib/lights/area-light.js';
 
 export const BALL = { center: [0, 0, -20], radius: 3 };
 

@@ -1,10 +1,10 @@
 import { describe, it, expect } from 'vitest';
-import { PhotonTracer, seededRandom } from '../../lib/photons.js';
-import { classScene } from '../../lib/scenes.js';
-import { Camera } from '../../lib/camera.js';
-import { Scene } from '../../lib/scene.js';
+import { PhotonTracer, seededRandom } from '../../lib/tracing/photons.js';
+import { classScene } from '../../lib/scene/examples.js';
+import { Camera } from '../../lib/math/camera.js';
+import { Scene } from '../../lib/scene/scene.js';
 import { Sphere } from '../../lib/shapes/sphere.js';
-import { PointLight } from '../../lib/lights.js';
+import { PointLight } from '../../lib/lights/point-light.js';
 
 const camera = () => new Camera({ width: 16, height: 12 });
 

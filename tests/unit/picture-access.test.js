@@ -2,7 +2,7 @@
 // coordinates, the next pixel of a colour, a map's words, and where the 3D view
 // looks from.
 import { describe, it, expect } from 'vitest';
-import { pixelNames, pixelRows, nextPixelNamed, COLOR_NAMES } from '../../lib/describe.js';
+import { pixelNames, pixelRows, nextPixelNamed, COLOR_NAMES } from '../../lib/lesson/describe.js';
 import { mapSummary, mapValue } from '../../lib/p5/map-words.js';
 import { orbitWords } from '../../lib/p5/scene-view-words.js';
 import { Camera, Scene, Sphere, PointLight, classScene, render, inspectPixel, colorName } from '../../lib/index.js';

@@ -1,8 +1,8 @@
 import { describe, it, expect } from 'vitest';
-import { WorkerProgressiveRenderer, MIN_PIXELS } from '../../lib/workers/progressive.js';
-import { ProgressiveRenderer } from '../../lib/progressive.js';
-import { render } from '../../lib/render.js';
-import { modeShader } from '../../lib/modes.js';
+import { WorkerProgressiveRenderer, MIN_PIXELS } from '../../lib/tracing/workers/worker-frames.js';
+import { ProgressiveRenderer } from '../../lib/tracing/frames.js';
+import { render } from '../../lib/tracing/render.js';
+import { modeShader } from '../../lib/tracing/modes.js';
 import { Camera, classScene, classSceneAt } from '../../lib/index.js';
 import { fakeWorkers, silentWorker } from './fake-workers.js';
 

@@ -1,7 +1,7 @@
 import { describe, it, expect } from 'vitest';
-import { ProgressiveRenderer, CHECK_EVERY, COARSE_PASSES } from '../../lib/progressive.js';
+import { ProgressiveRenderer, CHECK_EVERY, COARSE_PASSES } from '../../lib/tracing/frames.js';
 import { render, Camera, Scene, Sphere, Plane, Box, PointLight, classScene } from '../../lib/index.js';
-import { renderPixel } from '../../lib/render.js';
+import { renderPixel } from '../../lib/tracing/render.js';
 
 const ORDERS = ['coarse', 'scanline', 'slow'];
 

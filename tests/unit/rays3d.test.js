@@ -1,16 +1,16 @@
 import { describe, it, expect } from 'vitest';
-import { Camera } from '../../lib/camera.js';
-import { Scene } from '../../lib/scene.js';
+import { Camera } from '../../lib/math/camera.js';
+import { Scene } from '../../lib/scene/scene.js';
 import { Sphere, intersectGeometric } from '../../lib/shapes/sphere.js';
-import { PointLight } from '../../lib/lights.js';
-import { inspectPixel } from '../../lib/explain.js';
-import { classScene } from '../../lib/scenes.js';
-import { Vec3, sub, normalize, length, dot, distance } from '../../lib/vec3.js';
+import { PointLight } from '../../lib/lights/point-light.js';
+import { inspectPixel } from '../../lib/lesson/inspect.js';
+import { classScene } from '../../lib/scene/examples.js';
+import { Vec3, sub, normalize, length, dot, distance } from '../../lib/math/vec3.js';
 import {
   imagePoint, pixelCenter, imagePlane, pixelGrid, frustum, pickImagePlane, raySegments,
   geometricConstruction, orbitCamera, screenRay, projectToScreen, sceneBounds,
   sampleSegments,
-} from '../../lib/rays3d.js';
+} from '../../lib/lesson/rays3d.js';
 import { lightsOf } from '../../lib/lights/index.js';
 import { penumbraScene, penumbraCamera, pointsSeen, penumbraPixel, BALL } from './penumbra-scene.js';
 

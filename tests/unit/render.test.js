@@ -1,6 +1,6 @@
 import { describe, it, expect } from 'vitest';
 import { Scene, Sphere, Plane, Box, PointLight, Camera, classScene, render, inspectPixel } from '../../lib/index.js';
-import { renderPixel, writePixel } from '../../lib/render.js';
+import { renderPixel, writePixel } from '../../lib/tracing/render.js';
 
 function planeBoxScene() {
   const scene = new Scene({ background: 'skyblue', ambient: 0.1 });

@@ -2,9 +2,9 @@
 // checked again by restart(), with the constructors' own messages; a refused
 // restart leaves the last picture as it was.
 import { describe, it, expect, vi } from 'vitest';
-import { ProgressiveRenderer } from '../../lib/progressive.js';
+import { ProgressiveRenderer } from '../../lib/tracing/frames.js';
 import { render, Camera, Scene, Sphere, Plane, Box, Mesh, PointLight, SpotLight, AreaLight, classScene } from '../../lib/index.js';
-import * as sceneCheck from '../../lib/scene-check.js';
+import * as sceneCheck from '../../lib/scene/check.js';
 
 const camera = () => new Camera({ width: 16, height: 12 });
 

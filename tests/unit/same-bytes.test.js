@@ -1,7 +1,7 @@
 // The renderer's shortcuts must never show: over random scenes (spheres,
 // planes, boxes, cylinders, cones, triangles, meshes, point lights and emissive shapes, mirrors, glass, shadows and
 // highlights on or off) and random cameras, render() — which tests each
-// primary ray only against its tile's candidate shapes (lib/bounds.js) — gives
+// primary ray only against its tile's candidate shapes (lib/tracing/bounds.js) — gives
 // the very bytes of the plain reference, every pixel traced against every
 // shape; so does every visual mode, however its pictures are traced; and so
 // does a ProgressiveRenderer's finished buffer, in every order; and the
@@ -9,14 +9,14 @@
 import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
 import { Camera, Scene, Sphere, Plane, Box, Cylinder, Mesh, PointLight, render, inspectPixel } from '../../lib/index.js';
-import { renderPixel, prepareFrame } from '../../lib/render.js';
-import { packScene, tracePrimary, outOfReach } from '../../lib/kernel.js';
-import { trace } from '../../lib/trace.js';
-import { Ray } from '../../lib/ray.js';
-import { Vec3 } from '../../lib/vec3.js';
-import { MODES, modeShader } from '../../lib/modes.js';
+import { renderPixel, prepareFrame } from '../../lib/tracing/render.js';
+import { packScene, tracePrimary, outOfReach } from '../../lib/tracing/kernel.js';
+import { trace } from '../../lib/tracing/trace.js';
+import { Ray } from '../../lib/math/ray.js';
+import { Vec3 } from '../../lib/math/vec3.js';
+import { MODES, modeShader } from '../../lib/tracing/modes.js';
 import { between, point, direction, scene, shapeScene, sphereScene, camera, SHAPES, LIGHTS } from '../shared/random-scenes.js';
-import { ProgressiveRenderer, ORDERS } from '../../lib/progressive.js';
+import { ProgressiveRenderer, ORDERS } from '../../lib/tracing/frames.js';
 import { shapeClasses } from '../../lib/shapes/index.js';
 import { lightClasses } from '../../lib/lights/index.js';
 
@@ -117,10 +117,10 @@ describe('the same bytes as the plain reference, for random scenes and cameras (
     }), { ...RUNS, numRuns: 150 });
   });
 
-  it('render() takes the fast path (lib/kernel.js) for scenes of plain shapes, and for spheres only gives the same bytes', () => {
+  it('render() takes the fast path (lib/tracing/kernel.js) for scenes of plain shapes, and for spheres only gives the same bytes', () => {
     assertBoth(fc.property(scene, camera, (s, cam) => {
       const twice = new Set(s.objects).size !== s.objects.length; // left to trace.js (see below)
-      expect(prepareFrame(s, cam).packed === null).toBe(twice); // so the tests above compare lib/kernel.js with trace.js
+      expect(prepareFrame(s, cam).packed === null).toBe(twice); // so the tests above compare lib/tracing/kernel.js with trace.js
     }), { ...RUNS, numRuns: 50 });
     assertBoth(fc.property(sphereScene, camera, (s, cam) => {
       expect(firstDifference(render(s, cam), pixelByPixel(s, cam))).toBe(-1);

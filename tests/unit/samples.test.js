@@ -1,7 +1,7 @@
 import { describe, it, expect } from 'vitest';
 import { Camera, render, inspectPixel, classScene, ProgressiveRenderer } from '../../lib/index.js';
-import { sampleOffsets } from '../../lib/camera.js';
-import { cameraToJSON, cameraFromJSON } from '../../lib/serialize.js';
+import { sampleOffsets } from '../../lib/math/camera.js';
+import { cameraToJSON, cameraFromJSON } from '../../lib/scene/json.js';
 
 const W = 32, H = 24;
 const camera = (options = {}) => new Camera({ width: W, height: H, ...options });

@@ -6,7 +6,7 @@ import { tmpdir } from 'node:os';
 import { join, resolve } from 'node:path';
 import { pathToFileURL } from 'node:url';
 import { Scene, Sphere, Plane, PointLight } from '../../lib/index.js';
-import { sceneToJSON, sceneToCode } from '../../lib/serialize.js';
+import { sceneToJSON, sceneToCode } from '../../lib/scene/json.js';
 
 const dir = mkdtempSync(join(tmpdir(), 'scene-code-'));
 afterAll(() => rmSync(dir, { recursive: true, force: true }));

@@ -1,8 +1,8 @@
 // A scene as short URL-safe text: compact JSON, base64url, every field checked on the way back.
 import { describe, it, expect } from 'vitest';
 import { classScene, render, Camera } from '../../lib/index.js';
-import { sceneToJSON, sceneFromJSON } from '../../lib/serialize.js';
-import { compactSceneJSON, encodeScene, decodeScene, toBase64url, fromBase64url, MAX_SCENE_OBJECTS } from '../../lib/scene-codec.js';
+import { sceneToJSON, sceneFromJSON } from '../../lib/scene/json.js';
+import { compactSceneJSON, encodeScene, decodeScene, toBase64url, fromBase64url, MAX_SCENE_OBJECTS } from '../../lib/scene/codec.js';
 
 describe('the scene in a link', () => {
   const camera = new Camera({ width: 32, height: 24 });

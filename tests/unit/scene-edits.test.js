@@ -5,10 +5,10 @@
 import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
 import { Camera, Scene, Sphere, classScene } from '../../lib/index.js';
-import { sceneToJSON, sceneFromJSON, objectToJSON, objectFromJSON } from '../../lib/serialize.js';
-import { COLUMNS, withValue } from '../../lib/scene-fields.js';
-import { SceneEdits } from '../../lib/scene-edits.js';
-import { render } from '../../lib/render.js';
+import { sceneToJSON, sceneFromJSON, objectToJSON, objectFromJSON } from '../../lib/scene/json.js';
+import { COLUMNS, withValue } from '../../lib/scene/fields.js';
+import { SceneEdits } from '../../lib/scene/edits.js';
+import { render } from '../../lib/tracing/render.js';
 
 /** A scene with every type, point lights between shapes and an emissive sphere: orders that matter for the lights. */
 const MIXED = {

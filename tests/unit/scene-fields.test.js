@@ -1,8 +1,8 @@
 // The values a scene form edits: the columns of each type, a box's text, and editing scene JSON.
 import { describe, it, expect } from 'vitest';
 import { classScene } from '../../lib/index.js';
-import { sceneToJSON, sceneFromJSON } from '../../lib/serialize.js';
-import { tableColumns, COLUMNS, withValue, fieldText } from '../../lib/scene-fields.js';
+import { sceneToJSON, sceneFromJSON } from '../../lib/scene/json.js';
+import { tableColumns, COLUMNS, withValue, fieldText } from '../../lib/scene/fields.js';
 
 describe('the columns of each kind of object', () => {
   it('give every sphere its centre, radius, colour, reflection, transparency and emission', () => {

@@ -3,8 +3,8 @@
 import { describe, it, expect } from 'vitest';
 import { deflateRawSync } from 'node:zlib';
 import { classScene, Scene, Sphere } from '../../lib/index.js';
-import { sceneToJSON } from '../../lib/serialize.js';
-import { encodeScene } from '../../lib/scene-codec.js';
+import { sceneToJSON } from '../../lib/scene/json.js';
+import { encodeScene } from '../../lib/scene/codec.js';
 import {
   encodeSceneLink, decodeSceneLink, readSceneLink, sceneLinkURL, sceneTextInLink, linkNotice,
   LINK_WARN_LENGTH, LINK_MAX_LENGTH, MAX_SCENE_BYTES,

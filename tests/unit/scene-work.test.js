@@ -1,11 +1,11 @@
 // The work a scene from a link or a paste may make, counted before it is built:
 // shadow rays from each hit point, rays a pixel, triangles. Each refusal names the field.
 import { describe, it, expect } from 'vitest';
-import { decodeScene, encodeScene } from '../../lib/scene-codec.js';
-import { sceneFromJSON, sceneToJSON } from '../../lib/serialize.js';
-import { MAX_SHADOW_RAYS, MAX_PIXEL_RAYS, MAX_SCENE_TRIANGLES } from '../../lib/scene-work.js';
-import { classScene } from '../../lib/scenes.js';
-import { trafficSignalScene, rearLightsScene } from '../../lib/homework-scenes.js';
+import { decodeScene, encodeScene } from '../../lib/scene/codec.js';
+import { sceneFromJSON, sceneToJSON } from '../../lib/scene/json.js';
+import { MAX_SHADOW_RAYS, MAX_PIXEL_RAYS, MAX_SCENE_TRIANGLES } from '../../lib/scene/work.js';
+import { classScene } from '../../lib/scene/examples.js';
+import { trafficSignalScene, rearLightsScene } from '../../lib/lesson/homework-scenes.js';
 
 const ball = { type: 'sphere', center: [0, 0, -10], radius: 1 };
 const areaLights = (n, samples) => Array.from({ length: n }, (_, i) => ({ type: 'areaLight', center: [i, 10, -10], radius: 1, samples }));

@@ -86,7 +86,7 @@ describe('Scene: bad input names the field', () => {
 
 describe('shapeName: what an unnamed shape is called on the page', () => {
   it('its own name, else its kind and its number among that kind, from 1', async () => {
-    const { shapeName } = await import('../../lib/scene.js');
+    const { shapeName } = await import('../../lib/scene/scene.js');
     const scene = new Scene()
       .add(new Plane([0, -1, 0], [0, 1, 0]))
       .add(new Sphere([0, 0, -20], 4))

@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import { sceneToJSON, sceneFromJSON, cameraToJSON, cameraFromJSON, sceneToCode } from '../../lib/serialize.js';
+import { sceneToJSON, sceneFromJSON, cameraToJSON, cameraFromJSON, sceneToCode } from '../../lib/scene/json.js';
 import { render, Camera, Scene, Sphere, Plane, Box, PointLight, classScene } from '../../lib/index.js';
 import { shapeClasses } from '../../lib/shapes/index.js';
 import { lightClasses } from '../../lib/lights/index.js';

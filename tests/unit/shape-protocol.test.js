@@ -1,7 +1,7 @@
 import { describe, it, expect } from 'vitest';
-import { Ray } from '../../lib/ray.js';
+import { Ray } from '../../lib/math/ray.js';
 import { Sphere, Plane, Box, shapeClasses, shapeClass, kindOf, isShape, ballOf, middleOf, registerShape } from '../../lib/shapes/index.js';
-import { EPSILON } from '../../lib/constants.js';
+import { EPSILON } from '../../lib/math/constants.js';
 
 const ray = new Ray([0, 0, 0], [0, 0, -1]);
 
@@ -71,7 +71,7 @@ describe('registerShape', () => {
 
 describe('shapeNames', () => {
   it("is shapeName of each shape, a shape added twice and a sketch's own object too", async () => {
-    const { shapeName, shapeNames } = await import('../../lib/scene.js');
+    const { shapeName, shapeNames } = await import('../../lib/scene/scene.js');
     const a = new Sphere([0, 0, -5], 1), b = new Box([0, 0, 0], [1, 1, 1]), own = { hit: () => Infinity };
     const objects = [a, new Plane(), a, b, new Sphere([0, 0, -9], 1, { name: 'moon' }), own, new Sphere([1, 0, -5], 1)];
     expect(shapeNames(objects)).toEqual(objects.map((o) => shapeName(o, objects)));

@@ -1,9 +1,9 @@
-// Long text built in slices (lib/slices.js): the same text as built at once,
+// Long text built in slices (lib/text/slices.js): the same text as built at once,
 // with a wait whenever a slice has taken its time.
 import { describe, it, expect } from 'vitest';
-import { joinInSlices, SLICE_MS } from '../../lib/slices.js';
+import { joinInSlices, SLICE_MS } from '../../lib/text/slices.js';
 import { Scene, Sphere, PointLight, classScene } from '../../lib/index.js';
-import { sceneToCode, sceneCodeLines } from '../../lib/serialize.js';
+import { sceneToCode, sceneCodeLines } from '../../lib/scene/json.js';
 
 /** 2,000 spheres, named and not, and a point light among them. */
 function bigScene() {

@@ -3,10 +3,10 @@
 // option key, options inherited from Object.prototype.
 import { describe, it, expect } from 'vitest';
 import { sceneFromJSON, toHex, colorName, Material, Sphere, Scene, Camera, PointLight, classScene } from '../../lib/index.js';
-import { ProgressiveRenderer } from '../../lib/progressive.js';
-import { WorkerProgressiveRenderer } from '../../lib/workers/progressive.js';
-import { cameraFromJSON } from '../../lib/serialize.js';
-import { checkOptions, OPTION_KEY_MAX } from '../../lib/check.js';
+import { ProgressiveRenderer } from '../../lib/tracing/frames.js';
+import { WorkerProgressiveRenderer } from '../../lib/tracing/workers/worker-frames.js';
+import { cameraFromJSON } from '../../lib/scene/json.js';
+import { checkOptions, OPTION_KEY_MAX } from '../../lib/text/check.js';
 import { shapeClasses } from '../../lib/shapes/index.js';
 import { lightClasses } from '../../lib/lights/index.js';
 

@@ -1,8 +1,8 @@
 import { describe, it, expect } from 'vitest';
 import { Scene, Sphere, Plane, PointLight, SpotLight, AreaLight, Camera, render, inspectPixel, sceneToJSON, sceneFromJSON, sceneToCode } from '../../lib/index.js';
 import * as lib from '../../lib/index.js';
-import { spotShare } from '../../lib/optics.js';
-import { packScene } from '../../lib/kernel.js';
+import { spotShare } from '../../lib/tracing/optics.js';
+import { packScene } from '../../lib/tracing/kernel.js';
 
 const camera = new Camera({ width: 48, height: 36, position: [0, 8, 6], pitch: -30 });
 const floorScene = (...lights) => lights.reduce((scene, light) => scene.add(light), new Scene({ background: [0.1, 0.1, 0.15], ambient: 0.05 })

@@ -1,7 +1,7 @@
 // Progress without a page: the stored text, read strictly, and the progress code for the teacher.
 import { describe, it, expect } from 'vitest';
-import { PROGRESS_KEY, parseProgress, serializeProgress, markDone, clearProgress, pageProgress, progressText, achievements, progressCode, readProgressCode, readProgressLine } from '../../lib/tasks.js';
-import { LESSONS, lessonOf } from '../../lib/lesson-tasks.js';
+import { PROGRESS_KEY, parseProgress, serializeProgress, markDone, clearProgress, pageProgress, progressText, achievements, progressCode, readProgressCode, readProgressLine } from '../../lib/lesson/progress.js';
+import { LESSONS, lessonOf } from '../../lib/lesson/tasks.js';
 
 const all = Object.fromEntries(LESSONS.map((l) => [l.page, l.tasks.map((t) => t.id)]));
 

@@ -1,6 +1,6 @@
 import { describe, it, expect } from 'vitest';
 import { Scene, Sphere, Plane, Box, PointLight, Ray } from '../../lib/index.js';
-import { trace, nearestHit } from '../../lib/trace.js';
+import { trace, nearestHit } from '../../lib/tracing/trace.js';
 
 /** Traces one ray; returns `{ color, hit }` (the inspector's record of the hit). */
 function traced(scene, ray) {

@@ -1,6 +1,6 @@
 import { describe, it, expect } from 'vitest';
 import { Ray } from '../../lib/index.js';
-import { Vec3 } from '../../lib/vec3.js';
+import { Vec3 } from '../../lib/math/vec3.js';
 import { Triangle } from '../../lib/shapes/triangle.js';
 import { seeded, randomDirection } from './convex-reference.js';
 

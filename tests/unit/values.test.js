@@ -1,6 +1,6 @@
 // Reading what a student types in a box (every bad value named) and showing colours so they read back the same.
 import { describe, it, expect } from 'vitest';
-import { readNumber, readColor, colorText } from '../../lib/values.js';
+import { readNumber, readColor, colorText } from '../../lib/scene/values.js';
 
 describe('readNumber', () => {
   it('reads numbers as people type them', () => {
@@ -79,7 +79,7 @@ describe('readColor and colorText', () => {
 
 describe('long typed text', () => {
   it('tests a number in time proportional to its length (60,000 digits then a letter took 3 s)', async () => {
-    const { PLAIN_NUMBER } = await import('../../lib/values.js');
+    const { PLAIN_NUMBER } = await import('../../lib/scene/values.js');
     const { timeRatio } = await import('./linear-time.js');
     const test = (text) => PLAIN_NUMBER.test(text);
     expect(timeRatio(test, (n) => `${'1'.repeat(n)}x`)).toBeLessThan(400);
@@ -87,7 +87,7 @@ describe('long typed text', () => {
   });
 
   it('refuses text past the cap at once, naming the box, without repeating the text', async () => {
-    const { TYPED_MAX } = await import('../../lib/values.js');
+    const { TYPED_MAX } = await import('../../lib/scene/values.js');
     const long = `${'1'.repeat(60000)}x`;
     expect(() => readNumber(long, 'Camera H')).toThrow(new RangeError(`Camera H is too long: 60,001 characters, at most ${TYPED_MAX}`));
     expect(() => readColor(` ${'1, '.repeat(50)} `, 'color')).toThrow(/^color is too long: 149 characters, at most 100$/);

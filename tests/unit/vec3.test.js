@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import * as vec3 from '../../lib/vec3.js';
+import * as vec3 from '../../lib/math/vec3.js';
 
 const V = vec3.create;
 

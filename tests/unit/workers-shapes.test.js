@@ -2,9 +2,9 @@
 // and are packed there for render()'s kernel: the workers' picture is
 // render()'s, byte for byte, shared frame or rows transferred.
 import { describe, it, expect } from 'vitest';
-import { ParallelRenderer } from '../../lib/workers/parallel.js';
-import { sceneToJSON, sceneFromJSON } from '../../lib/serialize.js';
-import { prepareFrame } from '../../lib/render.js';
+import { ParallelRenderer } from '../../lib/tracing/workers/parallel.js';
+import { sceneToJSON, sceneFromJSON } from '../../lib/scene/json.js';
+import { prepareFrame } from '../../lib/tracing/render.js';
 import { fakeWorkers } from './fake-workers.js';
 import { render, Camera, Scene, Plane, Sphere, Cylinder, Cone, Triangle, Mesh, PointLight } from '../../lib/index.js';
 

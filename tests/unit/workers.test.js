@@ -1,8 +1,8 @@
 import { describe, it, expect } from 'vitest';
-import { ParallelRenderer, splitRows, bandHeight, claimHeight } from '../../lib/workers/parallel.js';
-import { workerHandler, REPORT_MS } from '../../lib/workers/split.js';
+import { ParallelRenderer, splitRows, bandHeight, claimHeight } from '../../lib/tracing/workers/parallel.js';
+import { workerHandler, REPORT_MS } from '../../lib/tracing/workers/split.js';
 import { fakeWorkers, silentWorker } from './fake-workers.js';
-import { sceneToJSON, cameraToJSON } from '../../lib/serialize.js';
+import { sceneToJSON, cameraToJSON } from '../../lib/scene/json.js';
 import { render, Camera, Scene, Sphere, Plane, Box, PointLight, classScene, classSceneAt } from '../../lib/index.js';
 
 describe('splitRows', () => {

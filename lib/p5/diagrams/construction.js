@@ -2,7 +2,7 @@
 import { intersectGeometric } from '../../shapes/sphere.js';
 import { INK, MUTED, FAINT, PAPER, RAY, NORMAL, SHADOW, CONSTRUCT } from './style.js';
 import { label, labelPlacer } from './labels.js';
-import { formatLabel } from '../../format.js';
+import { formatLabel } from '../../text/format.js';
 import { panel, closePanel, placeholder, clip, unclip, line, arrow, screenArrow, dot, ring, rightAngle, dimension, darker } from './draw.js';
 import { focusTest } from './focus.js';
 import { nameDiagram } from './aria.js';
@@ -16,7 +16,7 @@ import { nameDiagram } from './aria.js';
  * @param {object} p a p5 instance
  * @param {object} o
  * @param {import('../../shapes/sphere.js').Sphere} [o.sphere]
- * @param {import('../../ray.js').Ray} [o.ray]
+ * @param {import('../../math/ray.js').Ray} [o.ray]
  * @param {object} [o.result] intersectGeometric(ray, sphere)'s result (computed when missing)
  * @param {object} [o.record] instead of sphere/ray: an inspectPixel record (its focus sphere is used)
  * @param {number} o.x the box it is drawn in: left

@@ -16,11 +16,11 @@
  *
  * The code lives beside this file: plane-views.js and plane-marks.js (side and
  * top views), construction.js, parabola.js, legend.js, and the shared
- * style.js, draw.js, labels.js and focus.js; numbers are printed by lib/format.js.
+ * style.js, draw.js, labels.js and focus.js; numbers are printed by lib/text/format.js.
  */
 export { drawSideView, drawTopView } from './plane-views.js';
 export { drawGeometricConstruction } from './construction.js';
 export { drawParabola } from './parabola.js';
 export { drawLegend, createLegendElement } from './legend.js';
 export { focusTest } from './focus.js';
-export { formatLabel, fmt } from '../../format.js';
+export { formatLabel, fmt } from '../../text/format.js';

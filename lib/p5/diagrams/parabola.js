@@ -1,8 +1,8 @@
 /** The lesson's quadratic f(t) = At² + Bt + C as a curve, with its roots and vertex. */
 import { INK, MUTED, RAY, LIT, SHADOW, CONSTRUCT } from './style.js';
 import { label } from './labels.js';
-import { formatLabel, sign } from '../../format.js';
-import { niceTicks } from '../../numbers.js';
+import { formatLabel, sign } from '../../text/format.js';
+import { niceTicks } from '../../math/numbers.js';
 import { panel, closePanel, placeholder, clip, unclip, dot } from './draw.js';
 import { focusTest } from './focus.js';
 import { nameDiagram } from './aria.js';

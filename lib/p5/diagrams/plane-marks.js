@@ -7,7 +7,7 @@
  */
 import { INK, MUTED, PAPER, RAY, NORMAL, LIT, SHADOW, FONT } from './style.js';
 import { ON_LABEL, ON_THICK, ON_FILL, ON_THIN, around, sidesToward } from './labels.js';
-import { formatLabel } from '../../format.js';
+import { formatLabel } from '../../text/format.js';
 import { line, screenArrow, darker } from './draw.js';
 
 /** A line in world (u, v), kept clear of labels at `cost` (ON_THICK for a line a label should not cross). */

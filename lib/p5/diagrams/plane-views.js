@@ -2,11 +2,11 @@
  * The side and top views: the scene cut along a plane through the eye, with
  * the image plane, the spheres, the lights and the selected ray.
  */
-import { isHuge } from '../../modes.js';
+import { isHuge } from '../../tracing/modes.js';
 import { nameDiagram } from './aria.js';
-import { colorWord } from '../../describe.js';
+import { colorWord } from '../../lesson/describe.js';
 import { MUTED, RAY } from './style.js';
-import { formatLabel } from '../../format.js';
+import { formatLabel } from '../../text/format.js';
 import { labelPlacer, ON_LABEL, ON_THICK, ON_THIN } from './labels.js';
 import { panel, closePanel, placeholder, message, messageBox, mapping, clip, unclip, dot, offset, norm2 } from './draw.js';
 import {
@@ -18,8 +18,8 @@ import {
  * the camera (−z, "forward", to the right; y up).
  * @param {object} p a p5 instance
  * @param {object} o
- * @param {import('../../scene.js').Scene} o.scene
- * @param {import('../../camera.js').Camera} o.camera
+ * @param {import('../../scene/scene.js').Scene} o.scene
+ * @param {import('../../math/camera.js').Camera} o.camera
  * @param {object|null} [o.record] inspectPixel's result, or null before a click
  * @param {number} o.x
  * @param {number} o.y

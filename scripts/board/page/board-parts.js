@@ -4,7 +4,7 @@
  * tasks done page by page. Bars are plain elements with their numbers
  * written beside them, so a screen reader reads the numbers.
  */
-import { LESSONS } from '../../../lib/lesson-tasks.js';
+import { LESSONS } from '../../../lib/lesson/tasks.js';
 
 const POLL = [[1, 'negative'], [2, 'neutral'], [3, 'positive']];
 

@@ -1,10 +1,10 @@
 // The harness of tests/e2e/gpu.spec.js's formula test: each GLSL formula of
 // lib/gpu/glsl-optics.js on sampled inputs (up to 12 numbers each, three RGBA
 // float texels a sample), its result (up to 4 numbers) written to an RGBA32F
-// texture and read back, beside lib/optics.js on the same inputs (rounded to
+// texture and read back, beside lib/tracing/optics.js on the same inputs (rounded to
 // float32 first, so only the formula's own rounding is measured).
 import { OPTICS_GLSL } from '../../../lib/gpu/glsl-optics.js';
-import * as optics from '../../../lib/optics.js';
+import * as optics from '../../../lib/tracing/optics.js';
 
 /** A unit vector from three numbers in [-1, 1]. */
 const unit = (x, y, z) => { const n = Math.hypot(x, y, z) || 1; return [x / n, y / n, z / n]; };
