@@ -27,8 +27,8 @@ export { inspectPixel } from './lesson/inspect.js';
 export { ProgressiveRenderer } from './tracing/frames.js';
 export { ParallelRenderer } from './tracing/workers/parallel.js';
 // Light that bounces: pictures as the average of random paths, and the story of one path.
-export { pathTrace } from './pathtrace/path-trace.js';
-export { inspectPath } from './pathtrace/inspect-path.js';
+export { pathTrace } from './tracing/pathtrace/path-trace.js';
+export { inspectPath } from './tracing/pathtrace/inspect-path.js';
 // Colours as the lesson names them.
 export { toColor, toHex, colorName } from './math/color.js';
 // The class's example scene; scenes as JSON and as code.

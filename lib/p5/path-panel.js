@@ -14,7 +14,7 @@
  * Every value sits in an element with `data-field` (and `data-bounce` for a
  * bounce's row), its full precision in `data-value`.
  */
-import { inspectPath } from '../pathtrace/inspect-path.js';
+import { inspectPath } from '../tracing/pathtrace/inspect-path.js';
 import { formatNumber, formatVector } from '../text/format.js';
 import { show, checkOptions } from '../text/check.js';
 import { useStyle, element, resolveParent, sketchNode, shownName } from './dom.js';

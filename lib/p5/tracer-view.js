@@ -24,7 +24,7 @@
  */
 import { ORDERS } from '../tracing/frames.js';
 import { WorkerProgressiveRenderer } from '../tracing/workers/worker-frames.js';
-import { PathProgressiveRenderer } from '../pathtrace/progressive.js';
+import { PathProgressiveRenderer } from '../tracing/pathtrace/progressive.js';
 import { modeShader, modeLegend } from '../tracing/modes.js';
 import { pixelCoordinate, show, checkOptions } from '../text/check.js';
 import { inspectPixel } from '../lesson/inspect.js';

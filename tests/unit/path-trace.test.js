@@ -4,10 +4,10 @@
 // Russian roulette unbiased, and the same bytes however the frame is split.
 import { describe, it, expect } from 'vitest';
 import { Scene, Sphere, Plane, Box, Camera, pathTrace, inspectPath, ParallelRenderer } from '../../lib/index.js';
-import { PathRandom, pcgHash } from '../../lib/pathtrace/random.js';
-import { cosineHemisphere, cosinePdf } from '../../lib/pathtrace/sampling.js';
-import { readPathOptions, preparePaths, pathTraceRows } from '../../lib/pathtrace/path-trace.js';
-import { PathProgressiveRenderer } from '../../lib/pathtrace/progressive.js';
+import { PathRandom, pcgHash } from '../../lib/tracing/pathtrace/random.js';
+import { cosineHemisphere, cosinePdf } from '../../lib/tracing/pathtrace/sampling.js';
+import { readPathOptions, preparePaths, pathTraceRows } from '../../lib/tracing/pathtrace/path-trace.js';
+import { PathProgressiveRenderer } from '../../lib/tracing/pathtrace/progressive.js';
 import { fakeWorkers } from './fake-workers.js';
 
 const L = 0.6; // the sky's light

@@ -14,7 +14,7 @@
  * the main thread instead (the same bytes), and `onProblem` hears why.
  */
 import { render } from '../render.js';
-import { pathTrace, pathTraceRows, readPathOptions, preparePaths } from '../../pathtrace/path-trace.js';
+import { pathTrace, pathTraceRows, readPathOptions, preparePaths } from '../pathtrace/path-trace.js';
 import { positiveInteger, show, checkOptions } from '../../text/check.js';
 import { sceneToJSON, cameraToJSON } from '../../scene/json.js';
 import { splitRows, bandHeight, claimHeight } from './split.js';

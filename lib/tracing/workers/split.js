@@ -6,7 +6,7 @@ import { positiveInteger } from '../../text/check.js';
 import { sceneFromJSON, cameraFromJSON } from '../../scene/json.js';
 import { renderRows, prepareFrame } from '../render.js';
 import { TILE } from '../bounds.js';
-import { readPathOptions, preparePaths, pathTraceRows } from '../../pathtrace/path-trace.js';
+import { readPathOptions, preparePaths, pathTraceRows } from '../pathtrace/path-trace.js';
 
 /**
  * Deals a frame's rows to `parts` workers: bands of `rowsPerBand` rows, handed

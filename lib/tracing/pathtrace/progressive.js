@@ -9,11 +9,11 @@
  * From the outside it is a ProgressiveRenderer (step, restart, buffer,
  * progress, done…), so a tracer view shows it (`createTracerView({ path })`).
  */
-import { checkOptions, show } from '../text/check.js';
-import { checkSceneAndCamera } from '../tracing/render.js';
+import { checkOptions, show } from '../../text/check.js';
+import { checkSceneAndCamera } from '../render.js';
 import { readPathOptions, preparePaths } from './path-trace.js';
 import { tracePath, radiance } from './integrator.js';
-import { formatRate } from '../text/format.js';
+import { formatRate } from '../../text/format.js';
 
 /** What restart() may change. */
 const CHANGES = ['scene', 'camera', 'path'];
@@ -29,8 +29,8 @@ export class PathProgressiveRenderer {
 
   /**
    * @param {object} options
-   * @param {import('../scene/scene.js').Scene} options.scene
-   * @param {import('../math/camera.js').Camera} options.camera
+   * @param {import('../../scene/scene.js').Scene} options.scene
+   * @param {import('../../math/camera.js').Camera} options.camera
    * @param {object} options.path pathTrace's options: `{ samples, seed, maxBounces, sky, roulette }`
    * @param {number} [options.budgetMs=8] tracing time per step(), milliseconds
    * @param {() => number} [options.now=performance.now] the clock, in milliseconds

@@ -6,9 +6,9 @@
  * s = 0, 1, …, so the bytes are the same whatever splits the frame: rows,
  * workers, or sample after sample (progressive.js).
  */
-import { checkSceneAndCamera } from '../tracing/render.js';
-import { checkOptions, show, positiveInteger, bool, pixelCoordinate } from '../text/check.js';
-import { packScene } from '../tracing/kernel.js';
+import { checkSceneAndCamera } from '../render.js';
+import { checkOptions, show, positiveInteger, bool, pixelCoordinate } from '../../text/check.js';
+import { packScene } from '../kernel.js';
 import { PathRandom } from './random.js';
 import { readSky } from './sky.js';
 import { packMaterials } from './materials.js';
@@ -45,8 +45,8 @@ export function readPathOptions(options, scene, camera, where = 'pathTrace') {
 
 /**
  * What tracing paths through this scene needs, worked out once per frame.
- * @param {import('../scene/scene.js').Scene} scene
- * @param {import('../math/camera.js').Camera} camera
+ * @param {import('../../scene/scene.js').Scene} scene
+ * @param {import('../../math/camera.js').Camera} camera
  * @param {ReturnType<typeof readPathOptions>} options
  */
 export function preparePaths(scene, camera, options) {
@@ -58,8 +58,8 @@ export function preparePaths(scene, camera, options) {
  * Renders the scene by path tracing: each pixel the mean of `samples` random
  * paths (*Ray Tracing in One Weekend*'s materials, read from the kit's; see
  * docs/path-tracing.md), as RGBA bytes like render()'s.
- * @param {import('../scene/scene.js').Scene} scene its emissive shapes are the lights (point, spot and area lights are not seen by paths)
- * @param {import('../math/camera.js').Camera} camera
+ * @param {import('../../scene/scene.js').Scene} scene its emissive shapes are the lights (point, spot and area lights are not seen by paths)
+ * @param {import('../../math/camera.js').Camera} camera
  * @param {object} options
  * @param {number} options.samples paths per pixel, 1 to 65536
  * @param {number} [options.seed=0] which random paths (0 to 2³² − 1): the same seed, the same bytes

@@ -11,6 +11,6 @@ let used = GUARD;
 export function pathNumbers(count) {
   const numbers = new Float64Array(buffer, used, count);
   used += count * Float64Array.BYTES_PER_ELEMENT;
-  if (used > buffer.byteLength - GUARD) throw new Error('lib/pathtrace/scratch.js: the scratch buffer is too small');
+  if (used > buffer.byteLength - GUARD) throw new Error('lib/tracing/pathtrace/scratch.js: the scratch buffer is too small');
   return numbers;
 }

@@ -4,10 +4,10 @@
  * record, and the pixel's mean, standard error and running mean over
  * `samples` samples, summed in pathTrace's order (so mean × 255 is its byte).
  */
-import { checkSceneAndCamera } from '../tracing/render.js';
-import { checkOptions, show } from '../text/check.js';
-import { angles } from '../math/camera.js';
-import { shapeName } from '../scene/scene.js';
+import { checkSceneAndCamera } from '../render.js';
+import { checkOptions, show } from '../../text/check.js';
+import { angles } from '../../math/camera.js';
+import { shapeName } from '../../scene/scene.js';
 import { readPathOptions, preparePaths, checkPixel, PATH_OPTIONS } from './path-trace.js';
 import { tracePath, radiance } from './integrator.js';
 
@@ -15,8 +15,8 @@ const clamp01 = (v) => Math.min(1, Math.max(0, v));
 
 /**
  * Sample `sample` of pixel (x, y), bounce by bounce, and the pixel's estimate.
- * @param {import('../scene/scene.js').Scene} scene
- * @param {import('../math/camera.js').Camera} camera
+ * @param {import('../../scene/scene.js').Scene} scene
+ * @param {import('../../math/camera.js').Camera} camera
  * @param {number} x
  * @param {number} y
  * @param {object} [options] pathTrace's options (`samples`, `seed`, `maxBounces`, `sky`, `roulette`) and:

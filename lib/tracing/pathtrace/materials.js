@@ -16,7 +16,7 @@
  * arguments or results, which V8 boxes when it does not inline a call
  * (docs/performance.md, "Notes on V8").
  */
-import { refract, schlick } from '../tracing/optics.js';
+import { refract, schlick } from '../optics.js';
 import { cosineHemisphere, inUnitBall } from './sampling.js';
 import { apart } from './apart.js';
 

@@ -15,16 +15,16 @@
  * `tracePath` writes the sample's light into `radiance` and allocates nothing;
  * given a `record` list it also pushes each bounce's story (inspectPath's).
  */
-import { Ray } from '../math/ray.js';
-import { Vec3 } from '../math/vec3.js';
+import { Ray } from '../../math/ray.js';
+import { Vec3 } from '../../math/vec3.js';
 import { scatter, MATERIAL, EMISSION, P, N, D, INSIDE, SURFACE, DIRECTION, WEIGHT, PDF, LOBE, BELOW, EVENT, DIFFUSE, ABSORBED, LOBE_NAMES } from './materials.js';
 import { skyLight } from './sky.js';
 import { pathNumbers } from './scratch.js';
 import { apart } from './apart.js';
-import { SHAPE, sideTables } from '../shapes/packed.js';
-import { Sphere } from '../shapes/sphere.js';
-import { Plane } from '../shapes/plane.js';
-import { Box } from '../shapes/box.js';
+import { SHAPE, sideTables } from '../../shapes/packed.js';
+import { Sphere } from '../../shapes/sphere.js';
+import { Plane } from '../../shapes/plane.js';
+import { Box } from '../../shapes/box.js';
 
 /** Bounces before Russian roulette may end a path. */
 export const ROULETTE_FROM = 3;

@@ -4,8 +4,8 @@
  * (straight down) to `top` (straight up), blended by the height of the
  * direction as in *Ray Tracing in One Weekend*: t = (dy + 1) / 2.
  */
-import { toColor } from '../math/color.js';
-import { show, checkOptions } from '../text/check.js';
+import { toColor } from '../../math/color.js';
+import { show, checkOptions } from '../../text/check.js';
 
 /**
  * The sky of `pathTrace`'s `sky` option, checked: `[top r, g, b, bottom r, g, b]`.
