@@ -15,11 +15,9 @@
  * traced it redraws only now and then, so the trace keeps its pace.
  *
  * SceneView keeps the state and the frames; its parts, each given what it needs:
- * scene-view-mesh.js (shapes, lights, eye as triangles), scene-view-draw.js (p5
- * drawing: image plane, frustum, rays), scene-view-rays.js (a pixel's rays, the
- * fans), scene-view-flight.js (Shoot), scene-view-labels.js (words at scene points,
- * the construction), scene-view-input.js (drag, wheel, click, h / v, orbit maths),
- * scene-view-keys.js (arrow keys, buttons), scene-view-controls.js (figure and bar).
+ * scene-view-mesh.js (shapes, lights, eye as triangles), -draw.js (image plane,
+ * frustum, rays), -rays.js (a pixel's rays, the fans), -flight.js (Shoot), -labels.js
+ * (words at scene points), -input.js (pointer, orbit maths), -keys.js, -controls.js, -words.js.
  */
 import p5 from 'p5';
 import { ballOf } from '../shapes/index.js';

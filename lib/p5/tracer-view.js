@@ -22,11 +22,8 @@
  * tracer-progress.js (the progress bar and the workers' note),
  * tracer-events.js (what it tells listeners: `view.on('select' | 'restart' | 'progress', fn)`).
  */
-import { ORDERS } from '../tracing/frames.js';
-import { WorkerProgressiveRenderer } from '../tracing/workers/worker-frames.js';
-import { PathProgressiveRenderer } from '../tracing/pathtrace/progressive.js';
 import { modeShader, modeLegend } from '../tracing/modes.js';
-import { pixelCoordinate, show, checkOptions } from '../text/check.js';
+import { pixelCoordinate, checkOptions } from '../text/check.js';
 import { inspectPixel } from '../lesson/inspect.js';
 import { registerView } from './page-state.js';
 import { useStyle, element, resolveParent, sketchNode } from './dom.js';
@@ -42,6 +39,7 @@ import { createEvents } from './tracer-events.js';
 import { createTracerProgress } from './tracer-progress.js';
 import { engineRenderer, showEngine, checkEngine } from './engines.js';
 import { listenForOrbit } from './gpu-orbit.js';
+import { viewRenderer, pathTraced, checkOrder, checkBudget } from './tracer-renderer.js';
 
 /**
  * Creates a tracer view inside a p5 sketch (call it from setup()).
@@ -109,11 +107,7 @@ export class TracerView {
     this.#grid = Boolean(grid);
     this.budgetMs = checkBudget(budgetMs);
     this.#mode = mode;
-    if (order !== undefined && renderMode !== undefined) throw new TypeError('createTracerView takes order or renderMode (its old name), not both');
-    // The renderer checks scene, camera and the order (its `mode`); modeShader checks the visual mode.
-    // Large shaded frames go to Web Workers (lib/tracing/workers/worker-frames.js); the rest is traced here.
-    if (path !== undefined && (mode !== 'shaded' || order !== undefined || renderMode !== undefined)) throw new TypeError('a path-traced view (path) shows the shaded picture, sample after sample: no mode or order');
-    this.#renderer = path !== undefined ? new PathProgressiveRenderer({ scene, camera, path, budgetMs: this.budgetMs }) : new WorkerProgressiveRenderer({ scene, camera, mode: checkOrder(order ?? renderMode ?? 'coarse', renderMode === undefined ? 'order' : 'renderMode'), budgetMs: this.budgetMs, shader: modeShader(mode), workers });
+    this.#renderer = viewRenderer({ scene, camera, mode, order, renderMode, path, budgetMs: this.budgetMs, workers }); // the path tracer, or frames on Web Workers
     this.showLegend = legend;
 
     useStyle();
@@ -234,13 +228,13 @@ export class TracerView {
    * view.setPath({ maxBounces: 1 }); // direct light only
    */
   setPath(path) {
-    if (!(this.#renderer instanceof PathProgressiveRenderer)) throw new TypeError('setPath: this view is not path traced (give createTracerView a path option)');
+    if (!pathTraced(this.#renderer)) throw new TypeError('setPath: this view is not path traced (give createTracerView a path option)');
     return this.#change({ path });
   }
   /** A path-traced view's samples so far and in all and its path options, `{ sample, samples, options }`; null for a view that is not path traced. */
   get pathState() {
     const r = this.#renderer;
-    return r instanceof PathProgressiveRenderer ? { sample: r.sample, samples: r.samples, options: { ...r.options } } : null;
+    return pathTraced(r) ? { sample: r.sample, samples: r.samples, options: { ...r.options } } : null;
   }
 
   /**
@@ -441,19 +435,3 @@ export class TracerView {
     this.#events.emit('select', this.selected, this);
   }
 }
-
-/* ---------------- helpers ---------------- */
-
-/** A render order ('coarse', 'scanline', 'slow'), checked before anything changes. */
-function checkOrder(order, field = 'order') {
-  if (!ORDERS.includes(order)) throw new RangeError(`${field} must be one of ${ORDERS.map((m) => `'${m}'`).join(', ')}, got ${show(order)}`);
-  return order;
-}
-
-function checkBudget(ms) {
-  if (typeof ms !== 'number' || !Number.isFinite(ms) || ms <= 0) {
-    throw new RangeError(`budgetMs must be a number of milliseconds greater than 0, got ${show(ms)}`);
-  }
-  return ms;
-}
-

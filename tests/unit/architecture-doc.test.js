@@ -1,7 +1,8 @@
 // docs/ARCHITECTURE.md is the map of lib/: every file under lib/ is named in
 // it, and every lib/ file it names is there. A file is named by its path under
 // lib/ (`shapes/sphere.js`, `p5/scene-view.js`, or with `lib/` in front), or
-// by its bare name in backticks when no other file of lib/ has that name.
+// by its bare name in backticks when no other file of lib/ has that name. And
+// no file of lib/ grows past 450 lines.
 import { it, expect } from 'vitest';
 import { readFileSync, readdirSync, existsSync } from 'node:fs';
 import { relative, join } from 'node:path';
@@ -43,4 +44,14 @@ it('names no file of lib/ that is gone', () => {
     return !existsSync(new URL(name, ROOT)); // a file outside lib/: it is there too
   });
   expect(gone, 'files docs/ARCHITECTURE.md names that are not there').toEqual([]);
+});
+
+// Small modules: a file that grows past this is two ideas, and the map names one.
+const MAX_LINES = 450;
+
+it(`keeps every file of lib/ to ${MAX_LINES} lines at most`, () => {
+  const long = files.filter((f) => f.endsWith('.js'))
+    .map((f) => [f, readFileSync(join(LIB, f), 'utf8').split('\n').length - 1])
+    .filter(([, lines]) => lines > MAX_LINES);
+  expect(long, 'files of lib/ over the limit, with their lines').toEqual([]);
 });
