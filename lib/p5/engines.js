@@ -25,7 +25,7 @@ export function checkEngine(engine) {
  * the one asked for (null when it is).
  */
 export function engineRenderer(engine, current, { budgetMs, shader, shaded }) {
-  const { scene, camera, mode } = current;
+  const { scene, camera, order } = current;
   const onGpu = current instanceof GpuRenderer;
   let why = onGpu ? current.lost : null; // the GPU cannot go on: its context lost, or a visual mode
   if (engine === 'gpu' && !why) {
@@ -34,14 +34,14 @@ export function engineRenderer(engine, current, { budgetMs, shader, shaded }) {
     else if (!shaded) why = 'the GPU draws the shaded picture only';
     else {
       try {
-        return { renderer: new GpuRenderer({ scene, camera, mode }), engine, why: null };
+        return { renderer: new GpuRenderer({ scene, camera, order }), engine, why: null };
       } catch (error) {
         why = error.message;
       }
     }
   }
   if (!onGpu) return { renderer: current, engine: 'cpu', why };
-  return { renderer: new WorkerProgressiveRenderer({ scene, camera, mode, budgetMs, shader }), engine: 'cpu', why };
+  return { renderer: new WorkerProgressiveRenderer({ scene, camera, order, budgetMs, shader }), engine: 'cpu', why };
 }
 
 /** The canvas's data-engine, and the line saying why the GPU was not taken (hidden when nothing went wrong). */

@@ -16,9 +16,9 @@ import { renderPixel } from '../tracing/render.js';
 
 export class GpuRenderer {
   /** The engine's canvas and context are made here: an Error saying why when there is no WebGL2 or the scene cannot go to the GPU. */
-  constructor({ scene, camera, mode = 'coarse' }) {
+  constructor({ scene, camera, order = 'coarse' }) {
     this.tracer = new GpuTracer(undefined, { preserveDrawingBuffer: true });
-    this.mode = mode;
+    this.order = order;
     this.scene = null;
     this.camera = null;
     this.restart({ scene, camera });

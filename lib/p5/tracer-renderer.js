@@ -22,7 +22,7 @@ export function viewRenderer({ scene, camera, mode, order, renderMode, path, bud
     return new PathProgressiveRenderer({ scene, camera, path, budgetMs });
   }
   const checked = checkOrder(order ?? renderMode ?? 'coarse', renderMode === undefined ? 'order' : 'renderMode');
-  return new WorkerProgressiveRenderer({ scene, camera, mode: checked, budgetMs, shader: modeShader(mode), workers });
+  return new WorkerProgressiveRenderer({ scene, camera, order: checked, budgetMs, shader: modeShader(mode), workers });
 }
 
 /** True when the view's renderer path traces (setPath and pathState ask). */

@@ -129,7 +129,7 @@ export class TracerView {
   /** The visual mode ('shaded', 'discriminant', …): what a pixel shows. */
   get mode() { return this.#mode; }
   /** The render order: 'coarse' (blocks of 16, 8, … 1 px), 'scanline' (row by row) or 'slow' (row by row, a few rays at a time). */
-  get order() { return this.#renderer.mode; }
+  get order() { return this.#renderer.order; }
   /**
    * Deprecated: the old name of `order` (it still works).
    * @deprecated
@@ -202,12 +202,12 @@ export class TracerView {
     return this.#change({ shader });
   }
   /** Traces again in another render order: 'coarse', 'scanline' or 'slow'. */
-  setOrder(order) { return this.#change({ mode: checkOrder(order) }); }
+  setOrder(order) { return this.#change({ order: checkOrder(order) }); }
   /**
    * Deprecated: the old name of `setOrder` (it still works).
    * @deprecated
    */
-  setRenderMode(order) { return this.#change({ mode: checkOrder(order, 'renderMode') }); }
+  setRenderMode(order) { return this.#change({ order: checkOrder(order, 'renderMode') }); }
   /** Sets the on-screen scale: 'auto' or a number of screen pixels per traced pixel. */
   setScale(scale) {
     this.#scale = checkScale(scale);

@@ -24,8 +24,8 @@ export const COARSE_PASSES = [16, 8, 4, 2, 1];
 const FULL_RESOLUTION = [1];
 
 /** The options a ProgressiveRenderer takes, and the changes restart() takes. */
-const OPTIONS = ['scene', 'camera', 'mode', 'budgetMs', 'shader', 'slowRaysPerStep', 'now'];
-const CHANGES = ['scene', 'camera', 'mode', 'shader', 'slowRaysPerStep'];
+const OPTIONS = ['scene', 'camera', 'order', 'mode', 'budgetMs', 'shader', 'slowRaysPerStep', 'now'];
+const CHANGES = ['scene', 'camera', 'order', 'mode', 'shader', 'slowRaysPerStep'];
 
 /**
  * Pixels traced before the first look at the clock in a step, and at least
@@ -69,7 +69,8 @@ export class ProgressiveRenderer {
    * @param {object} options
    * @param {import('../scene/scene.js').Scene} options.scene
    * @param {import('../math/camera.js').Camera} options.camera
-   * @param {'coarse'|'scanline'|'slow'} [options.mode='coarse']
+   * @param {'coarse'|'scanline'|'slow'} [options.order='coarse'] the order the pixels are traced in
+   * @param {'coarse'|'scanline'|'slow'} [options.mode] the order's older name
    * @param {number} [options.budgetMs=8] tracing time per step(), milliseconds
    * @param {Function} [options.shader=renderPixel] `(scene, camera, x, y, targetRGBA)`, writes pixel (x, y) at `(y·width + x)·4`
    * @param {number} [options.slowRaysPerStep=1] pixels per step() in 'slow' mode
@@ -81,7 +82,7 @@ export class ProgressiveRenderer {
    * tracer.buffer;             // RGBA, the same bytes as render()
    */
   constructor(options) { // no options: checkOptions gives {}, and the first required field says it is missing
-    const { scene, camera, mode = 'coarse', budgetMs = 8, shader = renderPixel, slowRaysPerStep = 1, now = () => performance.now() } = checkOptions(options, OPTIONS, 'ProgressiveRenderer');
+    const { scene, camera, order, mode, budgetMs = 8, shader = renderPixel, slowRaysPerStep = 1, now = () => performance.now() } = checkOptions(options, OPTIONS, 'ProgressiveRenderer');
     if (typeof now !== 'function') throw new TypeError(`now must be a function returning milliseconds, got ${show(now)}`);
     this.now = now;
     this.budgetMs = budget(budgetMs, 'budgetMs');
@@ -92,24 +93,26 @@ export class ProgressiveRenderer {
     this.slowRaysPerSecond = 0;
     /** In 'slow' and 'scanline' modes the pixel `{ x, y }` traced last, else null. */
     this.current = null;
-    this.restart({ scene, camera, mode, shader });
+    this.restart({ scene, camera, order: orderOf({ order, mode }) ?? 'coarse', shader });
   }
+
+  /** The render order's older name (`order`). */
+  get mode() { return this.order; }
 
   /**
    * Starts again from the first pass, with whatever changed. Every change is
    * checked before any is applied, so a bad value leaves the render as it was.
-   * @param {object} [changes] `{ scene?, camera?, mode?, shader?, slowRaysPerStep? }`
+   * @param {object} [changes] `{ scene?, camera?, order? (or mode, its older name), shader?, slowRaysPerStep? }`
    */
   restart(changes = {}) {
     if (changes === null || typeof changes !== 'object') throw new TypeError(`changes must be an object like { camera }, got ${show(changes)}`);
     changes = checkOptions(changes, CHANGES, 'restart');
     const scene = changes.scene ?? this.scene;
     const camera = changes.camera ?? this.camera;
-    const mode = changes.mode ?? this.mode;
+    const order = orderOf(changes) ?? this.order;
     const shader = changes.shader ?? this.shader;
     if (!scene || !Array.isArray(scene.objects)) throw new TypeError(`scene must be a Scene, got ${show(scene)}`);
     if (!camera || typeof camera.directionAt !== 'function') throw new TypeError(`camera must be a Camera, got ${show(camera)}`);
-    if (!ORDERS.includes(mode)) throw new RangeError(`mode must be one of ${ORDERS.map((m) => `'${m}'`).join(', ')}, got ${show(mode)}`);
     if (typeof shader !== 'function') throw new TypeError(`shader must be a function (scene, camera, x, y, target), got ${show(shader)}`);
     checkCamera(camera); // as they are now: either may have been changed in place since
     checkScene(scene);
@@ -117,7 +120,8 @@ export class ProgressiveRenderer {
 
     this.scene = scene;
     this.camera = camera;
-    this.mode = mode;
+    /** The order the pixels are traced in: 'coarse', 'scanline' or 'slow'. */
+    this.order = order;
     this.shader = shader;
     this.width = camera.width;
     this.height = camera.height;
@@ -129,7 +133,7 @@ export class ProgressiveRenderer {
     }
     this.#tiles = shader === renderPixel ? prepareFrame(scene, camera) : null; // also packs the scene for the fast path
 
-    this.#passes = mode === 'coarse' ? COARSE_PASSES : FULL_RESOLUTION;
+    this.#passes = order === 'coarse' ? COARSE_PASSES : FULL_RESOLUTION;
     this.#passIndex = 0;
     this.#size = this.#passes[0];
     this.#y = 0;
@@ -156,11 +160,11 @@ export class ProgressiveRenderer {
     budget(budgetMs, 'budgetMs');
     if (this.#done) return { changed: false, done: true };
     const start = this.now();
-    const count = this.mode === 'slow' ? this.#traceRun(this.#slowCount(start)) : this.#traceFor(budgetMs, start);
+    const count = this.order === 'slow' ? this.#traceRun(this.#slowCount(start)) : this.#traceFor(budgetMs, start);
     if (count === 0) return { changed: false, done: false };
     this.#tracingMs += this.now() - start;
     this.#traced += count;
-    if (this.mode !== 'coarse') this.current = { x: this.#lastX, y: this.#lastY };
+    if (this.order !== 'coarse') this.current = { x: this.#lastX, y: this.#lastY };
     return { changed: true, done: this.#done };
   }
 
@@ -214,7 +218,7 @@ export class ProgressiveRenderer {
 
   /** The block size of the coarse pass under way: 16, 8, 4, 2, 1 (1 when done; always 1 in the 'scanline' and 'slow' orders). */
   get blockSize() {
-    return this.mode === 'coarse' ? this.#passes[this.#passIndex] : 1;
+    return this.order === 'coarse' ? this.#passes[this.#passIndex] : 1;
   }
 
   /** The row being traced (height when done): in 'scanline' and 'slow' the rows above it are finished. */
@@ -224,7 +228,7 @@ export class ProgressiveRenderer {
 
   /** @deprecated `blockSize` in the 'coarse' order, `row` in the others: one name for two ideas, kept for old sketches. */
   get pass() {
-    return this.mode === 'coarse' ? this.blockSize : this.row;
+    return this.order === 'coarse' ? this.blockSize : this.row;
   }
 
   /**
@@ -342,6 +346,17 @@ export class ProgressiveRenderer {
       this.#startRow();
     }
   }
+}
+
+/**
+ * The render order given as `order` or as `mode` (its older name), checked;
+ * undefined when neither is given.
+ */
+function orderOf({ order, mode }) {
+  if (order !== undefined && mode !== undefined) throw new TypeError('give the render order as order or as mode (its older name), not both');
+  const [field, value] = order !== undefined ? ['order', order] : ['mode', mode];
+  if (value !== undefined && !ORDERS.includes(value)) throw new RangeError(`${field} must be one of ${ORDERS.map((m) => `'${m}'`).join(', ')}, got ${show(value)}`);
+  return value;
 }
 
 function budget(value, field) {

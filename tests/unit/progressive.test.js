@@ -292,6 +292,19 @@ describe('progress and restarts', () => {
     expect(p.buffer.every((b, i) => b === [255, 0, 0, 255][i % 4])).toBe(true);
   });
 
+  it('takes the render order as order, or as mode (its older name), never both', () => {
+    const camera = new Camera({ width: 8, height: 6 });
+    const p = new ProgressiveRenderer({ scene, camera, order: 'scanline' });
+    expect([p.order, p.mode]).toEqual(['scanline', 'scanline']);
+    expect(new ProgressiveRenderer({ scene, camera, mode: 'slow' }).order).toBe('slow');
+    expect(new ProgressiveRenderer({ scene, camera }).order).toBe('coarse');
+    p.restart({ order: 'coarse' });
+    expect(p.order).toBe('coarse');
+    expect(() => p.restart({ order: 'fast' })).toThrow(/^order must be one of 'coarse', 'scanline', 'slow', got "fast"$/);
+    expect(() => p.restart({ order: 'slow', mode: 'slow' })).toThrow(/order or as mode \(its older name\), not both/);
+    expect(p.order).toBe('coarse');
+  });
+
   it('a bad change throws naming the field and leaves the render as it was', () => {
     const camera = new Camera({ width: 37, height: 23 });
     const p = new ProgressiveRenderer({ scene, camera });

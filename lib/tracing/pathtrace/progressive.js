@@ -47,7 +47,7 @@ export class PathProgressiveRenderer {
     this.budgetMs = budgetMs;
     this.buffer = null;
     /** As a ProgressiveRenderer's: the render order (a path-traced picture fills in whole passes), no pixel being traced alone, no worker problem. */
-    this.mode = 'coarse';
+    this.order = 'coarse';
     this.current = null;
     this.problem = null;
     /** For the tracer view's engines (lib/p5/engines.js): this picture is path traced, on the CPU. */

@@ -49,7 +49,7 @@ export class WorkerProgressiveRenderer {
    * @param {object} options a ProgressiveRenderer's:
    * @param {import('../../scene/scene.js').Scene} options.scene
    * @param {import('../../math/camera.js').Camera} options.camera
-   * @param {'coarse'|'scanline'|'slow'} [options.mode='coarse']
+   * @param {'coarse'|'scanline'|'slow'} [options.order='coarse'] (or `mode`, its older name)
    * @param {number} [options.budgetMs=8] tracing time per step(), milliseconds
    * @param {Function} [options.shader=renderPixel] writes one pixel (see ProgressiveRenderer)
    * @param {number} [options.slowRaysPerStep=1] pixels per step() in 'slow' mode
@@ -139,12 +139,14 @@ export class WorkerProgressiveRenderer {
   /** As ProgressiveRenderer's: the row being traced on this thread (height when done). */
   get row() { return this.done ? this.height : this.#inner.row; }
   /** @deprecated `blockSize` in the 'coarse' order, `row` in the others. */
-  get pass() { return this.mode === 'coarse' ? this.blockSize : this.row; }
+  get pass() { return this.order === 'coarse' ? this.blockSize : this.row; }
   get current() { return this.#inner.current; }
   get buffer() { return this.#inner.buffer; }
   get scene() { return this.#inner.scene; }
   get camera() { return this.#inner.camera; }
-  get mode() { return this.#inner.mode; }
+  get order() { return this.#inner.order; }
+  /** The render order's older name. */
+  get mode() { return this.order; }
   get shader() { return this.#inner.shader; }
   get width() { return this.#inner.width; }
   get height() { return this.#inner.height; }
@@ -175,7 +177,7 @@ export class WorkerProgressiveRenderer {
     const inner = this.#inner;
     return this.#workers !== false && this.problem === null
       && (this.#createWorker !== undefined || ParallelRenderer.available)
-      && inner.mode === 'coarse' && inner.shader === renderPixel
+      && inner.order === 'coarse' && inner.shader === renderPixel
       && inner.width * inner.height >= this.#minPixels;
   }
 
