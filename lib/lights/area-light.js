@@ -14,6 +14,8 @@ import { lightColor, lightIntensity, checkAttenuation, lightName, fading, define
 
 /** Shadow rays per hit an area light may ask for: an n × n grid, n from 1 to 8. */
 export const AREA_SAMPLES = [1, 4, 9, 16, 25, 36, 49, 64];
+/** Shadow rays of an area light that does not say. */
+const DEFAULT_SAMPLES = 16;
 
 const OPTIONS = ['color', 'intensity', 'samples', 'normal', 'attenuation', 'name'];
 
@@ -33,7 +35,7 @@ export class AreaLight {
    * scene.add(new AreaLight([0, 20, -20], 4, { samples: 16 })); // soft shadows under a disc of radius 4, 16 shadow rays per hit
    */
   constructor(center, radius, options = {}) {
-    const { color = [1, 1, 1], intensity = 1, samples = 16, normal = [0, -1, 0], attenuation = 0, name = '' } = checkOptions(options, OPTIONS, 'area light');
+    const { color = [1, 1, 1], intensity = 1, samples = DEFAULT_SAMPLES, normal = [0, -1, 0], attenuation = 0, name = '' } = checkOptions(options, OPTIONS, 'area light');
     this.center = toVec3(center, 'center');
     finiteNumber(radius, 'radius');
     if (!(radius > 0)) throw new RangeError(`radius must be greater than 0, got ${radius}`);
@@ -55,6 +57,13 @@ export class AreaLight {
   /** The inspector shows its shadow rays as one group (one per point of its disc). */
   static get grouped() { return true; }
   static get fields() { return ['center', 'radius', 'color', 'intensity', 'samples', 'normal', 'attenuation']; }
+  /**
+   * The shadow rays its JSON makes from each hit point, counted before any check (lib/scene/work.js),
+   * and the field that says so.
+   */
+  static workOf(o) {
+    return { shadowRays: Number.isInteger(o.samples) && o.samples > 0 ? o.samples : DEFAULT_SAMPLES, field: 'samples' };
+  }
   static build(o) {
     return new AreaLight(o.center, o.radius, definedOnly({ color: o.color, intensity: o.intensity, samples: o.samples, normal: o.normal, attenuation: o.attenuation }));
   }

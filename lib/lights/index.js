@@ -9,15 +9,19 @@
  * `outlines()` (loops of points the 3D view draws: a disc's rim). Its class
  * gives `type`, `codeName`, `label`, `fields`, `build(fields)` and
  * `codeArguments(json, code)`, and may say `grouped` (the inspector shows its
- * shadow rays as one group) and `roundTrips` (built again from its JSON, the
- * same to the bit).
+ * shadow rays as one group), `roundTrips` (built again from its JSON, the
+ * same to the bit) and `workOf(json)` (its shadow rays from a hit point, read
+ * from its JSON before any check, and the field that says so; one without it casts one).
  */
 import { PointLight } from './point-light.js';
 import { SpotLight } from './spot-light.js';
 import { AreaLight } from './area-light.js';
 import { show } from '../text/check.js';
 
-/** Every light class, in the order the lesson meets them. A new light is one more entry here. */
+/**
+ * Every light class, in the order the lesson meets them. A new light is one more entry here.
+ * @type {(Function & { type: string, codeName: string, label: string, fields: string[], workOf?: (json: any) => { shadowRays: number, field: string } } & Record<string, any>)[]}
+ */
 const LIGHTS = [PointLight, AreaLight, SpotLight];
 
 /** What a light class must have. */
@@ -63,6 +67,18 @@ export function isLight(item) {
 /** The distinct lights behind a scene's light sources (`scene.lights`), in order of their first source; emissive shapes are not among them. */
 export function lightsOf(scene) {
   return [...new Set(scene.lights.map((l) => l.source))].filter(isLight);
+}
+
+/**
+ * The shadow rays a light's JSON makes from each hit point, and the field that says so
+ * ('' for the light itself); null when `type` is no listed light.
+ * @param {any} o the light's JSON (not checked yet)
+ * @returns {?{ shadowRays: number, field: string }}
+ */
+export function lightWork(o) {
+  const Light = lightClass(o.type);
+  if (!Light) return null;
+  return typeof Light.workOf === 'function' ? Light.workOf(o) : { shadowRays: 1, field: '' };
 }
 
 export { PointLight, SpotLight, AreaLight };

@@ -5,6 +5,9 @@
  * triangles, a 2.6 s task to open). Each limit is in units of work, and its
  * message names the field where the scene passes it.
  */
+import { lightWork } from '../lights/index.js';
+import { shapeWork } from '../shapes/index.js';
+
 /** Shadow rays from one hit point: an area light's samples, one for every other light (an emissive shape is one). */
 export const MAX_SHADOW_RAYS = 1_024;
 /** Rays a camera ray may lead to: its bounces (a glass both reflects and refracts, so 2^(maxDepth+1) − 1) × (1 + shadow rays at each). */
@@ -12,7 +15,6 @@ export const MAX_PIXEL_RAYS = 16_384;
 /** Triangles in the scene, every mesh's and every triangle: each one's share of the BVHs is built as the link opens. */
 export const MAX_SCENE_TRIANGLES = 20_000;
 
-const AREA_SAMPLES_DEFAULT = 16;
 const DEPTH_DEFAULT = 5;
 
 /**
@@ -27,15 +29,17 @@ export function checkWork(objects, scene) {
   for (let i = 0; i < objects.length; i++) {
     const o = objects[i];
     if (o === null || typeof o !== 'object') continue;
-    const rays = shadowRaysOf(o);
-    if (rays > 0) busiest = o.type === 'areaLight' ? `objects[${i}].samples` : `objects[${i}]`;
+    const light = lightWork(o);
+    const rays = light ? light.shadowRays : isEmissive(o.material?.emission) ? 1 : 0; // an emissive shape is one light
+    if (rays > 0) busiest = light?.field ? `objects[${i}].${light.field}` : `objects[${i}]`;
     shadowRays += rays;
     if (shadowRays > MAX_SHADOW_RAYS) {
       throw new RangeError(`${busiest}: the scene's lights cast ${shadowRays.toLocaleString('en')} shadow rays or more from each hit point, more than the ${MAX_SHADOW_RAYS.toLocaleString('en')} a scene from a link or a paste may have (fewer lights, or fewer samples)`);
     }
-    triangles += trianglesOf(o);
+    const shape = shapeWork(o);
+    triangles += shape.triangles;
     if (triangles > MAX_SCENE_TRIANGLES) {
-      throw new RangeError(`objects[${i}]${o.type === 'mesh' ? '.cells' : ''}: the scene has ${triangles.toLocaleString('en')} triangles or more, more than the ${MAX_SCENE_TRIANGLES.toLocaleString('en')} a scene from a link or a paste may have`);
+      throw new RangeError(`objects[${i}]${shape.field ? `.${shape.field}` : ''}: the scene has ${triangles.toLocaleString('en')} triangles or more, more than the ${MAX_SCENE_TRIANGLES.toLocaleString('en')} a scene from a link or a paste may have`);
     }
     const m = o.material;
     if (m && typeof m === 'object') {
@@ -51,20 +55,8 @@ export function checkWork(objects, scene) {
   }
 }
 
-/** How many shadow rays one object casts from a hit point. */
-function shadowRaysOf(o) {
-  if (o.type === 'areaLight') return Number.isInteger(o.samples) && o.samples > 0 ? o.samples : AREA_SAMPLES_DEFAULT;
-  if (o.type === 'pointLight' || o.type === 'spotLight') return 1;
-  return isEmissive(o.material?.emission) ? 1 : 0;
-}
-
 /** An emission that may light the scene: counted before its checks, so a colour's name counts too. */
 function isEmissive(emission) {
   if (Array.isArray(emission)) return emission.some((c) => c > 0);
   return typeof emission === 'number' ? emission > 0 : typeof emission === 'string';
-}
-
-function trianglesOf(o) {
-  if (o.type === 'mesh') return Array.isArray(o.cells) ? o.cells.length : 0;
-  return o.type === 'triangle' ? 1 : 0;
 }

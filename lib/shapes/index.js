@@ -24,7 +24,7 @@ import { show } from '../text/check.js';
 
 /**
  * A shape class as the list knows it.
- * @typedef {Function & { type: string, fields: string[], build: (fields: object, material?: Material) => object, check?: (shape: object, material?: Material) => void, packed?: object, form?: { title: string, what: string, columns: object[] } }} ShapeClass
+ * @typedef {Function & { type: string, fields: string[], build: (fields: object, material?: Material) => object, check?: (shape: object, material?: Material) => void, packed?: object, workOf?: (json: any) => { triangles: number, field: string }, form?: { title: string, what: string, columns: object[] } }} ShapeClass
  */
 
 /**
@@ -70,6 +70,17 @@ export function shapeClasses() {
 /** The shape class of a scene JSON `type` ('sphere'), or undefined. */
 export function shapeClass(type) {
   return SHAPES.find((Shape) => Shape.type === type);
+}
+
+/**
+ * The triangles a shape's JSON makes (its class's `workOf`, read before any check), and
+ * the field that says so ('' for the shape itself); none for a shape without it.
+ * @param {any} o the shape's JSON (not checked yet)
+ * @returns {{ triangles: number, field: string }}
+ */
+export function shapeWork(o) {
+  const Shape = shapeClass(o.type);
+  return typeof Shape?.workOf === 'function' ? Shape.workOf(o) : { triangles: 0, field: '' };
 }
 
 /**

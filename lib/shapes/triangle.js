@@ -115,6 +115,8 @@ export class Triangle {
 
   /** Its JSON fields, in the order the constructor takes them. */
   static get fields() { return ['a', 'b', 'c', 'material']; }
+  /** The triangles its JSON makes (lib/scene/work.js). */
+  static workOf() { return { triangles: 1, field: '' }; }
 
   /** A triangle from its fields (checked by the constructor). */
   static build(o, material) {

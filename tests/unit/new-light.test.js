@@ -12,6 +12,7 @@ import { sceneToJSON, sceneFromJSON, sceneToCode } from '../../lib/scene/json.js
 import { renderPixel } from '../../lib/tracing/render.js';
 import { packScene } from '../../lib/tracing/kernel.js';
 import { checkScene } from '../../lib/scene/check.js';
+import { checkWork, MAX_SHADOW_RAYS } from '../../lib/scene/work.js';
 import { raySegments, sceneBounds } from '../../lib/lesson/rays3d.js';
 import { registerLight } from '../../lib/lights/index.js';
 import { LIGHT, POSITION, LIGHT_EMISSION, ATTENUATION, IS_SPOT } from '../../lib/lights/packed.js';
@@ -40,6 +41,8 @@ class StripLight {
   static get fields() { return ['a', 'b', 'color', 'intensity', 'samples']; }
   static build(o) { return new StripLight(o.a, o.b, definedOnly({ color: o.color, intensity: o.intensity, samples: o.samples })); }
   static codeArguments(o) { return [o.a, o.b, { color: o.color, intensity: o.intensity, samples: o.samples }]; }
+  /** Its shadow rays from a hit point, read from its JSON before any check: the limits of a link count them. */
+  static workOf(o) { return { shadowRays: Number.isInteger(o.samples) && o.samples > 0 ? o.samples : 4, field: 'samples' }; }
   toJSON() {
     return { type: 'stripLight', name: this.name, a: vector(this.a), b: vector(this.b), color: [...this.color], intensity: this.intensity, samples: this.samples };
   }
@@ -158,5 +161,12 @@ describe('a light written in a test, listed from the test', () => {
     strip.b = new Vec3(8, 8, -14);
     expect(shapesKey(state)).not.toBe(key);
     expect(lightLoops(scene)[0][1].x).toBe(8);
+  });
+
+  it('counts the shadow rays its JSON makes, as a link\'s limits do, naming its own field', () => {
+    const strips = (n, samples) => Array.from({ length: n }, () => ({ type: 'stripLight', a: [0, 5, 0], b: [1, 5, 0], samples }));
+    expect(() => checkWork(strips(MAX_SHADOW_RAYS / 4, 4), {})).not.toThrow();
+    expect(() => checkWork(strips(MAX_SHADOW_RAYS / 4 + 1, 4), {})).toThrow(new RegExp(`^objects\\[${MAX_SHADOW_RAYS / 4}\\]\\.samples: the scene's lights cast 1,028 shadow rays`));
+    expect(() => checkWork(strips(MAX_SHADOW_RAYS / 8 + 1, 8), {})).toThrow(/^objects\[128\]\.samples:/);
   });
 });
