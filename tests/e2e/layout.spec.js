@@ -41,6 +41,9 @@ async function expectFits(page) {
     expect(a.text).toMatch(/^Pixel: \d+,\d+; H: -?\d+(\.\d)?; V: -?\d+(\.\d)?$/);
     expect(a, a.text).toMatchObject({ lines: 1, cut: false });
   }
+  // The progress line's words are all there (they wrap in a narrow bar, never cut off).
+  const progress = await page.locator('[data-progress-text]').evaluateAll((lines) => lines.map((l) => ({ text: l.textContent, cut: l.scrollWidth > l.clientWidth + 1 })));
+  for (const line of progress) expect(line, line.text).toMatchObject({ cut: false });
 }
 
 for (const [width, height] of [[1024, 768], [1920, 1080]]) {
