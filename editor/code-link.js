@@ -9,7 +9,7 @@
  * Code read from a link is only text for the editor: it runs when the
  * student presses Run, and then in the sandboxed frame.
  */
-import { isBase64url, toBase64url, fromBase64url } from '../lib/scene/codec.js';
+import { isBase64url, toBase64url, fromBase64url, pipeBytes } from '../lib/scene/codec.js';
 
 /** A sketch's code may unpack to this many bytes, no more. */
 export const MAX_CODE_BYTES = 512 * 1024;
@@ -25,7 +25,7 @@ export function codeTextInLink(href) {
 
 /** Code as link text: `z.` + base64url of its compressed UTF-8 bytes. */
 export async function encodeCodeLink(code) {
-  return PREFIX + toBase64url(await pipe(new TextEncoder().encode(code), new CompressionStream('deflate-raw')));
+  return PREFIX + toBase64url(await pipeBytes(new TextEncoder().encode(code), new CompressionStream('deflate-raw')));
 }
 
 /** The code in link text; a TypeError or RangeError saying what is wrong otherwise. */
@@ -34,7 +34,7 @@ export async function decodeCodeLink(text) {
   if (!t.startsWith(PREFIX) || !isBase64url(t.slice(PREFIX.length))) throw new TypeError('the code in the link is not z. and base64url text');
   let bytes;
   try {
-    bytes = await pipe(fromBase64url(t.slice(PREFIX.length)), new DecompressionStream('deflate-raw'), MAX_CODE_BYTES);
+    bytes = await pipeBytes(fromBase64url(t.slice(PREFIX.length)), new DecompressionStream('deflate-raw'), MAX_CODE_BYTES, 'the code');
   } catch (error) {
     if (error instanceof RangeError) throw error;
     throw new TypeError('the code in the link is cut short or damaged', { cause: error });
@@ -51,25 +51,4 @@ export async function codeLinkURL(href, code) {
   const url = new URL(href);
   url.hash = `code=${await encodeCodeLink(code)}`;
   return url.href;
-}
-
-/** `bytes` through a (de)compression stream; a RangeError past `max` bytes out. */
-async function pipe(bytes, transform, max = Infinity) {
-  const reader = new Blob([bytes]).stream().pipeThrough(transform).getReader();
-  const chunks = [];
-  let total = 0;
-  for (;;) {
-    const { done, value } = await reader.read();
-    if (done) break;
-    total += value.length;
-    if (total > max) {
-      await reader.cancel();
-      throw new RangeError(`the code in the link unpacks to more than ${max.toLocaleString('en')} bytes`);
-    }
-    chunks.push(value);
-  }
-  const out = new Uint8Array(total);
-  let at = 0;
-  for (const c of chunks) { out.set(c, at); at += c.length; }
-  return out;
 }

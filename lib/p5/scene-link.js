@@ -14,7 +14,7 @@
  *   const scene = await readSceneLink(location.href);         // null when the link has none
  *   history.replaceState(null, '', await sceneLinkURL(location.href, json));
  */
-import { compactSceneBytes, decodeScene, sceneFromBytes, isBase64url, toBase64url, fromBase64url } from '../scene/codec.js';
+import { compactSceneBytes, decodeScene, sceneFromBytes, isBase64url, toBase64url, fromBase64url, pipeBytes } from '../scene/codec.js';
 
 /** Links longer than this may be cut by chats and e-mail. */
 export const LINK_WARN_LENGTH = 8_000;
@@ -34,7 +34,7 @@ export function sceneTextInLink(href) {
 
 /** Scene JSON as link text: `z.` + base64url of its compressed compact JSON. */
 export async function encodeSceneLink(json) {
-  return PREFIX + toBase64url(await pipe(compactSceneBytes(json), new CompressionStream('deflate-raw')));
+  return PREFIX + toBase64url(await pipeBytes(compactSceneBytes(json), new CompressionStream('deflate-raw')));
 }
 
 /**
@@ -48,7 +48,7 @@ export async function decodeSceneLink(text) {
   if (!isBase64url(body)) throw new TypeError('the scene in the link is not base64url text');
   let bytes;
   try {
-    bytes = await pipe(fromBase64url(body), new DecompressionStream('deflate-raw'), MAX_SCENE_BYTES);
+    bytes = await pipeBytes(fromBase64url(body), new DecompressionStream('deflate-raw'), MAX_SCENE_BYTES, 'the scene');
   } catch (error) {
     if (error instanceof RangeError) throw error;
     throw new TypeError('the scene in the link is cut short or damaged', { cause: error });
@@ -86,24 +86,3 @@ export function linkNotice(length) {
 }
 
 /* ---------------- bytes ---------------- */
-
-/** `bytes` through a (de)compression stream; a RangeError past `max` bytes out. */
-async function pipe(bytes, transform, max = Infinity) {
-  const reader = new Blob([bytes]).stream().pipeThrough(transform).getReader();
-  const chunks = [];
-  let total = 0;
-  for (;;) {
-    const { done, value } = await reader.read();
-    if (done) break;
-    total += value.length;
-    if (total > max) {
-      await reader.cancel();
-      throw new RangeError(`the scene in the link unpacks to more than ${max.toLocaleString('en')} bytes`);
-    }
-    chunks.push(value);
-  }
-  const out = new Uint8Array(total);
-  let at = 0;
-  for (const c of chunks) { out.set(c, at); at += c.length; }
-  return out;
-}

@@ -107,3 +107,32 @@ export function fromBase64url(text) {
   const binary = atob(text.replace(/-/g, '+').replace(/_/g, '/'));
   return Uint8Array.from(binary, (c) => c.charCodeAt(0));
 }
+
+/**
+ * `bytes` through a (de)compression stream (the links' deflate-raw); a RangeError
+ * past `max` bytes out, saying `what` unpacks to more (a small link cannot unpack into gigabytes).
+ * @param {BlobPart} bytes
+ * @param {TransformStream} transform
+ * @param {number} [max=Infinity]
+ * @param {string} [what='the text'] what the link holds, for the message ('the scene')
+ * @returns {Promise<Uint8Array>}
+ */
+export async function pipeBytes(bytes, transform, max = Infinity, what = 'the text') {
+  const reader = new Blob([bytes]).stream().pipeThrough(transform).getReader();
+  const chunks = [];
+  let total = 0;
+  for (;;) {
+    const { done, value } = await reader.read();
+    if (done) break;
+    total += value.length;
+    if (total > max) {
+      await reader.cancel();
+      throw new RangeError(`${what} in the link unpacks to more than ${max.toLocaleString('en')} bytes`);
+    }
+    chunks.push(value);
+  }
+  const out = new Uint8Array(total);
+  let at = 0;
+  for (const c of chunks) { out.set(c, at); at += c.length; }
+  return out;
+}
