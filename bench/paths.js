@@ -7,7 +7,7 @@
  * short paths) and sketch 17's 90 balls (each path tests every ball). Figures are printed, never asserted (docs/path-tracing.md).
  */
 import { performance } from 'node:perf_hooks';
-import { GCProfiler, getHeapStatistics } from 'node:v8';
+import { bytesAllocatedBy } from '../tests/shared/heap.js';
 import { Scene, Plane, Box, Sphere, Camera, classScene, pathTrace } from '../lib/index.js';
 
 const WHITE = [0.73, 0.73, 0.73];
@@ -46,17 +46,6 @@ function oneWeekend() {
   scene.add(new Sphere([-4, 1, 0], 1, { color: [0.4, 0.2, 0.1] }));
   scene.add(new Sphere([4, 1, 0], 1, { color: [0.7, 0.6, 0.5], reflection: 1 }));
   return { scene, camera: new Camera({ width: 320, height: 240, fov: 20, position: [13, 2, 3], yaw: -77, pitch: -8.5 }) };
-}
-
-/** Bytes the heap grew by while `work` ran, plus what the collections meanwhile freed. */
-function bytesAllocatedBy(work) {
-  const profiler = new GCProfiler();
-  profiler.start();
-  const before = getHeapStatistics().used_heap_size;
-  work();
-  const after = getHeapStatistics().used_heap_size;
-  const freed = profiler.stop().statistics.reduce((sum, gc) => sum + gc.beforeGC.heapStatistics.usedHeapSize - gc.afterGC.heapStatistics.usedHeapSize, 0);
-  return after - before + freed;
 }
 
 const median = (values) => [...values].sort((a, b) => a - b)[values.length >> 1];

@@ -1,21 +1,6 @@
 import { describe, it, expect } from 'vitest';
-import { GCProfiler, getHeapStatistics } from 'node:v8';
+import { bytesAllocatedBy } from '../shared/heap.js';
 import { Camera, classScene, render, pathTrace, Scene, Sphere, Plane, Box } from '../../lib/index.js';
-
-/**
- * Bytes allocated on the JS heap while `work` runs: what the heap grew by,
- * plus what every garbage collection meanwhile freed.
- */
-function bytesAllocatedBy(work) {
-  const profiler = new GCProfiler();
-  profiler.start();
-  const before = getHeapStatistics().used_heap_size;
-  work();
-  const after = getHeapStatistics().used_heap_size;
-  const freed = profiler.stop().statistics
-    .reduce((sum, gc) => sum + gc.beforeGC.heapStatistics.usedHeapSize - gc.afterGC.heapStatistics.usedHeapSize, 0);
-  return after - before + freed;
-}
 
 describe('tracing allocates nothing per pixel', () => {
   it('even when the page holds an { x, y, z } literal with non-numbers in it (importing p5 2.3 is enough)', () => {
