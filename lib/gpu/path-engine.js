@@ -51,7 +51,7 @@ export class GpuPathTracer {
     this.show = null;
     this.vertices = gl.createVertexArray();
     /** The sums' size, the samples in them, which buffer holds them. */
-    this.width = 0; this.height = 0; this.samples = 0; this.current = 0;
+    this.width = 0; this.height = 0; this.samples = 0; this.current = 0; this.before = 0;
     /** @type {Float32Array|null} the sums read back (kept for the next frame of the same size) */
     this.readBack = null;
   }
@@ -94,6 +94,7 @@ export class GpuPathTracer {
       }
     }
     this.samples = 0;
+    this.before = 0;
   }
 
   /**
@@ -133,19 +134,21 @@ export class GpuPathTracer {
     gl.drawArrays(gl.TRIANGLES, 0, 3);
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
     this.current = to;
+    this.before = this.samples;
     this.samples += count;
   }
 
   /**
    * The mean so far as pathTrace's bytes into `target` (RGBA, row 0 at the
    * top): (sum / samples) · 255, clamped, as pathTraceRows writes them.
+   * `before`: the mean before the last pass (a view's, while that pass runs).
    * @param {Uint8ClampedArray} target
    */
-  read(target) {
-    const gl = this.gl, width = this.width, height = this.height, n = this.samples;
+  read(target, before = false) {
+    const gl = this.gl, width = this.width, height = this.height, n = before ? this.before : this.samples;
     if (this.readBack?.length !== width * height * 4) this.readBack = new Float32Array(width * height * 4);
     const sums = this.readBack;
-    gl.bindFramebuffer(gl.FRAMEBUFFER, this.framebuffers[this.current]);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, this.framebuffers[before ? 1 - this.current : this.current]);
     gl.readPixels(0, 0, width, height, gl.RGBA, gl.FLOAT, sums);
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
     for (let row = 0; row < height; row++) { // GL's rows run from the bottom

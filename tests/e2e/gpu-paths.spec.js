@@ -142,3 +142,59 @@ test('no WebGL2: pathTraceGPU throws an Error saying so', async ({ page }) => {
   const message = await page.evaluate(() => window.pathsTest.errorOf(() => window.RT.pathTraceGPU(new window.RT.Scene(), new window.RT.Camera({ width: 8, height: 6 }), { samples: 1 })));
   expect(message).toMatch(/^the GPU engine needs WebGL2: /);
 });
+
+test.describe('a path-traced tracer view on the GPU (engine: \'gpu\' with path)', () => {
+  test.beforeEach(async ({ page }) => {
+    await page.goto('/tests/e2e/pages/gpu-path-view.html');
+    await page.waitForFunction(() => window.view);
+  });
+
+  test('traces sample after sample on the GPU with the CPU\'s progress line, and ends on pathTraceGPU\'s bytes', async ({ page }) => {
+    test.setTimeout(180_000);
+    await page.goto('/tests/e2e/pages/gpu-path-view.html?samples=256');
+    await page.waitForFunction(() => window.view);
+    const canvas = page.locator('[data-tracer]'), progress = page.locator('[data-progress-text]');
+    await page.evaluate(() => { // every line the page shows, from here on
+      const line = document.querySelector('[data-progress-text]');
+      window.lines = [line.textContent];
+      new MutationObserver(() => window.lines.push(line.textContent)).observe(line, { childList: true, characterData: true, subtree: true });
+    });
+    await expect(canvas).toHaveAttribute('data-engine', 'gpu');
+    await expect(page.locator('[data-message="view-engine"]')).toBeHidden();
+    await page.waitForFunction(() => window.view.pathState.sample === 256, null, { timeout: 150_000 });
+    await expect(page.locator('body')).toHaveAttribute('data-render', 'done');
+    const { buffer, expected, canvasBytes, state, lines } = await page.evaluate(() => {
+      const c = document.querySelector('[data-tracer]');
+      return {
+        buffer: Array.from(window.view.buffer), expected: window.gpuPicture({}), state: window.view.pathState, lines: window.lines,
+        canvasBytes: Array.from(c.getContext('2d').getImageData(0, 0, c.width, c.height).data),
+      };
+    });
+    const counts = [...new Set(lines.map((line) => line.match(/^Sample (\d+) of 256 · /)?.[1]).filter(Boolean).map(Number))];
+    console.log(`the view's progress line on the GPU showed samples ${counts.join(', ')}`);
+    expect(counts.length, 'the picture grew in passes, each shown').toBeGreaterThanOrEqual(3);
+    expect(counts).toEqual([...counts].sort((a, b) => a - b));
+    expect(state).toEqual({ sample: 256, samples: 256, options: { samples: 256, maxBounces: 16 } });
+    expect(buffer).toEqual(expected); // the sums add sample after sample in order, whatever the passes
+    const off = canvasBytes.filter((v, i) => Math.abs(v - expected[i]) > 1).length; // the canvas shows the mean (rounded by the GPU)
+    expect(off).toBe(0);
+    await expect(progress).toHaveText(/^Sample 256 of 256 · [\d.]+[kM]? paths\/s$/);
+  });
+
+  test('setPath traces again on the GPU; a click opens the pixel\'s path by inspectPath on the CPU; the switch to the CPU keeps the path options', async ({ page }) => {
+    test.setTimeout(120_000);
+    await page.waitForFunction(() => window.view.pathState.sample === 16, null, { timeout: 90_000 });
+    await page.evaluate(() => window.view.setPath({ maxBounces: 1 }));
+    await page.waitForFunction(() => window.view.pathState.sample === 16 && window.view.pathState.options.maxBounces === 1, null, { timeout: 90_000 });
+    const direct = await page.evaluate(() => ({ buffer: Array.from(window.view.buffer), expected: window.gpuPicture({ maxBounces: 1 }) }));
+    expect(direct.buffer).toEqual(direct.expected);
+    await page.evaluate(() => window.view.select(12, 20));
+    await expect(page.locator('[data-path-inspector] caption')).toHaveText(/^Sample \d+ of pixel 12,20: \d+ hits?$/); // inspectPath, on the CPU
+    await page.evaluate(() => window.view.setEngine('cpu'));
+    await expect(page.locator('[data-tracer]')).toHaveAttribute('data-engine', 'cpu');
+    await page.waitForFunction(() => window.view.pathState.sample === 16, null, { timeout: 90_000 });
+    const cpu = await page.evaluate(() => ({ buffer: Array.from(window.view.buffer), expected: window.cpuPicture({ maxBounces: 1 }), state: window.view.pathState }));
+    expect(cpu.state.options).toEqual({ samples: 16, maxBounces: 1 });
+    expect(cpu.buffer).toEqual(cpu.expected);
+  });
+});
