@@ -33,12 +33,16 @@
  *      Worker per core, and their ratio, in one run (see bench/browser/gpu.js).
  *      Headless Chromium here draws WebGL with SwiftShader, on the CPU; on a
  *      machine with a GPU, add --headed (docs/gpu.md).
+ *   8. the path tracer: sketch 16's Cornell box at 320×240 (or --paths-size),
+ *      samples (paths) per second on the GPU engine (pathTraceGPU), on the
+ *      page's thread and on one Web Worker per core, in one run (see
+ *      bench/browser/paths.js); --headed for a real GPU, as in 7.
  * Times are printed, never asserted; the exit code is 1 only when something
  * is broken (a page error, a picture that differs, no browser).
  *
  * Options: --dev (the dev server instead of build + preview); --runs N (worker
  * timings per case, default 15); --rounds N (animation rounds per thread,
- * default 5); --only progressive, workers, animation, saves, view3d or gpu (one part
+ * default 5); --only progressive, workers, animation, saves, view3d, gpu or paths (one part
  * alone); --port N or BENCH_PORT=N (the server's port, default 5178);
  * BENCH_TRACE=file writes the Chromium trace of part 1 (open it in
  * ui.perfetto.dev), and BENCH_TRACE_CATEGORIES=devtools.timeline,v8 adds
@@ -59,6 +63,8 @@ const ROOT = resolve(import.meta.dirname, '..');
 const PAGE = 'bench/browser/bench.html';
 const VIEW3D_PAGE = 'bench/browser/view3d.html';
 const GPU_PAGE = 'bench/browser/gpu.html';
+const PATHS_PAGE = 'bench/browser/paths.html';
+const PATHS_SIZE = (option('--paths-size') ?? '320x240').split('x').map(Number); // `-- --paths-size 640x480`
 const GPU_SIZE = (option('--gpu-size') ?? '640x480').split('x').map(Number); // `-- --gpu-size 1280x720`
 const HEADED = process.argv.includes('--headed'); // a real GPU: a headed browser (headless Chromium draws WebGL in software)
 const ONLY_VIEW3D = option('--only') === 'view3d'; // `npm run bench:browser -- --only view3d`: section 5 alone
@@ -100,7 +106,7 @@ async function buildPage() {
   const { build } = await import('vite');
   await build({
     root: ROOT, configFile: false, base: './', logLevel: 'warn',
-    build: { target: 'es2022', outDir, emptyOutDir: true, rollupOptions: { input: [resolve(ROOT, PAGE), resolve(ROOT, VIEW3D_PAGE), resolve(ROOT, GPU_PAGE)] } },
+    build: { target: 'es2022', outDir, emptyOutDir: true, rollupOptions: { input: [resolve(ROOT, PAGE), resolve(ROOT, VIEW3D_PAGE), resolve(ROOT, GPU_PAGE), resolve(ROOT, PATHS_PAGE)] } },
     worker: { format: 'es' },
   });
   return outDir;
@@ -496,6 +502,33 @@ function reportGpu({ gpu, cpu, beyond2, renderer, width, height }) {
   console.log(`   ratio GPU / CPU: ${(gpu.fps / cpu.fps).toFixed(2)}×; pixels beyond 2 per channel from render(): ${beyond2}`);
 }
 
+/* ---------------- 8. the path tracer on the GPU and the CPU ---------------- */
+
+/** Sketch 16's Cornell box path traced on the GPU, the page's thread and the workers (bench/browser/paths.js). */
+async function pathEngines(browser, base, errors) {
+  const page = await browser.newPage({ viewport: { width: 1280, height: 900 }, deviceScaleFactor: 1 });
+  watch(page, errors);
+  await page.goto(`${base}${PATHS_PAGE}`);
+  await page.waitForFunction(() => window.bench?.ready, null, { timeout: 60_000, polling: 100 });
+  const [width, height] = PATHS_SIZE;
+  const result = await page.evaluate((size) => window.bench.run(size), { width, height, seconds: 10, least: 2, samples: 4 });
+  await page.close();
+  const { gpu, cpu } = result.means;
+  if (Math.abs(gpu - cpu) > 0.02 * cpu) errors.push(`the GPU's path-traced picture's mean byte ${gpu.toFixed(2)} is not the CPU's ${cpu.toFixed(2)} within 2 %`);
+  return { ...result, width, height };
+}
+
+function reportPaths({ gpu, cpu, workers, means, renderer, pixels, width, height }) {
+  const line = (what, { pathsPerSecond, pictures, msPerPicture }) => console.log(`   ${what}: ${(pathsPerSecond / 1e6).toFixed(3)} M samples/s, ` +
+    `${(pathsPerSecond / pixels).toFixed(2)} samples/pixel/s (${pictures} pictures of 4 samples, ${ms(msPerPicture)} ms each)`);
+  console.log(`\n8. The path tracer: sketch 16's Cornell box at ${width}×${height}, up to 16 bounces (WebGL2 renderer: ${renderer})`);
+  line('GPU (pathTraceGPU)', gpu);
+  line("CPU, the page's thread (pathTrace)", cpu);
+  line(`CPU, ${workers.cores} workers (one per core)`, workers);
+  console.log(`   ratio GPU / one core: ${(gpu.pathsPerSecond / cpu.pathsPerSecond).toFixed(2)}×, GPU / ${workers.cores} workers: ` +
+    `${(gpu.pathsPerSecond / workers.pathsPerSecond).toFixed(2)}×; mean byte at 16 samples: GPU ${means.gpu.toFixed(2)}, CPU ${means.cpu.toFixed(2)}`);
+}
+
 /* ---------------- main ---------------- */
 
 const executablePath = findBrowser();
@@ -534,6 +567,7 @@ try {
   }
   if (!ONLY || ONLY_VIEW3D) reportView3d(await view3d(browser, base, errors));
   if (!ONLY || ONLY === 'gpu') reportGpu(await gpuEngine(browser, base, errors));
+  if (!ONLY || ONLY === 'paths') reportPaths(await pathEngines(browser, base, errors));
   console.log(`\nload average at the end: ${loadavg()[0].toFixed(1)}`);
 } catch (error) {
   errors.push(error.stack ?? String(error));

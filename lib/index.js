@@ -23,6 +23,7 @@ export { Camera } from './math/camera.js';
 // Pictures, and the story of one pixel.
 export { render } from './tracing/render.js';
 export { renderGPU } from './gpu/render-gpu.js';
+export { pathTraceGPU } from './gpu/path-trace-gpu.js';
 export { inspectPixel } from './lesson/inspect.js';
 export { ProgressiveRenderer } from './tracing/frames.js';
 export { ParallelRenderer } from './tracing/workers/parallel.js';

@@ -8,7 +8,7 @@ import { kernelSource, VERTEX_SOURCE, ROW, SHAPE_CODES } from './glsl-kernel.js'
 import { gpuScene, inRows } from './upload.js';
 
 /** The textures, by their sampler's name, and what of gpuScene's each holds. */
-const TEXTURES = [['uShapes', 'shapes'], ['uMaterials', 'materials'], ['uLights', 'lights'], ['uApart', 'apart'], ['uTables', 'tables']];
+export const TEXTURES = [['uShapes', 'shapes'], ['uMaterials', 'materials'], ['uLights', 'lights'], ['uApart', 'apart'], ['uTables', 'tables']];
 
 /** Why there is no WebGL2 here, or null when there is (tested before any context is made). */
 export function noWebGL2() {
@@ -49,15 +49,7 @@ export class GpuTracer {
   /** Uploads the scene's packed form; an Error naming a shape the GPU cannot draw. */
   setScene(scene) {
     const numbers = gpuScene(scene), gl = this.gl;
-    const limit = gl.getParameter(gl.MAX_TEXTURE_SIZE);
-    TEXTURES.forEach(([name, field], t) => {
-      const { data, rows } = inRows(numbers[field]);
-      if (rows > limit) throw new Error(`renderGPU cannot draw this scene: its ${field} take ${numbers[field].length} numbers, more than this GPU's textures hold (${ROW * limit})`);
-      gl.bindTexture(gl.TEXTURE_2D, this.textures[t]);
-      gl.texImage2D(gl.TEXTURE_2D, 0, gl.R32F, ROW, rows, 0, gl.RED, gl.FLOAT, data);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-      gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
-    });
+    uploadScene(gl, this.textures, numbers);
     const meshes = numbers.kindTypes.includes(SHAPE_CODES.mesh);
     if (!this.programs.has(meshes)) {
       const program = link(gl, kernelSource(meshes));
@@ -76,11 +68,7 @@ export class GpuTracer {
     if (this.canvas.height !== camera.height) this.canvas.height = camera.height;
     gl.viewport(0, 0, camera.width, camera.height);
     gl.useProgram(this.program);
-    for (let t = 0; t < TEXTURES.length; t++) {
-      gl.activeTexture(gl.TEXTURE0 + t);
-      gl.bindTexture(gl.TEXTURE_2D, this.textures[t]);
-      gl.uniform1i(u[TEXTURES[t][0]], t);
-    }
+    bindScene(gl, u, this.textures);
     gl.uniform1iv(u.uKindType, this.kindTypes);
     gl.uniform1i(u.uCount, k.count);
     gl.uniform1i(u.uLightCount, k.lightCount);
@@ -128,8 +116,34 @@ export class GpuTracer {
   }
 }
 
+/**
+ * The packed scene's float arrays (gpuScene's) into `textures`, one R32F
+ * texture each in rows of ROW numbers; an Error when one is larger than
+ * this GPU's textures hold. `where` names the caller in that error.
+ */
+export function uploadScene(gl, textures, numbers, where = 'renderGPU') {
+  const limit = gl.getParameter(gl.MAX_TEXTURE_SIZE);
+  TEXTURES.forEach(([, field], t) => {
+    const { data, rows } = inRows(numbers[field]);
+    if (rows > limit) throw new Error(`${where} cannot draw this scene: its ${field} take ${numbers[field].length} numbers, more than this GPU's textures hold (${ROW * limit})`);
+    gl.bindTexture(gl.TEXTURE_2D, textures[t]);
+    gl.texImage2D(gl.TEXTURE_2D, 0, gl.R32F, ROW, rows, 0, gl.RED, gl.FLOAT, data);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+  });
+}
+
+/** The scene's textures on units 0 … 4, each sampler told its unit (the program in use); allocates nothing. */
+export function bindScene(gl, locations, textures) {
+  for (let t = 0; t < TEXTURES.length; t++) {
+    gl.activeTexture(gl.TEXTURE0 + t);
+    gl.bindTexture(gl.TEXTURE_2D, textures[t]);
+    gl.uniform1i(locations[TEXTURES[t][0]], t);
+  }
+}
+
 /** The compiled and linked program; an Error with the compiler's log. */
-function link(gl, fragmentSource) {
+export function link(gl, fragmentSource) {
   const program = gl.createProgram();
   for (const [type, source] of [[gl.VERTEX_SHADER, VERTEX_SOURCE], [gl.FRAGMENT_SHADER, fragmentSource]]) {
     const shader = gl.createShader(type);

@@ -47,12 +47,12 @@ const RAY_STACK = 18;
 export const ROW = 1024;
 
 /** The material offsets the shader reads, by their names in lib/shapes/material.js's table. */
-const { emission: EMISSION, reflection: REFLECTION, transparency: TRANSPARENCY, ior: IOR, specular: SPECULAR, shininess: SHININESS } = MATERIAL_AT;
+const { emission: EMISSION, reflection: REFLECTION, transparency: TRANSPARENCY, ior: IOR, specular: SPECULAR, shininess: SHININESS, fuzz: FUZZ } = MATERIAL_AT;
 
 /** The #defines of the layout: every offset from the module that owns it. */
 function layout() {
   const defines = {
-    SHAPE, KIND, MATERIAL: MATERIAL_NUMBERS, EMISSION, REFLECTION, TRANSPARENCY, IOR, SPECULAR, SHININESS,
+    SHAPE, KIND, MATERIAL: MATERIAL_NUMBERS, EMISSION, REFLECTION, TRANSPARENCY, IOR, SPECULAR, SHININESS, FUZZ,
     LIGHT, POSITION, LIGHT_EMISSION, LIGHT_SHAPE, ATTENUATION, IS_SPOT, AXIS, COS_OUTER, COS_INNER, MAX_KINDS, BVH_STACK, RAY_STACK,
     ROW_SHIFT: Math.log2(ROW), ROW_MASK: ROW - 1,
     ...Object.fromEntries(Object.entries(SHAPE_CODES).map(([type, code]) => [type.toUpperCase(), code])),
@@ -81,15 +81,9 @@ vec3 table3(int i) { return vec3(table(i), table(i + 1), table(i + 2)); }
 int tableStart(int index) { return int(table(index)); }
 `;
 
-const KERNEL = /* glsl */ `
-uniform int uCount, uLightCount, uMaxDepth, uSamples;
-uniform vec3 uBackground;
-uniform float uAmbient, uBias, uEpsilon;
-uniform bool uShadows, uSpecular;
-uniform vec3 uEye, uRight, uUp, uForward;
-uniform vec2 uHalf; // the image plane's half width and half height at distance 1
-uniform ivec2 uSize;
-out vec4 pixel;
+const NEAREST = /* glsl */ `
+uniform int uCount; // shapes
+uniform float uEpsilon;
 
 int kindOf(int object) { return uKindType[int(shape(object * SHAPE + KIND))]; }
 
@@ -136,6 +130,17 @@ vec3 surfaceAt(int object, int item, vec3 P, vec3 D, out bool inside) {
   inside = D.x * N.x + D.y * N.y + D.z * N.z > 0.0;
   return inside ? -N : N; // shade the side the ray sees
 }
+`;
+
+const KERNEL = /* glsl */ `
+uniform int uLightCount, uMaxDepth, uSamples;
+uniform vec3 uBackground;
+uniform float uAmbient, uBias;
+uniform bool uShadows, uSpecular;
+uniform vec3 uEye, uRight, uUp, uForward;
+uniform vec2 uHalf; // the image plane's half width and half height at distance 1
+uniform ivec2 uSize;
+out vec4 pixel;
 
 // How much light gets through from o to reach along the shadow ray toward light l (1 clear, 0 blocked).
 float shadowRay(vec3 o, vec3 d, float reach, int l, ivec2 self) {
@@ -263,7 +268,17 @@ void main() {
  * SwiftShader's frame of the class scene two to three times slower.
  */
 export function kernelSource(meshes = true) {
-  return `${HEADER}${layout()}\n#define HAS_MESH ${meshes ? 1 : 0}\n${READS}${OPTICS_GLSL}${SHAPES_GLSL}${KERNEL}`;
+  return `${sceneSource(meshes)}${KERNEL}`;
+}
+
+/**
+ * What every shader of the packed scene starts with: the layout's #defines,
+ * the texture reads, optics, each shape's hit and normal, nearestHit and
+ * surfaceAt (uniforms uCount, uEpsilon). Whitted's kernel and the path
+ * tracer (lib/gpu/glsl-paths.js) each add their own loop after it.
+ */
+export function sceneSource(meshes = true) {
+  return `${HEADER}${layout()}\n#define HAS_MESH ${meshes ? 1 : 0}\n${READS}${OPTICS_GLSL}${SHAPES_GLSL}${NEAREST}`;
 }
 
 /** A vertex shader drawing one triangle over the whole frame. */

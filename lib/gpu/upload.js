@@ -14,24 +14,29 @@ import { plainClassOf, classOf } from '../shapes/index.js';
 import { SHAPE_CODES, MAX_KINDS, BVH_STACK, ROW } from './glsl-kernel.js';
 import { SHAPE, KIND } from '../shapes/packed.js';
 
+/** Who asks, for the errors: renderGPU's words, or the path tracer's (lib/gpu/path-trace-gpu.js). */
+export const WHITTED = Object.freeze({ cannot: 'renderGPU cannot draw', cpu: 'render() draws it on the CPU' });
+
 /**
  * The packed scene as float32 arrays, and the map from the kernel's kind
  * numbers to the shader's shape codes. An Error naming the shape when one
- * cannot be drawn on the GPU.
+ * cannot be drawn on the GPU (in the words of `who`).
+ * @param {import('../scene/scene.js').Scene} scene
+ * @param {{ cannot: string, cpu: string }} [who]
  * @returns {{ packed: PackedScene, shapes: Float32Array, materials: Float32Array, lights: Float32Array, apart: Float32Array, tables: Float32Array, kindTypes: Int32Array }}
  */
-export function gpuScene(scene) {
-  scene.objects.forEach(checkShape);
+export function gpuScene(scene, who = WHITTED) {
+  scene.objects.forEach((object, i) => checkShape(object, i, who));
   const seen = new Set();
   scene.objects.forEach((object, i) => {
-    if (seen.has(object)) throw new Error(`renderGPU cannot draw ${nameOf(object, i)}: it is added to the scene twice, and the GPU tells shapes apart by their place in the list (add a copy instead)`);
+    if (seen.has(object)) throw new Error(`${who.cannot} ${nameOf(object, i)}: it is added to the scene twice, and the GPU tells shapes apart by their place in the list (add a copy instead)`);
     seen.add(object);
   });
   const packed = new PackedScene(scene);
   const kindTypes = new Int32Array(MAX_KINDS).fill(-1);
   scene.objects.forEach((object, i) => {
     const kind = packed.shapes[i * SHAPE + KIND];
-    if (kind >= MAX_KINDS) throw new Error(`renderGPU cannot draw ${nameOf(object, i)}: more than ${MAX_KINDS} shape classes met`);
+    if (kind >= MAX_KINDS) throw new Error(`${who.cannot} ${nameOf(object, i)}: more than ${MAX_KINDS} shape classes met`);
     kindTypes[kind] = SHAPE_CODES[object.constructor.type];
   });
   return {
@@ -40,19 +45,19 @@ export function gpuScene(scene) {
     materials: Float32Array.from(packed.materials),
     lights: Float32Array.from(packed.lights),
     apart: Float32Array.from(packed.apart, (a) => Math.max(a, -3e38)), // −Infinity: never skipped
-    tables: flattenTables(packed.tables, scene),
+    tables: flattenTables(packed.tables, scene, who),
   };
 }
 
 /** An Error unless the shape is one of the listed classes, itself, with a GPU form. */
-function checkShape(object, i) {
+function checkShape(object, i, who) {
   const Shape = plainClassOf(object);
   if (!Shape?.packed) {
     const listed = classOf(object);
     const why = listed ? `its hit or normalAt is not its class's own (a subclass, or a method replaced)` : 'its class has no packed form';
-    throw new Error(`renderGPU cannot draw ${nameOf(object, i)}: ${why}; render() draws it on the CPU`);
+    throw new Error(`${who.cannot} ${nameOf(object, i)}: ${why}; ${who.cpu}`);
   }
-  if (!(Shape.type in SHAPE_CODES)) throw new Error(`renderGPU cannot draw ${nameOf(object, i)}: the GPU engine has no ${Shape.type} (it draws ${Object.keys(SHAPE_CODES).join(', ')})`);
+  if (!(Shape.type in SHAPE_CODES)) throw new Error(`${who.cannot} ${nameOf(object, i)}: the GPU engine has no ${Shape.type} (it draws ${Object.keys(SHAPE_CODES).join(', ')})`);
 }
 
 /** "shape 3 ("lamp", a Torus)": which shape, for an error. */
@@ -62,8 +67,8 @@ function nameOf(object, i) {
 }
 
 /** The side tables in one array: their starts, then each table. */
-function flattenTables(tables, scene) {
-  const parts = tables.map((table) => (ArrayBuffer.isView(table) ? [table] : meshTable(table, scene)));
+function flattenTables(tables, scene, who) {
+  const parts = tables.map((table) => (ArrayBuffer.isView(table) ? [table] : meshTable(table, scene, who)));
   const starts = [];
   let at = tables.length;
   for (const part of parts) {
@@ -84,10 +89,10 @@ function flattenTables(tables, scene) {
 const MESH_HEADER = 5;
 
 /** A mesh's table: the starts of its boxes, nodes, order, corners and normals, then those. */
-function meshTable(mesh, scene) {
+function meshTable(mesh, scene, who) {
   const { bvh } = mesh;
   if (bvh.depth + 2 > BVH_STACK) {
-    throw new Error(`renderGPU cannot draw ${nameOf(mesh, scene.objects.indexOf(mesh))}: its tree is ${bvh.depth} deep, the GPU's walk goes to ${BVH_STACK - 2}`);
+    throw new Error(`${who.cannot} ${nameOf(mesh, scene.objects.indexOf(mesh))}: its tree is ${bvh.depth} deep, the GPU's walk goes to ${BVH_STACK - 2}`);
   }
   const arrays = [bvh.boxes.subarray(0, 6 * bvh.nodeCount), bvh.nodes.subarray(0, 2 * bvh.nodeCount), bvh.order, mesh.corners, mesh.normals];
   const starts = [];

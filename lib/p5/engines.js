@@ -1,13 +1,16 @@
 /**
  * The tracer view's two engines: the CPU's progressive renderer (on Web
  * Workers for large frames) and the GPU's whole frames (lib/p5/gpu-renderer.js).
- * Switching keeps the scene, the camera and the order; when the GPU cannot
+ * A path-traced view goes to the GPU's path tracer (lib/p5/gpu-path-renderer.js)
+ * and back, with its path options. Switching keeps the scene, the camera and the order; when the GPU cannot
  * take the picture (no WebGL2, a lost context, a shape it cannot draw, a
  * visual mode other than the shaded picture, set before or after) the view
  * stays on, or goes back to, the CPU, and a line under the picture says why.
  */
 import { WorkerProgressiveRenderer } from '../tracing/workers/worker-frames.js';
 import { GpuRenderer } from './gpu-renderer.js';
+import { GpuPathRenderer } from './gpu-path-renderer.js';
+import { PathProgressiveRenderer } from '../tracing/pathtrace/progressive.js';
 import { element } from './dom.js';
 import { show } from '../text/check.js';
 
@@ -26,21 +29,22 @@ export function checkEngine(engine) {
  */
 export function engineRenderer(engine, current, { budgetMs, shader, shaded }) {
   const { scene, camera, order } = current;
-  const onGpu = current instanceof GpuRenderer;
+  const onGpu = current.engine === 'gpu', path = current.pathTraced ? current.options : null;
   let why = onGpu ? current.lost : null; // the GPU cannot go on: its context lost, or a visual mode
   if (engine === 'gpu' && !why) {
     if (onGpu) return { renderer: current, engine, why: null };
-    if (current.pathTraced) why = 'the GPU engine does not path trace';
-    else if (!shaded) why = 'the GPU draws the shaded picture only';
+    if (!path && !shaded) why = 'the GPU draws the shaded picture only';
     else {
       try {
-        return { renderer: new GpuRenderer({ scene, camera, order }), engine, why: null };
+        const renderer = path ? new GpuPathRenderer({ scene, camera, path, budgetMs }) : new GpuRenderer({ scene, camera, order });
+        return { renderer, engine, why: null };
       } catch (error) {
         why = error.message;
       }
     }
   }
   if (!onGpu) return { renderer: current, engine: 'cpu', why };
+  if (path) return { renderer: new PathProgressiveRenderer({ scene, camera, path, budgetMs }), engine: 'cpu', why };
   return { renderer: new WorkerProgressiveRenderer({ scene, camera, order, budgetMs, shader }), engine: 'cpu', why };
 }
 
@@ -64,7 +68,7 @@ export function showEngine(view, engine, why) {
  * @returns {HTMLElement[]}
  */
 export function gpuDifference(view, record) {
-  if (view.engine !== 'gpu') return [];
+  if (view.engine !== 'gpu' || view.pathState) return []; // a path-traced pixel is a mean of random paths, not the record's colour
   const i = (record.y * view.width + record.x) * 4, gpu = view.buffer;
   const delta = [0, 1, 2].map((c) => gpu[i + c] - record.color[c]);
   if (delta.every((d) => d === 0)) return [element('p', { class: 'rt-note', 'data-gpu-difference': '0' }, 'The GPU drew this pixel with the same bytes.')];

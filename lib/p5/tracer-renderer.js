@@ -25,8 +25,8 @@ export function viewRenderer({ scene, camera, mode, order, renderMode, path, bud
   return new WorkerProgressiveRenderer({ scene, camera, order: checked, budgetMs, shader: modeShader(mode), workers });
 }
 
-/** True when the view's renderer path traces (setPath and pathState ask). */
-export const pathTraced = (renderer) => renderer instanceof PathProgressiveRenderer;
+/** True when the view's renderer path traces, on the CPU or the GPU (setPath and pathState ask). */
+export const pathTraced = (renderer) => renderer.pathTraced === true;
 
 /** A render order ('coarse', 'scanline', 'slow'), checked before anything changes. */
 export function checkOrder(order, field = 'order') {

@@ -57,7 +57,7 @@ import { viewRenderer, pathTraced, checkOrder, checkBudget } from './tracer-rend
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where to put it (element, id or p5.Element); default the sketch's node
  * @param {string} [options.label] a caption above the picture
  * @param {boolean} [options.legend=true] show the mode's legend under the picture (not for 'shaded')
- * @param {'cpu'|'gpu'} [options.engine='cpu'] 'gpu': a whole frame every animation frame by WebGL2 (lib/gpu/), back to the CPU with a line on the page when WebGL2 is missing or lost
+ * @param {'cpu'|'gpu'} [options.engine='cpu'] 'gpu': a whole frame every animation frame by WebGL2 (lib/gpu/), with `path` its samples pass after pass; back to the CPU with a line on the page when WebGL2 is missing or lost
  * @param {object} [options.path] path trace the picture instead, sample after sample, with pathTrace's options
  *   (`{ samples, seed, maxBounces, sky, roulette }`); the progress line counts the samples ("Sample 37 of 256")
  * @returns {TracerView}

@@ -24,9 +24,10 @@ export const MATERIAL_FIELDS = Object.freeze([
   { name: 'ior', value: 1.1, check: (v) => numberInRange(v, 'ior', 1, 4), numbers: 1 },
   { name: 'specular', value: 0, check: (v) => numberInRange(v, 'specular', 0, 1), numbers: 1 },
   { name: 'shininess', value: 50, check: (v) => numberInRange(v, 'shininess', 1, 10000), numbers: 1 },
-  // The path tracer's metal blur (lib/tracing/pathtrace/materials.js packs it): Whitted's tracer and the GPU do not
-  // read it, so it packs as no number; left out of the JSON at 0, so scenes saved before it read and write the same.
-  { name: 'fuzz', value: 0, check: (v) => numberInRange(v, 'fuzz', 0, 1), numbers: 0, omitAtDefault: true },
+  // The path tracer's metal blur: Whitted's tracer ignores it; it packs as one number, last, for the GPU's path
+  // tracer (lib/gpu/glsl-paths.js), which reads the packed scene. Left out of the JSON at 0, so scenes saved before
+  // it read and write the same.
+  { name: 'fuzz', value: 0, check: (v) => numberInRange(v, 'fuzz', 0, 1), numbers: 1, omitAtDefault: true },
 ].map((field) => Object.freeze(field)));
 
 /** The options a material takes: its fields' names. */

@@ -35,8 +35,8 @@ import { lambert, specular, lightShare, spotShare, falloff, refract, fresnel as 
 const SHAPE = 7, KIND = 6, P = 0, N = 3;
 /** lib/lights/packed.js: numbers per light source, and where each of its fields lies. */
 const LIGHT = 14, LIGHT_EMISSION = 3, LIGHT_SHAPE = 6, ATTENUATION = 7, IS_SPOT = 8, AXIS = 9, COS_OUTER = 12, COS_INNER = 13;
-/** lib/shapes/material.js's table: numbers per material (r g b, emission r g b, reflection, transparency, ior, specular, shininess), where each field lies. */
-const MATERIAL = 11, EMISSION = 3, REFLECTION = 6, TRANSPARENCY = 7, IOR = 8, SPECULAR = 9, SHININESS = 10;
+/** lib/shapes/material.js's table: numbers per material (r g b, emission r g b, reflection, transparency, ior, specular, shininess, fuzz), where each field lies. */
+const MATERIAL = 12, EMISSION = 3, REFLECTION = 6, TRANSPARENCY = 7, IOR = 8, SPECULAR = 9, SHININESS = 10;
 checkCopies({ SHAPE, KIND, P, N }, shapeLayout, 'lib/shapes/packed.js');
 checkCopies({ LIGHT, LIGHT_EMISSION, LIGHT_SHAPE, ATTENUATION, IS_SPOT, AXIS, COS_OUTER, COS_INNER }, lightLayout, 'lib/lights/packed.js');
 checkCopies({ MATERIAL, EMISSION, REFLECTION, TRANSPARENCY, IOR, SPECULAR, SHININESS }, materialLayout(), 'lib/shapes/material.js');

@@ -119,7 +119,7 @@ describe('one table of material fields (MATERIAL_FIELDS)', () => {
   it('is what the packed scene holds, at MATERIAL_AT, MATERIAL_NUMBERS a material', () => {
     const out = new Float64Array(MATERIAL_NUMBERS);
     packMaterial(m, out, 0);
-    expect(MATERIAL_NUMBERS).toBe(11);
+    expect(MATERIAL_NUMBERS).toBe(12);
     expect([...out.slice(MATERIAL_AT.emission, MATERIAL_AT.emission + 3)]).toEqual([0.4, 0.5, 0.6]);
     expect([out[MATERIAL_AT.reflection], out[MATERIAL_AT.transparency], out[MATERIAL_AT.ior], out[MATERIAL_AT.specular], out[MATERIAL_AT.shininess]]).toEqual([0.7, 0.8, 1.5, 0.9, 20]);
     const packed = packScene(new Scene().add(new Sphere([0, 0, -5], 1, m)));

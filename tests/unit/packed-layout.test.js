@@ -14,7 +14,7 @@ it('a copy equal to its owner passes; one that differs throws, naming the offset
   expect(() => checkCopies({ SHAPE: 7, KIND: 6, P: 0, N: 3 }, shapeLayout, 'lib/shapes/packed.js')).not.toThrow();
   expect(() => checkCopies({ LIGHT: 15 }, lightLayout, 'lib/lights/packed.js'))
     .toThrow("LIGHT is 15 in a copy of lib/lights/packed.js's layout, which says 14: change the copy");
-  expect(() => checkCopies({ MATERIAL: 11 }, { MATERIAL: MATERIAL_NUMBERS + 1 }, 'lib/shapes/material.js')).toThrow(/MATERIAL is 11 .* which says 12/);
+  expect(() => checkCopies({ MATERIAL: 12 }, { MATERIAL: MATERIAL_NUMBERS + 1 }, 'lib/shapes/material.js')).toThrow(/MATERIAL is 12 .* which says 13/);
 });
 
 it('the kernel packs by its owners\' numbers: a material at MATERIAL_NUMBERS apart, a light at LIGHT apart', () => {
