@@ -30,6 +30,11 @@ test('a 100,000-character name of a cylinder or an area light is cut in the insp
   await expect(panel.locator('[data-field="more-area-lights"]')).toHaveText(`and ${AREA - AREA_LIGHTS_SHOWN} more area lights, not shown`);
   const widest = await page.evaluate(() => Math.max(document.documentElement.scrollWidth, ...[...document.querySelectorAll('[data-inspector] *')].map((e) => e.getBoundingClientRect().right)));
   expect(widest).toBeLessThanOrEqual(1280);
-  const longest = await panel.evaluate((p) => Math.max(...[...p.querySelectorAll('th, td, p, span, summary')].map((e) => e.childNodes.length === 1 && e.firstChild.nodeType === 3 ? e.textContent.length : 0)));
+  // Every text shown is short; the sentence a screen reader hears (hidden, one per part) names each light cut too.
+  const longest = await panel.evaluate((p) => Math.max(...[...p.querySelectorAll('th, td, p:not([hidden]), span, summary')].map((e) => e.childNodes.length === 1 && e.firstChild.nodeType === 3 ? e.textContent.length : 0)));
   expect(longest).toBeLessThan(200);
+  const spoken = await panel.locator('[data-announce="pixel"]').textContent();
+  expect(spoken).toMatch(/^Pixel: \d+,\d+; H: /);
+  expect(Math.max(...spoken.split(/\s+/).map((word) => word.length)), spoken).toBeLessThanOrEqual(42); // a name of 40 characters and its "…;"
+  expect(spoken.length, spoken).toBeLessThan(400);
 });
