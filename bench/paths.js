@@ -8,24 +8,11 @@
  */
 import { performance } from 'node:perf_hooks';
 import { bytesAllocatedBy } from '../tests/shared/heap.js';
-import { Scene, Plane, Box, Sphere, Camera, classScene, pathTrace } from '../lib/index.js';
+import { Scene, Sphere, Camera, classScene, pathTrace } from '../lib/index.js';
+import { cornellBox, cornellCamera } from '../tests/shared/cornell-box.js';
 
-const WHITE = [0.73, 0.73, 0.73];
-
-/** Sketch 16's room, as the page builds it with its lamp at 8. */
-function cornellBox() {
-  const scene = new Scene({ background: [0, 0, 0] });
-  scene.add(new Plane([0, 0, 0], [0, 1, 0], { color: WHITE, name: 'floor' }));
-  scene.add(new Plane([0, 10, 0], [0, -1, 0], { color: WHITE, name: 'ceiling' }));
-  scene.add(new Plane([0, 0, -20], [0, 0, 1], { color: WHITE, name: 'back wall' }));
-  scene.add(new Plane([0, 0, 5], [0, 0, -1], { color: WHITE, name: 'front wall' }));
-  scene.add(new Plane([-5, 0, 0], [1, 0, 0], { color: [0.65, 0.05, 0.05], name: 'red wall' }));
-  scene.add(new Plane([5, 0, 0], [-1, 0, 0], { color: [0.12, 0.45, 0.15], name: 'green wall' }));
-  scene.add(new Box([-2.5, 9.8, -17], [2.5, 9.99, -12], { color: [0, 0, 0], emission: [8, 8, 7.2], name: 'lamp' }));
-  scene.add(new Box([-3.6, 0, -18], [-0.8, 6, -15], { color: WHITE, name: 'tall block' }));
-  scene.add(new Sphere([2.2, 1.8, -13], 1.8, { color: [0.9, 0.9, 0.9], reflection: 1, fuzz: 0.05, name: 'mirror ball' }));
-  return { scene, camera: new Camera({ width: 320, height: 240, fov: 40, position: [0, 5, 3.7] }) };
-}
+/** Sketch 16's room, as the page builds it with its lamp at 8, at 320×240. */
+const cornellRoom = () => ({ scene: cornellBox(8), camera: cornellCamera(320, 240) });
 
 /** Sketch 17's scene, *Ray Tracing in One Weekend*'s last picture small: 90 balls on a ground ball under the book's sky. */
 function oneWeekend() {
@@ -67,8 +54,8 @@ function measure(label, { scene, camera }, options) {
 
 export function runPathBench() {
   console.log('\nPath tracing, one core, 320×240 (pathTrace; median of 5 frames; heap per sample over one more):');
-  measure('Cornell box (sketch 16), 4 samples, 16 bounces', cornellBox(), { samples: 4, maxBounces: 16 });
-  measure('Cornell box, 1 bounce (direct light only)', cornellBox(), { samples: 4, maxBounces: 1 });
+  measure('Cornell box (sketch 16), 4 samples, 16 bounces', cornellRoom(), { samples: 4, maxBounces: 16 });
+  measure('Cornell box, 1 bounce (direct light only)', cornellRoom(), { samples: 4, maxBounces: 1 });
   const scene = classScene();
   measure('the class scene under its sky, 4 samples', { scene, camera: new Camera({ width: 320, height: 240 }) }, { samples: 4 });
   measure('One weekend\'s final scene (sketch 17), 2 samples', oneWeekend(), { samples: 2, sky: { top: [0.5, 0.7, 1], bottom: [1, 1, 1] } });

@@ -1,6 +1,6 @@
 // Sketch 16's Cornell box (sketches/16-light-that-bounces.js builds the same
-// scene in its own words, for the class to read), for the GPU path tracer's
-// test and benchmark: white floor, ceiling, back and front walls, a red wall
+// scene in its own words, for the class to read), for the path tracers'
+// tests and benchmarks (bench/paths.js, bench/browser/paths.js): white floor, ceiling, back and front walls, a red wall
 // left, a green one right, a lamp under the ceiling, a tall block and a
 // fuzzy mirror ball; the eye inside, at [0, 5, 3.7], looking down −z.
 import { Scene, Plane, Box, Sphere, Camera } from '../../lib/index.js';
