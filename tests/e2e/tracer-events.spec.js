@@ -67,7 +67,7 @@ test('what a sketch needs is the view\'s own: the picture\'s bytes and the slow-
  * it, with inspectPixel wrapped to count into window.inspections.
  */
 async function countInspections(page) {
-  await page.route(/\/lib\/explain\.js(\?.*)?$/, async (route) => {
+  await page.route(/\/lib\/lesson\/inspect\.js(\?.*)?$/, async (route) => {
     const response = await route.fetch();
     const body = (await response.text()).replace('export function inspectPixel(', 'function tracedInspectPixel(')
       + '\nexport function inspectPixel(...args) { globalThis.inspections = (globalThis.inspections ?? 0) + 1; return tracedInspectPixel(...args); }\n';
