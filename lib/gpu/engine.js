@@ -17,18 +17,31 @@ export function noWebGL2() {
   return null;
 }
 
+/**
+ * A canvas (the one given, else a new one) and its WebGL2 context, as both GPU tracers want it;
+ * an Error saying why when there is none.
+ * @param {HTMLCanvasElement|OffscreenCanvas|undefined} canvas
+ * @param {boolean} preserveDrawingBuffer
+ * @returns {{ canvas: HTMLCanvasElement|OffscreenCanvas, gl: WebGL2RenderingContext }}
+ */
+export function webgl2Context(canvas, preserveDrawingBuffer) {
+  const why = noWebGL2();
+  if (why) throw new Error(`the GPU engine needs WebGL2: ${why}`);
+  const made = canvas ?? (typeof document !== 'undefined' ? document.createElement('canvas') : new OffscreenCanvas(1, 1));
+  const gl = /** @type {WebGL2RenderingContext | null} */ (made.getContext('webgl2', { antialias: false, depth: false, stencil: false, preserveDrawingBuffer, premultipliedAlpha: false }));
+  if (!gl) throw new Error('the GPU engine needs WebGL2: this browser gives no WebGL2 context (switched off, or no GPU driver)');
+  return { canvas: made, gl };
+}
+
 export class GpuTracer {
   /**
    * @param {HTMLCanvasElement|OffscreenCanvas} [canvas] where frames are drawn (a new one when left out)
    * @param {{ preserveDrawingBuffer?: boolean }} [options] keep the last frame readable after the page shows it (a view's)
    */
   constructor(canvas, { preserveDrawingBuffer = false } = {}) {
-    const why = noWebGL2();
-    if (why) throw new Error(`the GPU engine needs WebGL2: ${why}`);
-    this.canvas = canvas ?? (typeof document !== 'undefined' ? document.createElement('canvas') : new OffscreenCanvas(1, 1));
-    const gl = this.canvas.getContext('webgl2', { antialias: false, depth: false, stencil: false, preserveDrawingBuffer, premultipliedAlpha: false });
-    if (!gl) throw new Error('the GPU engine needs WebGL2: this browser gives no WebGL2 context (switched off, or no GPU driver)');
-    this.gl = gl;
+    const made = webgl2Context(canvas, preserveDrawingBuffer);
+    this.canvas = made.canvas;
+    const gl = this.gl = made.gl;
     /** The shader with the BVH walk and without it (made when a scene first needs it), and their uniforms. */
     this.programs = new Map();
     /** @type {WebGLProgram | null} the program of the scene set last */

@@ -8,7 +8,7 @@
 import { pathSource, SHOW_SOURCE } from './glsl-paths.js';
 import { SHAPE_CODES } from './glsl-kernel.js';
 import { gpuScene } from './upload.js';
-import { TEXTURES, noWebGL2, uploadScene, bindScene, link } from './engine.js';
+import { TEXTURES, webgl2Context, uploadScene, bindScene, link } from './engine.js';
 
 /** Who asks, in gpuScene's errors. */
 export const PATHS = Object.freeze({ cannot: 'pathTraceGPU cannot path trace', cpu: 'pathTrace() traces it on the CPU' });
@@ -25,13 +25,10 @@ export class GpuPathTracer {
    * @param {{ preserveDrawingBuffer?: boolean }} [options]
    */
   constructor(canvas, { preserveDrawingBuffer = false } = {}) {
-    const why = noWebGL2();
-    if (why) throw new Error(`the GPU engine needs WebGL2: ${why}`);
-    this.canvas = canvas ?? (typeof document !== 'undefined' ? document.createElement('canvas') : new OffscreenCanvas(1, 1));
-    const gl = this.canvas.getContext('webgl2', { antialias: false, depth: false, stencil: false, preserveDrawingBuffer, premultipliedAlpha: false });
-    if (!gl) throw new Error('the GPU engine needs WebGL2: this browser gives no WebGL2 context (switched off, or no GPU driver)');
+    const made = webgl2Context(canvas, preserveDrawingBuffer);
+    this.canvas = made.canvas;
+    const gl = this.gl = made.gl;
     if (!gl.getExtension('EXT_color_buffer_float')) throw new Error('the GPU engine needs WebGL2 with float colour buffers (EXT_color_buffer_float) to add up paths: this browser has none');
-    this.gl = gl;
     /** The path shader with the BVH walk and without it, made when a scene first needs it. */
     this.programs = new Map();
     this.program = null;
