@@ -31,12 +31,12 @@ describe('path tracing allocates nothing per sample', () => {
     // V8 optimises on a thread of its own: on a busy machine the warm-up may end before the optimised code
     // is in, and the code still running unoptimised boxes numbers. The least of a few tries is the optimised code's.
     let least = Infinity;
-    for (let attempt = 0; attempt < 5 && least >= 4; attempt++) {
+    for (let attempt = 0; attempt < 12 && least >= 4; attempt++) { // stops at the first try under 4
       for (let i = 0; i < 20; i++) pathTrace(scene, camera, { samples: 16 }); // warm up
       least = Math.min(least, bytesAllocatedBy(() => pathTrace(scene, camera, { samples })) / paths);
     }
     // A boxed number per hit test or bounce costs hundreds of bytes a path; the frame itself (its bytes,
     // packed scene) some 30 kB in all, about 1 byte a path of this small frame.
-    expect(least).toBeLessThan(4);
+    expect(least, `bytes a path, the least of the tries`).toBeLessThan(4);
   });
 });
