@@ -49,6 +49,21 @@ describe('the README', () => {
     for (const doc of ['docs/teachers-guide.md', 'docs/DEVELOPERS.md', 'docs/performance.md', 'docs/security.md', 'docs/access.md']) expect(links, doc).toContain(doc);
   });
 
+  it('tells a teacher serving a class the two things only the terminal said: --allow-host and npm 11\'s allowScripts notice', () => {
+    for (const file of ['README.md', 'docs/teachers-guide.md']) {
+      const text = readFileSync(file, 'utf8');
+      expect(text, file).toMatch(/npm run class -- --allow-host \S+/);
+      expect(text, file).toMatch(/allowScripts/);
+    }
+  });
+
+  it('says the homework is written and run in the page (its editor), not saved to a file that reloads', () => {
+    const homework = /## Homework\n([\s\S]*?)\n## /.exec(readFileSync('docs/teachers-guide.md', 'utf8'))[1];
+    expect(homework).toMatch(/editor in the\s+page/);
+    expect(homework).toMatch(/\*\*Run\*\*/);
+    expect(homework).not.toMatch(/saves? \(the page re-?(traces|loads)\)/);
+  });
+
   it('has a first library example that draws a lit ball, not an almost black one', () => {
     const readme = readFileSync('README.md', 'utf8');
     const code = /```js\n(import \{[^}]*\} from '\.\/lib\/index\.js';\n[\s\S]*?render\([\s\S]*?)```/.exec(readme)[1];
