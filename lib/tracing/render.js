@@ -15,6 +15,7 @@ import { Camera, sampleOffsets } from '../math/camera.js';
 import { clamp } from '../math/numbers.js';
 import { show, pixelCoordinate } from '../text/check.js';
 import { packScene, tracePrimary } from './kernel.js';
+import { checkScene, checkCamera } from '../scene/check.js';
 
 const _ray = new Ray();
 const _color = [0.5, 0.5, 0.5]; // doubles from the start (one array shape)
@@ -186,8 +187,17 @@ export function writePixel(target, i, color) {
   target[i + 3] = 255;
 }
 
-/** A TypeError unless `scene` is a Scene and `camera` a Camera (render's and inspectPixel's first check). */
+/**
+ * Every tracer's first check (render, renderGPU, pathTrace, inspectPixel,
+ * inspectPath, and the renderers as they start again): a TypeError unless
+ * `scene` is a Scene and `camera` a Camera, then both checked as they are now
+ * (lib/scene/check.js: a sketch may have changed them since they were made),
+ * a TypeError or RangeError naming the field (`objects[2].radius`, `lights[1]`).
+ * Once per call, never per pixel.
+ */
 export function checkSceneAndCamera(scene, camera) {
   if (!(scene instanceof Scene)) throw new TypeError(`scene must be a Scene (new Scene(…)), got ${show(scene)}`);
   if (!(camera instanceof Camera)) throw new TypeError(`camera must be a Camera (new Camera({ width, height })), got ${show(camera)}`);
+  checkCamera(camera);
+  checkScene(scene);
 }
