@@ -25,6 +25,9 @@
 import { modeShader, modeLegend } from '../tracing/modes.js';
 import { pixelCoordinate, checkOptions } from '../text/check.js';
 import { inspectPixel } from '../lesson/inspect.js';
+import { Scene } from '../scene/scene.js';
+import { checkScene } from '../scene/check.js';
+import { showError } from './error-panel.js';
 import { registerView } from './page-state.js';
 import { useStyle, element, resolveParent, sketchNode } from './dom.js';
 import { addProjectorSwitch } from './projector.js';
@@ -150,7 +153,7 @@ export class TracerView {
    * listener (inspector, 3D view, tasks, sample rays) reads the same one.
    */
   get record() {
-    if (this.#record === undefined) this.#record = this.#selected ? inspectPixel(this.scene, this.camera, this.#selected.x, this.#selected.y) : null;
+    if (this.#record === undefined) this.#record = this.#selected && this.#sceneHolds(this.scene) ? inspectPixel(this.scene, this.camera, this.#selected.x, this.#selected.y) : null;
     return this.#record;
   }
   /** On-screen pixels per traced pixel right now. */
@@ -328,6 +331,7 @@ export class TracerView {
   /* ---------------- rendering ---------------- */
 
   #change(changes) {
+    if (!this.#sceneHolds(changes.scene ?? this.scene)) return this;
     this.#renderer.restart(changes); // checks everything before changing anything
     const s = this.#selected;
     if (s && (s.x >= this.width || s.y >= this.height)) {
@@ -336,6 +340,26 @@ export class TracerView {
     this.#started();
     if (this.#selected) this.#notify();
     return this;
+  }
+
+  /**
+   * The scene checked as it is now (lib/scene/check.js): a sketch may have
+   * broken it since it was built (a radius set to NaN, null pushed into
+   * lights). When it does not hold, the page says why in the mistake panel,
+   * with the sketch's line, and nothing changes: the last good picture stays,
+   * nothing is thrown into the sketch's draw and nothing reaches the console.
+   * Something that is no Scene at all is left to the renderer, which throws.
+   */
+  #sceneHolds(scene) {
+    if (!(scene instanceof Scene)) return true;
+    try {
+      checkScene(scene);
+      return true;
+    } catch (error) {
+      if (!(error instanceof TypeError || error instanceof RangeError)) throw error;
+      showError(error);
+      return false;
+    }
   }
 
   /** A fresh render: resize if needed, clear, mark the page, start the frame loop. */
