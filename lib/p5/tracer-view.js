@@ -153,7 +153,7 @@ export class TracerView {
    * listener (inspector, 3D view, tasks, sample rays) reads the same one.
    */
   get record() {
-    if (this.#record === undefined) this.#record = this.#selected && this.#sceneHolds(this.scene) ? inspectPixel(this.scene, this.camera, this.#selected.x, this.#selected.y) : null;
+    if (this.#record === undefined) this.#record = this.#selected ? inspectPixel(this.scene, this.camera, this.#selected.x, this.#selected.y) : null;
     return this.#record;
   }
   /** On-screen pixels per traced pixel right now. */
@@ -243,8 +243,10 @@ export class TracerView {
   /**
    * Selects pixel (x, y) of the traced image (whole numbers in range, else a
    * RangeError); null clears the selection. Calls the onSelect listeners.
+   * A scene broken since it was traced selects nothing: the mistake panel says why.
    */
   select(x, y) {
+    if (x !== null && !this.#sceneHolds(this.scene)) return this;
     if (x === null) {
       this.#selected = null;
     } else {
