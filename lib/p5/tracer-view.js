@@ -25,9 +25,7 @@
 import { modeShader, modeLegend } from '../tracing/modes.js';
 import { pixelCoordinate, checkOptions } from '../text/check.js';
 import { inspectPixel } from '../lesson/inspect.js';
-import { Scene } from '../scene/scene.js';
-import { checkScene } from '../scene/check.js';
-import { showError } from './error-panel.js';
+import { sceneHolds } from './scene-holds.js';
 import { registerView } from './page-state.js';
 import { useStyle, element, resolveParent, sketchNode } from './dom.js';
 import { addProjectorSwitch } from './projector.js';
@@ -246,7 +244,7 @@ export class TracerView {
    * A scene broken since it was traced selects nothing: the mistake panel says why.
    */
   select(x, y) {
-    if (x !== null && !this.#sceneHolds(this.scene)) return this;
+    if (x !== null && !sceneHolds(this.scene)) return this;
     if (x === null) {
       this.#selected = null;
     } else {
@@ -333,7 +331,7 @@ export class TracerView {
   /* ---------------- rendering ---------------- */
 
   #change(changes) {
-    if (!this.#sceneHolds(changes.scene ?? this.scene)) return this;
+    if (!sceneHolds(changes.scene ?? this.scene)) return this;
     this.#renderer.restart(changes); // checks everything before changing anything
     const s = this.#selected;
     if (s && (s.x >= this.width || s.y >= this.height)) {
@@ -342,26 +340,6 @@ export class TracerView {
     this.#started();
     if (this.#selected) this.#notify();
     return this;
-  }
-
-  /**
-   * The scene checked as it is now (lib/scene/check.js): a sketch may have
-   * broken it since it was built (a radius set to NaN, null pushed into
-   * lights). When it does not hold, the page says why in the mistake panel,
-   * with the sketch's line, and nothing changes: the last good picture stays,
-   * nothing is thrown into the sketch's draw and nothing reaches the console.
-   * Something that is no Scene at all is left to the renderer, which throws.
-   */
-  #sceneHolds(scene) {
-    if (!(scene instanceof Scene)) return true;
-    try {
-      checkScene(scene);
-      return true;
-    } catch (error) {
-      if (!(error instanceof TypeError || error instanceof RangeError)) throw error;
-      showError(error);
-      return false;
-    }
   }
 
   /** A fresh render: resize if needed, clear, mark the page, start the frame loop. */

@@ -95,9 +95,11 @@ function checkMaterial(m, i) {
 
 /** Three finite numbers from 0 to MAX_COLOR: a colour toColor would take as it is. */
 function isColor(value) {
-  if (!(Array.isArray(value) || ArrayBuffer.isView(value)) || value.length !== 3) return false;
+  if (!(Array.isArray(value) || ArrayBuffer.isView(value))) return false;
+  const list = /** @type {ArrayLike<unknown>} */ (value);
+  if (list.length !== 3) return false;
   for (let c = 0; c < 3; c++) {
-    const v = value[c];
+    const v = list[c];
     if (typeof v !== 'number' || !(v >= 0 && v <= MAX_COLOR)) return false;
   }
   return true;
