@@ -8,7 +8,6 @@
  */
 import { Scene } from '../scene/scene.js';
 import { checkScene } from '../scene/check.js';
-import { showError } from './error-panel.js';
 
 /**
  * True when `scene` holds as it is now (lib/scene/check.js), or is no Scene
@@ -24,7 +23,7 @@ export function sceneHolds(scene) {
     return true;
   } catch (error) {
     if (!(error instanceof TypeError || error instanceof RangeError)) throw error;
-    showError(error);
+    import('./error-panel.js').then((panel) => panel.showError(error)); // loaded here, not above: importing the view touches no page
     return false;
   }
 }
