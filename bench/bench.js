@@ -69,7 +69,7 @@ function timeSideBySide(cases, frames) {
 function makeCase(label, full, width, height) {
   const camera = new Camera({ width, height, fov: 30, position: [0, 0, 0] });
   const c = { label, scene: classScene({ full }), camera, target: new Uint8ClampedArray(width * height * 4) };
-  c.run = () => render(c.scene, c.camera, c.target);
+  c.run = () => render(c.scene, c.camera, c.target, undefined, { blocking: true }); // whole frames on purpose: a benchmark, not a page
   return c;
 }
 
@@ -210,7 +210,7 @@ try {
   } else {
     const c = large[0], out = join(dir, 'frame.rgba');
     runReference(reference.binary, 1, out);
-    const cFrame = readFileSync(out), jsFrame = render(c.scene, c.camera);
+    const cFrame = readFileSync(out), jsFrame = render(c.scene, c.camera, undefined, undefined, { blocking: true });
     let differ = 0;
     for (let i = 0; i < jsFrame.length; i++) if (jsFrame[i] !== cFrame[i]) differ++;
     // Alternately: a few frames of C, then as many of render(), round after round, so

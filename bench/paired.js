@@ -49,7 +49,7 @@ function extract(commit, dir) {
 function frameOf(lib, full) {
   const camera = new lib.Camera({ width: 640, height: 480, fov: 30, position: [0, 0, 0] });
   const scene = lib.classScene({ full }), target = new Uint8ClampedArray(640 * 480 * 4);
-  return { run: () => lib.render(scene, camera, target), target };
+  return { run: () => lib.render(scene, camera, target, undefined, { blocking: true }), target }; // an older render() ignores the fifth argument
 }
 
 /** Old and new in turns: per round PER_ROUND frames of each; the medians and the median of the rounds' ratios. */

@@ -38,7 +38,8 @@ function oneWeekend() {
 const median = (values) => [...values].sort((a, b) => a - b)[values.length >> 1];
 
 /** Samples per second and bytes per sample of one scene at 320×240, `samples` paths a pixel a frame. */
-function measure(label, { scene, camera }, options) {
+function measure(label, { scene, camera }, given) {
+  const options = { ...given, blocking: true }; // a whole frame at once, on purpose: a benchmark, not a page
   const paths = camera.width * camera.height * options.samples;
   for (let i = 0; i < 2; i++) pathTrace(scene, camera, options); // warm up
   const times = [];

@@ -5,6 +5,7 @@
  */
 import { checkSceneAndCamera } from '../tracing/render.js';
 import { GpuTracer } from './engine.js';
+import { readBlocking, checkGpuWork } from '../tracing/budget.js';
 
 let engine = null;
 
@@ -14,6 +15,8 @@ let engine = null;
  * of render()'s bytes on all but grazing pixels (tests/e2e/gpu.spec.js).
  * @param {import('../scene/scene.js').Scene} scene
  * @param {import('../math/camera.js').Camera} camera
+ * @param {{ blocking?: boolean }} [options] `blocking: true` waits however long the GPU takes; without it, a frame
+ *   of more than GPU_SHAPE_TESTS ray–shape tests (pixels × shapes, lib/tracing/budget.js) throws a RangeError
  * @returns {Uint8ClampedArray} RGBA, width × height × 4, row 0 at the top
  * @throws {Error} without WebGL2, or for a shape the GPU cannot draw (the error names it)
  * @example
@@ -21,8 +24,9 @@ let engine = null;
  * // in a browser with WebGL2, frame() is render()'s picture traced on the GPU;
  * // in Node it throws "the GPU engine needs WebGL2: there is no canvas here (a browser is needed)"
  */
-export function renderGPU(scene, camera) {
+export function renderGPU(scene, camera, options) {
   checkSceneAndCamera(scene, camera);
+  if (!readBlocking(options, 'renderGPU')) checkGpuWork(scene, camera);
   if (!engine || engine.lost) engine = new GpuTracer();
   engine.setScene(scene);
   engine.draw(camera);

@@ -25,6 +25,7 @@
 import { modeShader, modeLegend } from '../tracing/modes.js';
 import { pixelCoordinate, checkOptions } from '../text/check.js';
 import { inspectPixel } from '../lesson/inspect.js';
+import { sceneHolds } from './scene-holds.js';
 import { registerView } from './page-state.js';
 import { useStyle, element, resolveParent, sketchNode } from './dom.js';
 import { addProjectorSwitch } from './projector.js';
@@ -240,8 +241,10 @@ export class TracerView {
   /**
    * Selects pixel (x, y) of the traced image (whole numbers in range, else a
    * RangeError); null clears the selection. Calls the onSelect listeners.
+   * A scene broken since it was traced selects nothing: the mistake panel says why.
    */
   select(x, y) {
+    if (x !== null && !sceneHolds(this.scene)) return this;
     if (x === null) {
       this.#selected = null;
     } else {
@@ -328,6 +331,7 @@ export class TracerView {
   /* ---------------- rendering ---------------- */
 
   #change(changes) {
+    if (!sceneHolds(changes.scene ?? this.scene)) return this;
     this.#renderer.restart(changes); // checks everything before changing anything
     const s = this.#selected;
     if (s && (s.x >= this.width || s.y >= this.height)) {

@@ -116,6 +116,18 @@ export class Sphere {
     return new Sphere(o.center, o.radius, material);
   }
 
+  /**
+   * Its fields checked again as they are now (lib/scene/check.js, before every
+   * trace): a quick look, nothing built, while they are what the constructor
+   * makes; else the constructor's checks, which throw naming the field, or
+   * take a centre given as [x, y, z] as the constructor does.
+   */
+  static check(sphere, material) {
+    const c = sphere.center, r = sphere.radius;
+    if (c instanceof Vec3 && Number.isFinite(c.x) && Number.isFinite(c.y) && Number.isFinite(c.z) && Number.isFinite(r) && r > 0) return;
+    sphere.center = Sphere.build(sphere, material).center;
+  }
+
   /** Its packed form for render()'s kernel (lib/shapes/packed.js): cx cy cz radius. */
   static get packed() { return PACKED; }
 

@@ -15,6 +15,8 @@ import { Camera, sampleOffsets } from '../math/camera.js';
 import { clamp } from '../math/numbers.js';
 import { show, pixelCoordinate } from '../text/check.js';
 import { packScene, tracePrimary } from './kernel.js';
+import { checkScene, checkCamera } from '../scene/check.js';
+import { readBlocking, checkRenderWork } from './budget.js';
 
 const _ray = new Ray();
 const _color = [0.5, 0.5, 0.5]; // doubles from the start (one array shape)
@@ -27,13 +29,17 @@ const _color = [0.5, 0.5, 0.5]; // doubles from the start (one array shape)
  * @param {Camera} camera
  * @param {Uint8ClampedArray} [target] RGBA, at least width·height·4 bytes (a new one when left out)
  * @param {{y0: number, y1: number}} [rows] render only rows y0 ≤ y < y1 (a worker's band), 0 ≤ y0 ≤ y1 ≤ height
+ * @param {{ blocking?: boolean }} [options] `blocking: true` traces however long it takes; without it, a frame
+ *   of more than RENDER_RAYS rays (lib/tracing/budget.js: about a second on a slow laptop, the page frozen) throws a
+ *   RangeError pointing to the tracer view and the Web Workers
  * @returns {Uint8ClampedArray} RGBA, row by row from the top
  * @example
  * const rgba = render(classScene(), new Camera({ width: 64, height: 48 }));
  * rgba.length; // 64 · 48 · 4 bytes: r, g, b, a of each pixel, row by row from the top left
  */
-export function render(scene, camera, target, rows) {
+export function render(scene, camera, target, rows, options) {
   checkSceneAndCamera(scene, camera);
+  const blocking = readBlocking(options, 'render');
   const bytes = camera.width * camera.height * 4;
   if (target === undefined) target = new Uint8ClampedArray(bytes);
   else if (!(target instanceof Uint8ClampedArray)) throw new TypeError(`target must be a Uint8ClampedArray, got ${show(target)}`);
@@ -45,6 +51,7 @@ export function render(scene, camera, target, rows) {
     pixelCoordinate(y1, 'rows.y1', camera.height + 1);
     if (y1 < y0) throw new RangeError(`rows.y1 must not be less than rows.y0, got y0 = ${y0}, y1 = ${y1}`);
   }
+  if (!blocking) checkRenderWork(scene, camera, y1 - y0);
   return renderRows(scene, camera, target, y0, y1, prepareFrame(scene, camera, y0, y1));
 }
 
@@ -186,8 +193,17 @@ export function writePixel(target, i, color) {
   target[i + 3] = 255;
 }
 
-/** A TypeError unless `scene` is a Scene and `camera` a Camera (render's and inspectPixel's first check). */
+/**
+ * Every tracer's first check (render, renderGPU, pathTrace, inspectPixel,
+ * inspectPath, and the renderers as they start again): a TypeError unless
+ * `scene` is a Scene and `camera` a Camera, then both checked as they are now
+ * (lib/scene/check.js: a sketch may have changed them since they were made),
+ * a TypeError or RangeError naming the field (`objects[2].radius`, `lights[1]`).
+ * Once per call, never per pixel.
+ */
 export function checkSceneAndCamera(scene, camera) {
   if (!(scene instanceof Scene)) throw new TypeError(`scene must be a Scene (new Scene(…)), got ${show(scene)}`);
   if (!(camera instanceof Camera)) throw new TypeError(`camera must be a Camera (new Camera({ width, height })), got ${show(camera)}`);
+  checkCamera(camera);
+  checkScene(scene);
 }

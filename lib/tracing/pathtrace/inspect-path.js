@@ -8,7 +8,7 @@ import { checkSceneAndCamera } from '../render.js';
 import { checkOptions, show } from '../../text/check.js';
 import { angles } from '../../math/camera.js';
 import { shapeName } from '../../scene/scene.js';
-import { readPathOptions, preparePaths, checkPixel, PATH_OPTIONS } from './path-trace.js';
+import { readPathOptions, preparePaths, checkPixel, PATH_OPTIONS, MAX_SAMPLES } from './path-trace.js';
 import { tracePath, radiance } from './integrator.js';
 
 const clamp01 = (v) => Math.min(1, Math.max(0, v));
@@ -42,6 +42,9 @@ export function inspectPath(scene, camera, x, y, options = {}) {
   if (options === null || typeof options !== 'object') throw new TypeError(`options must be an object, got ${show(options)}`);
   const { sample = 0, ...rest } = checkOptions(options, ['sample', ...PATH_OPTIONS], 'inspectPath');
   if (!Number.isInteger(sample) || sample < 0 || sample > 0xffffffff) throw new RangeError(`sample must be a whole number from 0, got ${show(sample)}`);
+  if (rest.samples === undefined && sample >= MAX_SAMPLES) { // samples left out is sample + 1: say so in sample's own words
+    throw new RangeError(`sample must be a whole number from 0 to ${MAX_SAMPLES - 1} when samples is left out (the mean is over samples 0 to sample), got ${sample}`);
+  }
   const samples = rest.samples ?? sample + 1;
   const frame = preparePaths(scene, camera, readPathOptions({ ...rest, samples }, scene, camera, 'inspectPath'));
 

@@ -9,6 +9,7 @@
 import { checkSceneAndCamera } from '../render.js';
 import { checkOptions, show, positiveInteger, bool, pixelCoordinate } from '../../text/check.js';
 import { packScene } from '../kernel.js';
+import { checkPathWork } from '../budget.js';
 import { PathRandom } from './random.js';
 import { readSky } from './sky.js';
 import { packMaterials } from './materials.js';
@@ -67,6 +68,9 @@ export function preparePaths(scene, camera, options) {
  * @param {number[]|string|{top, bottom}} [options.sky] the light from outside the scene: a colour, or a gradient
  *   from `bottom` (straight down) to `top` (straight up); the scene's background when left out
  * @param {boolean} [options.roulette=true] end long paths by Russian roulette after 3 bounces (unbiased)
+ * @param {boolean} [options.blocking=false] trace however long it takes; without it, a frame of more than
+ *   PATH_SEGMENTS path segments (pixels × samples × (maxBounces + 1), lib/tracing/budget.js: about a second on a
+ *   slow laptop, the page frozen) throws a RangeError pointing to the tracer view with `path` and the Web Workers
  * @returns {Uint8ClampedArray} RGBA, width·height·4
  * @example
  * const scene = new Scene({ background: [0.5, 0.5, 0.5] }).add(new Sphere([0, 0, -10], 2, { color: [0.8, 0.8, 0.8] }));
@@ -75,7 +79,10 @@ export function preparePaths(scene, camera, options) {
  */
 export function pathTrace(scene, camera, options) {
   checkSceneAndCamera(scene, camera);
-  const frame = preparePaths(scene, camera, readPathOptions(options, scene, camera));
+  const { blocking = false, ...rest } = checkOptions(options, [...PATH_OPTIONS, 'blocking'], 'pathTrace');
+  const read = readPathOptions(options === undefined ? undefined : rest, scene, camera);
+  if (!bool(blocking, 'blocking')) checkPathWork(camera, read);
+  const frame = preparePaths(scene, camera, read);
   return pathTraceRows(frame, new Uint8ClampedArray(camera.width * camera.height * 4), 0, camera.height);
 }
 

@@ -13,7 +13,7 @@
  * `timeoutMs` is stopped: its rows, and every later frame, are rendered on
  * the main thread instead (the same bytes), and `onProblem` hears why.
  */
-import { render } from '../render.js';
+import { render, checkSceneAndCamera } from '../render.js';
 import { pathTrace, pathTraceRows, readPathOptions, preparePaths } from '../pathtrace/path-trace.js';
 import { positiveInteger, show, checkOptions } from '../../text/check.js';
 import { sceneToJSON, cameraToJSON } from '../../scene/json.js';
@@ -118,12 +118,13 @@ export class ParallelRenderer {
   async render(scene, camera, options = {}) {
     const { onRows, path } = checkOptions(options, ['onRows', 'path'], 'ParallelRenderer.render');
     if (onRows !== undefined && typeof onRows !== 'function') throw new TypeError(`onRows must be a function, got ${show(onRows)}`);
-    const sceneJSON = sceneToJSON(scene), cameraJSON = cameraToJSON(camera); // also checks them
+    checkSceneAndCamera(scene, camera); // as they are now, each field by its path
+    const sceneJSON = sceneToJSON(scene), cameraJSON = cameraToJSON(camera);
     if (path !== undefined) readPathOptions(path, scene, camera, 'path'); // checked here, before any worker hears of it
     const { width, height } = camera;
     if (!this.usingWorkers) {
       if (!this.fallback) throw new Error(this.problem ?? 'no Web Workers here');
-      const buffer = path ? pathTrace(scene, camera, path) : render(scene, camera);
+      const buffer = path ? pathTrace(scene, camera, { ...path, blocking: true }) : render(scene, camera, undefined, undefined, { blocking: true }); // no Workers: the frame in one go, as asked
       onRows?.(0, height, buffer);
       return buffer;
     }
@@ -266,7 +267,7 @@ export class ParallelRenderer {
         const paths = job.path ? preparePaths(job.scene, job.camera, readPathOptions(job.path, job.scene, job.camera)) : null;
         for (const [y0, y1] of owed) {
           if (paths) pathTraceRows(paths, job.buffer, y0, y1);
-          else render(job.scene, job.camera, job.buffer, { y0, y1 });
+          else render(job.scene, job.camera, job.buffer, { y0, y1 }, { blocking: true });
         }
         job.owed.clear();
         for (const [y0, y1] of owed) job.onRows?.(y0, y1, job.buffer);
