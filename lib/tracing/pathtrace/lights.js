@@ -8,7 +8,7 @@
  *
  * Power: an emitter of radiance E and area A sends out π·E·A; the sky, of mean
  * brightness L, sends π·L·4πR² into a ball of radius R around the scene (R: half
- * the diagonal of the box around the eye and every bounded shape). π is common
+ * the diagonal of the box around the eye and every bounded shape, at least 1). π is common
  * to all and left out.
  *
  * Left to the bounces alone (hit by chance, their light counted in full):
@@ -53,7 +53,7 @@ export function lightTable(objects, materials, sky, eye) {
     }
   });
   const skyGlow = (mean3(sky, 0) + mean3(sky, 3)) / 2, R = sceneRadius(objects, eye);
-  if (skyGlow > 0 && !isUniform(sky) && R > 0) rows.push({ kind: SKY_LIGHT, index: -1, power: skyGlow * FOUR_PI * R * R, shape: [0, 0, 0, 0, 0, 0] });
+  if (skyGlow > 0 && !isUniform(sky)) rows.push({ kind: SKY_LIGHT, index: -1, power: skyGlow * FOUR_PI * R * R, shape: [0, 0, 0, 0, 0, 0] });
   const usable = rows.filter((r) => Number.isFinite(r.power) && r.power > 0);
   const total = usable.reduce((sum, r) => sum + r.power, 0);
   const table = new Float64Array(Math.max(1, usable.length) * LIGHT);
@@ -79,7 +79,7 @@ function sceneRadius(objects, eye) {
     if (!corners.flat().every(Number.isFinite)) continue;
     for (const p of corners) for (let k = 0; k < 3; k++) { lo[k] = Math.min(lo[k], p[k]); hi[k] = Math.max(hi[k], p[k]); }
   }
-  return Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) / 2;
+  return Math.max(1, Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]) / 2); // at least 1: with nothing bounded but the eye, the sky is the only light this weighs against
 }
 
 /** What sampleLight writes: the direction (unit), the light's slot, the density (pick × solid angle; 0: nothing drawn), the point on the light, its distance. */
