@@ -5,10 +5,18 @@
  * Three scenes: sketch 16's Cornell box (planes, boxes, a fuzzy mirror ball:
  * long paths in a closed room), the class's example (balls under a sky:
  * short paths) and sketch 17's 90 balls (each path tests every ball). Figures are printed, never asserted (docs/path-tracing.md).
+ *
+ * Then light sampling against bounces alone, side by side in one run (the
+ * machine's load cancels in the ratios): the Cornell box and the same box lit
+ * by a lamp of 1/16 the area and the same power. Samples per second on one
+ * core, the variance per sample of the picture's mean, and the efficiency
+ * 1 / (time per sample × variance): how much less time the same noise takes.
  */
 import { performance } from 'node:perf_hooks';
 import { bytesAllocatedBy } from '../tests/shared/heap.js';
-import { Scene, Sphere, Camera, classScene, pathTrace } from '../lib/index.js';
+import { Scene, Sphere, Box, Camera, classScene, pathTrace } from '../lib/index.js';
+import { readPathOptions, preparePaths } from '../lib/tracing/pathtrace/path-trace.js';
+import { tracePath, radiance } from '../lib/tracing/pathtrace/integrator.js';
 import { cornellBox, cornellCamera } from '../tests/shared/cornell-box.js';
 
 /** Sketch 16's room, as the page builds it with its lamp at 8, at 320×240. */
@@ -53,6 +61,65 @@ function measure(label, { scene, camera }, given) {
   console.log(`  ${label.padEnd(44)} ${(rate / 1e6).toFixed(2).padStart(6)} M samples/s ${(rate / (camera.width * camera.height)).toFixed(1).padStart(7)} samples/pixel/s ${(bytes / paths).toFixed(2).padStart(8)} B/sample`);
 }
 
+/** The Cornell box with its lamp (5 × 5 under the ceiling) shrunk to 1/16 of the area, 16× as bright: the same power. */
+export function smallLampRoom(width, height) {
+  const scene = cornellBox(8), at = scene.objects.findIndex((o) => o.name === 'lamp');
+  scene.objects[at] = new Box([-0.625, 9.8, -15.125], [0.625, 9.99, -13.875], { color: [0, 0, 0], emission: [128, 128, 115.2], name: 'lamp' });
+  return { scene, camera: cornellCamera(width, height) };
+}
+
+/**
+ * The noise of one sample per pixel: each pixel's variance (the mean of its
+ * channels, from `samples` samples, unbiased), summed over the pixels / N²:
+ * the variance of the picture's mean; also the median pixel's variance.
+ */
+function noise({ scene, camera }, options, samples) {
+  const frame = preparePaths(scene, camera, readPathOptions({ ...options, samples }, scene, camera));
+  const pixels = [];
+  for (let y = 0; y < camera.height; y++) {
+    for (let x = 0; x < camera.width; x++) {
+      let sum = 0, squares = 0;
+      for (let s = 0; s < samples; s++) {
+        tracePath(frame, x, y, s);
+        const v = (radiance[0] + radiance[1] + radiance[2]) / 3;
+        sum += v; squares += v * v;
+      }
+      pixels.push((squares - (sum * sum) / samples) / (samples - 1));
+    }
+  }
+  const n = pixels.length;
+  return { imageMean: pixels.reduce((a, v) => a + v, 0) / (n * n), medianPixel: median(pixels) };
+}
+
+/** Seconds per sample (per pixel) of pathTrace, the median of 3 frames after a warm-up. */
+function secondsPerSample({ scene, camera }, options) {
+  pathTrace(scene, camera, options);
+  const times = [];
+  for (let i = 0; i < 3; i++) {
+    const start = performance.now();
+    pathTrace(scene, camera, options);
+    times.push(performance.now() - start);
+  }
+  return median(times) / 1000 / (camera.width * camera.height * options.samples);
+}
+
+/** Light sampling on and off, in one run: samples/s, variance, efficiency, and the ratios. */
+export function compareLightSampling(label, room) {
+  const rows = [false, true].map((lightSampling) => {
+    const time = secondsPerSample(room, { samples: 2, lightSampling });
+    const { imageMean, medianPixel } = noise(room, { lightSampling, seed: 11 }, 8);
+    return { lightSampling, time, imageMean, medianPixel, efficiency: 1 / (time * imageMean) };
+  });
+  for (const r of rows) {
+    console.log(`  ${`${label}, ${r.lightSampling ? 'light sampling' : 'bounces alone'}`.padEnd(44)} ${(1 / r.time / 1e6).toFixed(3).padStart(6)} M samples/s` +
+      `   variance of the mean ${r.imageMean.toExponential(2)}   median pixel's ${r.medianPixel.toExponential(2)}   efficiency ${r.efficiency.toExponential(2)}`);
+  }
+  const [off, on] = rows;
+  console.log(`  ${''.padEnd(44)} light sampling: ×${(off.time / on.time).toFixed(2)} the samples/s, ÷${(off.imageMean / on.imageMean).toFixed(1)} the variance ` +
+    `(÷${(off.medianPixel / on.medianPixel).toFixed(1)} at the median pixel), efficiency ×${(on.efficiency / off.efficiency).toFixed(2)} ` +
+    `(×${((off.medianPixel * off.time) / (on.medianPixel * on.time)).toFixed(2)} at the median pixel)`);
+}
+
 export function runPathBench() {
   console.log('\nPath tracing, one core, 320×240 (pathTrace; median of 5 frames; heap per sample over one more):');
   measure('Cornell box (sketch 16), 4 samples, 16 bounces', cornellRoom(), { samples: 4, maxBounces: 16 });
@@ -60,4 +127,7 @@ export function runPathBench() {
   const scene = classScene();
   measure('the class scene under its sky, 4 samples', { scene, camera: new Camera({ width: 320, height: 240 }) }, { samples: 4 });
   measure('One weekend\'s final scene (sketch 17), 2 samples', oneWeekend(), { samples: 2, sky: { top: [0.5, 0.7, 1], bottom: [1, 1, 1] } });
+  console.log('\nLight sampling against bounces alone, one core, 160×120 (variance per sample from 8 samples a pixel; efficiency = 1 / (time per sample × variance)):');
+  compareLightSampling('Cornell box (sketch 16)', { scene: cornellBox(8), camera: cornellCamera(160, 120) });
+  compareLightSampling('the box with a small lamp (1/16 the area)', smallLampRoom(160, 120));
 }

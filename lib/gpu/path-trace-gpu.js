@@ -33,6 +33,7 @@ let engine = null;
  * @param {number} [options.maxBounces=16] bounces a path may take at most, 0 to 64
  * @param {number[]|string|{top, bottom}} [options.sky] the light from outside the scene (the scene's background when left out)
  * @param {boolean} [options.roulette=true] Russian roulette after 3 bounces
+ * @param {boolean} [options.lightSampling] taken and not used: the GPU traces bounces alone (the same expected picture, more noise)
  * @returns {Uint8ClampedArray} RGBA, width·height·4, as pathTrace returns it
  * @throws {Error} without WebGL2 (or its float colour buffers), or for a shape the GPU cannot trace (the error names it)
  * @example

@@ -71,8 +71,8 @@ describe('Russian roulette', () => {
   const expected = a.map((ac, c) => (E[c] * (1 - ac ** 41)) / (1 - ac)); // 40 bounces: 41 hits
   const { scene, camera } = closedRoom(a, E);
 
-  it('without it, 40 bounces gather E·(1 − a⁴¹)/(1 − a), every path alike', () => {
-    const { mean, stderr, bounces, end } = inspectPath(scene, camera, 2, 2, { samples: 16, maxBounces: 40, roulette: false });
+  it('without it, 40 bounces gather E·(1 − a⁴¹)/(1 − a), every path alike (bounces alone: a light sample adds its own noise)', () => {
+    const { mean, stderr, bounces, end } = inspectPath(scene, camera, 2, 2, { samples: 16, maxBounces: 40, roulette: false, lightSampling: false });
     mean.forEach((m, c) => expect(m).toBeCloseTo(expected[c], 12));
     stderr.forEach((e) => expect(e).toBeLessThan(1e-6)); // (rounding only)
     expect(bounces).toHaveLength(41);
@@ -233,17 +233,22 @@ describe('the story of one path', () => {
     expect(first.throughput).toEqual([0.8, 0.2, 0.2]); // the box's colour: cos/π over a pdf of cos/π
     expect(first.emitted).toEqual([0, 0, 0]);
     // The light gathered: what each surface gave off plus the sky, as the sample's radiance.
-    const gathered = [0, 1, 2].map((c) => path.bounces.reduce((sum, b) => sum + b.emitted[c], 0) + path.sky[c]);
+    const gathered = [0, 1, 2].map((c) => path.bounces.reduce((sum, b) => sum + b.emitted[c] + (b.lightSample?.contribution[c] ?? 0), 0) + path.sky[c]);
     gathered.forEach((g, c) => expect(g).toBeCloseTo(path.radiance[c], 12));
   });
 
-  it('a path that reaches the lamp gathers its light times the throughput', () => {
-    const paths = Array.from({ length: 200 }, (_, sample) => inspectPath(scene, camera, 12, 12, { sample }));
-    const lit = paths.find((p) => p.bounces.some((b) => b.name === 'sphere 3' && b.emitted[0] > 0));
-    expect(lit).toBeDefined();
-    const k = lit.bounces.findIndex((b) => b.name === 'sphere 3');
-    const before = k === 0 ? [1, 1, 1] : lit.bounces[k - 1].throughput;
-    expect(lit.bounces[k].emitted).toEqual([4, 4, 3.6].map((e, c) => before[c] * e));
+  it('a path that reaches the lamp gathers its light times the throughput (times its MIS weight after a diffuse bounce)', () => {
+    for (const lightSampling of [false, true]) {
+      const paths = Array.from({ length: 200 }, (_, sample) => inspectPath(scene, camera, 12, 12, { sample, lightSampling }));
+      const lit = paths.find((p) => p.bounces.some((b) => b.name === 'sphere 3' && b.emitted[0] > 0));
+      expect(lit).toBeDefined();
+      const k = lit.bounces.findIndex((b) => b.name === 'sphere 3');
+      const before = k === 0 ? [1, 1, 1] : lit.bounces[k - 1].throughput;
+      const weight = lit.bounces[k].emissionWeight;
+      if (lightSampling && k > 0 && lit.bounces[k - 1].lobe === 'diffuse') expect(weight).toBeLessThan(1);
+      else expect(weight).toBe(1);
+      expect(lit.bounces[k].emitted).toEqual([4, 4, 3.6].map((e, c) => before[c] * e * weight));
+    }
   });
 });
 

@@ -19,13 +19,18 @@ const clamp01 = (v) => Math.min(1, Math.max(0, v));
  * @param {import('../../math/camera.js').Camera} camera
  * @param {number} x
  * @param {number} y
- * @param {object} [options] pathTrace's options (`samples`, `seed`, `maxBounces`, `sky`, `roulette`) and:
+ * @param {object} [options] pathTrace's options (`samples`, `seed`, `maxBounces`, `sky`, `roulette`, `lightSampling`) and:
  * @param {number} [options.sample=0] which sample's path to tell (0 to samples − 1 or beyond)
  * @param {number} [options.samples=sample + 1] samples the mean, standard error and history are over
  * @returns {{ x, y, h, v, sample, seed, samples, ray, bounces: object[], end: string, sky: number[], radiance: number[],
  *   mean: number[], stderr: number[], history: number[][], unclamped: number[] }}
- *   `bounces[i]`: `{ object, name, point, normal, inside, emitted, lobe, direction, pdf, delta, weight, throughput, survival? }`;
- *   `emitted` the light the surface gives off as it reaches the eye (throughput × emission), `throughput` after the bounce,
+ *   `bounces[i]`: `{ object, name, point, normal, inside, emitted, emissionWeight, lobe, direction, pdf, delta, weight, throughput, survival?,
+ *   lightSample?, lightSkipped? }`;
+ *   `emitted` the light the surface gives off as it reaches the eye (throughput × emission × emissionWeight, the MIS weight:
+ *   below 1 when a diffuse bounce found a light that light sampling could also have drawn), `throughput` after the bounce,
+ *   `lightSample` at a diffuse bounce with light sampling on: `{ light, point, direction, blocked, pdf, weight, contribution, below? }`
+ *   (the light's name or 'sky', the point aimed at (null for the sky), the blocker's name or null, pick × solid-angle density,
+ *   the MIS weight, the light it added), `lightSkipped` why a bounce drew none (no light, metal, glass),
  *   `pdf` the density the direction was drawn with (for a mirror or glass, `delta`: the probability of that lobe),
  *   `survival` the roulette's q where it played; `end` 'sky', 'absorbed', 'roulette' or 'maxBounces';
  *   `mean` and `history` linear 0–1 (×255 is pathTrace's byte), `unclamped` the mean before clamping

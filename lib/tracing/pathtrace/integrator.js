@@ -17,8 +17,10 @@
  */
 import { Ray } from '../../math/ray.js';
 import { Vec3 } from '../../math/vec3.js';
-import { scatter, MATERIAL, EMISSION, P, N, D, INSIDE, SURFACE, DIRECTION, WEIGHT, PDF, LOBE, BELOW, EVENT, DIFFUSE, ABSORBED, LOBE_NAMES } from './materials.js';
+import { scatter, MATERIAL, COLOR, EMISSION, P, N, D, INSIDE, SURFACE, DIRECTION, COS, WEIGHT, PDF, LOBE, BELOW, EVENT, DIFFUSE, METAL, ABSORBED, LOBE_NAMES } from './materials.js';
 import { skyLight } from './sky.js';
+import { sampleLight, lightPdf, LIGHT, SHAPE_INDEX, L_SLOT, L_PDF, L_POINT, L_DISTANCE, LIGHT_SAMPLE } from './lights.js';
+import { shapeName } from '../../scene/scene.js';
 import { pathNumbers } from './scratch.js';
 import { apart } from './apart.js';
 import { SHAPE, sideTables } from '../../shapes/packed.js';
@@ -48,6 +50,17 @@ export const radiance = pathNumbers(3);
 const u = pathNumbers(2);
 
 /**
+ * Multiple importance sampling's numbers: the density of the last bounce's
+ * direction when it was diffuse and lights are sampled (0: the light a bounce
+ * finds counts in full: from the eye, after a mirror or glass, with light
+ * sampling off), and the weight of the light the current hit gives off.
+ */
+const mis = pathNumbers(2);
+const BSDF_PDF = 0, WEIGHT_OF_HIT = 1;
+/** Scratch of the light sample: the shadow ray's start, four uniform numbers, what sampleLight drew, a density. */
+const from = pathNumbers(3), lightU = pathNumbers(4), aim = pathNumbers(LIGHT_SAMPLE), density = pathNumbers(1);
+
+/**
  * Traces sample `s` of pixel (x, y): its light into `radiance`.
  * @param {object} frame what pathTrace prepared: `{ scene, camera, objects, materials, packed, groups, sky, maxBounces, roulette, seed, random }`
  * @param {any} [record] a list filled with the bounces, and given `ray`, `end` and `sky`, when given
@@ -63,22 +76,32 @@ export function tracePath(frame, x, y, s, record) {
   if (record) record.ray = { origin: new Vec3(path[0], path[1], path[2]), direction: new Vec3(path[3], path[4], path[5]) };
 
   let why = 'maxBounces', survival = 1, bounceRecord = null;
+  const lights = frame.lightSampling ? frame.lights : null, aiming = lights !== null && lights.count > 0;
+  mis[BSDF_PDF] = 0; // from the eye, light counts in full
   for (let bounce = 0; ; bounce++) {
     const index = nearestHit(frame);
     if (index < 0) { // the path leaves the scene: the sky's light, blended from bottom to top (sky.js)
-      const t = 0.5 * (path[4] + 1);
-      for (let c = 0; c < 3; c++) radiance[c] += throughput[c] * (t * sky[c] + (1 - t) * sky[c + 3]);
+      weighEmission(frame, index); // (after a diffuse bounce, when the sky is also sampled as a light)
+      const t = 0.5 * (path[4] + 1), w = mis[WEIGHT_OF_HIT];
+      for (let c = 0; c < 3; c++) radiance[c] += throughput[c] * (t * sky[c] + (1 - t) * sky[c + 3]) * w;
       why = 'sky';
       break;
     }
     surfaceAt(frame, index);
     const materials = frame.materials, m = index * MATERIAL, glow = m + EMISSION;
-    for (let c = 0; c < 3; c++) radiance[c] += throughput[c] * materials[glow + c];
-    if (record) bounceRecord = recordHit(record, frame, objects[index]);
+    weighEmission(frame, index);
+    const w = mis[WEIGHT_OF_HIT];
+    for (let c = 0; c < 3; c++) radiance[c] += throughput[c] * materials[glow + c] * w;
+    if (record) bounceRecord = recordHit(record, frame, objects[index], w);
     if (bounce >= maxBounces) break;
 
     scatter(materials, m, random, surface, event);
     if (event[LOBE] === ABSORBED) { why = 'absorbed'; break; }
+    mis[BSDF_PDF] = 0;
+    if (aiming && event[LOBE] === DIFFUSE) { // next-event estimation: one shadow ray toward a light, weighed against this bounce
+      apart(directLight, frame, m, record ? bounceRecord : null);
+      mis[BSDF_PDF] = event[COS] / Math.PI;
+    } else if (record && frame.lightSampling) bounceRecord.lightSkipped = skippedWhy(lights, event[LOBE]);
     for (let c = 0; c < 3; c++) throughput[c] *= event[WEIGHT + c];
     const brightest = Math.max(throughput[0], throughput[1], throughput[2]);
     if (brightest <= 0) { why = 'absorbed'; break; }
@@ -95,7 +118,58 @@ export function tracePath(frame, x, y, s, record) {
     path[0] = surface[P] + surface[N] * offset; path[1] = surface[P + 1] + surface[N + 1] * offset; path[2] = surface[P + 2] + surface[N + 2] * offset;
     path[3] = event[DIRECTION]; path[4] = event[DIRECTION + 1]; path[5] = event[DIRECTION + 2];
   }
-  if (record) endRecord(record, why, bounceRecord, survival, sky, path[4]);
+  if (record) endRecord(record, why, bounceRecord, survival, sky, path[4], mis[WEIGHT_OF_HIT]);
+}
+
+/**
+ * The weight of the light the path has just found (at shape `index`, or the
+ * sky for −1), into mis[WEIGHT_OF_HIT]: the power heuristic's
+ * pdf_bsdf² / (pdf_bsdf² + pdf_light²) when the bounce was diffuse and light
+ * sampling could have drawn the same direction; 1 otherwise.
+ */
+function weighEmission(frame, index) {
+  mis[WEIGHT_OF_HIT] = 1;
+  const bsdfPdf = mis[BSDF_PDF];
+  if (bsdfPdf <= 0) return;
+  const lights = frame.lights, slot = index < 0 ? lights.sky : lights.of[index];
+  if (slot < 0) return; // a light the sampler does not aim at (a plane, a mesh, a uniform sky)
+  lightPdf(lights, slot, path, surface, density);
+  const light = density[0];
+  mis[WEIGHT_OF_HIT] = (bsdfPdf * bsdfPdf) / (bsdfPdf * bsdfPdf + light * light);
+}
+
+/**
+ * Next-event estimation at a diffuse hit (the material at `m`): one light
+ * picked by power, a direction toward it, one shadow ray; if the light is
+ * the first thing the ray meets, its light × the diffuse BSDF (colour/π) × cos
+ * / the sampler's density, weighed by the power heuristic against the density
+ * the bounce would have drawn the same direction with (cos/π). Overwrites
+ * `path` (the loop sets the next ray after). `entry` the inspector's bounce, or null.
+ */
+function directLight(frame, m, entry) {
+  const lights = frame.lights, bias = frame.scene.bias, materials = frame.materials;
+  from[0] = surface[P] + surface[N] * bias; from[1] = surface[P + 1] + surface[N + 1] * bias; from[2] = surface[P + 2] + surface[N + 2] * bias;
+  frame.random.draw(lightU, 4);
+  sampleLight(lights, from, lightU, aim);
+  const pdf = aim[L_PDF], cos = surface[N] * aim[0] + surface[N + 1] * aim[1] + surface[N + 2] * aim[2];
+  if (!(pdf > 0) || !(cos > 0)) { if (entry) recordLight(entry, frame, -2, 0, 0); return; } // behind the surface: no light this way
+  path[0] = from[0]; path[1] = from[1]; path[2] = from[2]; path[3] = aim[0]; path[4] = aim[1]; path[5] = aim[2];
+  const hit = nearestHit(frame), target = lights.table[aim[L_SLOT] * LIGHT + SHAPE_INDEX]; // the sky's shape index is −1: nothing hit
+  if (hit !== target) { if (entry) recordLight(entry, frame, hit, 0, 0); return; }
+  const bsdfPdf = cos / Math.PI, weight = (pdf * pdf) / (pdf * pdf + bsdfPdf * bsdfPdf), k = (bsdfPdf * weight) / pdf;
+  const glow = target * MATERIAL + EMISSION, sky = frame.sky, t = 0.5 * (aim[1] + 1);
+  for (let c = 0; c < 3; c++) {
+    const light = target < 0 ? t * sky[c] + (1 - t) * sky[c + 3] : materials[glow + c];
+    radiance[c] += throughput[c] * materials[m + COLOR + c] * light * k;
+  }
+  if (entry) recordLight(entry, frame, -1, weight, k);
+}
+
+/** Why a bounce drew no light sample (the inspector's). */
+function skippedWhy(lights, lobe) {
+  if (lights.count === 0) return 'no light to aim at (lights are emissive spheres and boxes, and a gradient sky)';
+  if (lobe === METAL) return 'metal: its light comes from the bounce alone';
+  return 'glass: one direction only, its light comes from the bounce alone';
 }
 
 /**
@@ -115,8 +189,8 @@ function primaryRay(camera, x, y) {
 }
 
 /**
- * The nearest shape along `ray` past the scene's epsilon, its t kept in
- * `surface[P]` for surfaceAt; -1 for none. When the scene packs
+ * The nearest shape along `path`'s ray past the scene's epsilon, its t kept in
+ * `nearest[0]` for surfaceAt; -1 for none. When the scene packs
  * (lib/tracing/kernel.js), each kind of shape is tested in numbers (the same t, bit
  * for bit) by a loop of its own: a call V8 does not inline boxes the numbers
  * it passes and returns, and one loop calling several shapes' tests is more
@@ -133,7 +207,6 @@ function nearestHit(frame) {
     if (groups.boxes.length) apart(boxes, frame, groups.boxes);
     if (groups.others.length) apart(others, frame, groups.others);
   }
-  surface[P] = nearest[0];
   return nearest[1];
 }
 
@@ -210,7 +283,7 @@ const point = new Vec3(), normal = new Vec3();
 
 /** The hit point, the unit normal turned to face the ray, the ray's direction, and whether it came from inside, into `surface`. */
 function surfaceAt(frame, index) {
-  const t = surface[P], dx = path[3], dy = path[4], dz = path[5];
+  const t = nearest[0], dx = path[3], dy = path[4], dz = path[5];
   surface[P] = path[0] + dx * t; surface[P + 1] = path[1] + dy * t; surface[P + 2] = path[2] + dz * t;
   const packed = frame.packed;
   if (packed) { // each kind's own normal in numbers (reads P, writes N), as nearestHit's own hit tests
@@ -234,13 +307,13 @@ function surfaceAt(frame, index) {
 
 const triple = (a, at = 0) => [a[at], a[at + 1], a[at + 2]];
 
-/** A hit: where, facing which way, and the light it gives off toward the eye (throughput × emission). */
-function recordHit(record, frame, object) {
+/** A hit: where, facing which way, and the light it gives off toward the eye (throughput × emission × its MIS weight). */
+function recordHit(record, frame, object, weight) {
   const entry = {
     object, index: frame.scene.objects.indexOf(object),
     point: new Vec3(surface[P], surface[P + 1], surface[P + 2]), normal: new Vec3(surface[N], surface[N + 1], surface[N + 2]),
     inside: surface[INSIDE] === 1,
-    emitted: object.material.emission.map((e, c) => throughput[c] * e),
+    emitted: object.material.emission.map((e, c) => throughput[c] * e * weight), emissionWeight: weight,
     lobe: null, direction: null, pdf: null, weight: null, throughput: null,
   };
   record.push(entry);
@@ -258,12 +331,34 @@ function recordBounce(entry, survival) {
   if (survival < 1) entry.survival = survival;
 }
 
+/**
+ * A diffuse bounce's light sample: the light, the point aimed at, the
+ * direction, the blocker's name (`hit` ≥ 0) or null, the density (pick ×
+ * solid angle), the MIS weight and the light it added (throughput × colour ×
+ * light × `k`). `hit` −2: the direction lies behind the surface.
+ */
+function recordLight(entry, frame, hit, weight, k) {
+  const objects = frame.scene.objects, target = frame.lights.table[aim[L_SLOT] * LIGHT + SHAPE_INDEX];
+  const sky = frame.sky, t = 0.5 * (aim[1] + 1);
+  const light = (c) => (target < 0 ? t * sky[c] + (1 - t) * sky[c + 3] : frame.materials[target * MATERIAL + EMISSION + c]);
+  entry.lightSample = {
+    light: target < 0 ? 'sky' : shapeName(objects[target], objects),
+    point: aim[L_DISTANCE] < Infinity ? new Vec3(aim[L_POINT], aim[L_POINT + 1], aim[L_POINT + 2]) : null,
+    direction: new Vec3(aim[0], aim[1], aim[2]),
+    blocked: hit >= 0 ? shapeName(objects[hit], objects) : null,
+    pdf: aim[L_PDF], weight,
+    contribution: [0, 1, 2].map((c) => throughput[c] * frame.materials[frame.objects.indexOf(entry.object) * MATERIAL + COLOR + c] * light(c) * k),
+  };
+  if (hit === -2) entry.lightSample.below = true;
+}
+
 /** How the path ended: a bounce drawn at the last hit is told too (the roulette's zeroes its throughput); a path that left gathers the sky (times the throughput). */
-function endRecord(record, why, entry, survival, sky, dy) {
+function endRecord(record, why, entry, survival, sky, dy, weight) {
   if (entry && why !== 'maxBounces') {
     recordBounce(entry, survival);
     if (why === 'roulette') entry.throughput = [0, 0, 0];
   }
   record.end = why;
-  record.sky = why === 'sky' ? [0, 1, 2].map((c) => throughput[c] * skyLight(sky, c, dy)) : [0, 0, 0];
+  record.sky = why === 'sky' ? [0, 1, 2].map((c) => throughput[c] * skyLight(sky, c, dy) * weight) : [0, 0, 0];
+  if (why === 'sky') record.skyWeight = weight;
 }

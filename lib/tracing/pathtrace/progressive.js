@@ -31,7 +31,7 @@ export class PathProgressiveRenderer {
    * @param {object} options
    * @param {import('../../scene/scene.js').Scene} options.scene
    * @param {import('../../math/camera.js').Camera} options.camera
-   * @param {object} options.path pathTrace's options: `{ samples, seed, maxBounces, sky, roulette }`
+   * @param {object} options.path pathTrace's options: `{ samples, seed, maxBounces, sky, roulette, lightSampling }`
    * @param {number} [options.budgetMs=8] tracing time per step(), milliseconds
    * @param {() => number} [options.now=performance.now] the clock, in milliseconds
    * @example
