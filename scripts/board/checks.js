@@ -101,9 +101,9 @@ export function checkNickname(nickname) {
   const name = nickname.normalize('NFC').replace(/^\p{White_Space}+|\p{White_Space}+$/gu, '');
   if (name === '') return undefined;
   if ([...name].length > NICKNAME_MAX) throw new BadSubmission(`name is too long: at most ${NICKNAME_MAX} characters`);
+  if (!SEEN.test(name.replace(INVISIBLE, ''))) throw new BadSubmission('name is blank once its invisible characters are removed: type a name with letters or digits');
   const unsafe = UNSAFE.exec(name);
   if (unsafe) throw new BadSubmission(`name must not hold control, format or direction characters (it holds U+${unsafe[0].codePointAt(0).toString(16).toUpperCase().padStart(4, '0')})`);
-  if (!SEEN.test(name.replace(INVISIBLE, ''))) throw new BadSubmission('name is blank once its invisible characters are removed: type a name with letters or digits');
   if (ANONYMOUS.test(nameKey(name).replace(/[\p{P}\p{S}]/gu, ''))) throw new BadSubmission('name reads like the board\'s label of a student without a name ("student 3"): choose another');
   return name;
 }
