@@ -56,6 +56,8 @@ export default defineConfig(({ command, mode }) => ({
     // The class server sends them itself, to loopback only (scripts/class-gate.js): browsers
     // ignore them on a student's plain-http address and say so in red on every page.
     headers: mode === 'class' ? {} : isolation,
+    // The class server answers no other origin: no CORS headers, and its gate refuses their writes and preflights.
+    ...(mode === 'class' ? { cors: false } : {}),
     // Test output must not reload pages under test.
     watch: { ignored: ['**/test-results/**', '**/playwright-report/**', '**/__screenshots__/**', '**/tests/pictures/**'] },
   },

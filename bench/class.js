@@ -164,13 +164,15 @@ async function classBoard(base, output) {
   if (!key) { console.log(`\nthe class board is off:${output().split('the class board is off')[1]?.split('\n')[0] ?? ' no address printed'}`); return false; }
   const board = await boardStream(`${base}board/events?key=${key}`);
   const SCREEN = { width: 32, height: 24, fov: 30 };
-  const answer = (laptop, id, x, y) => ({ laptop, id, nickname: laptop, kind: 'answer', line: `Pixel: ${x},${y}; H: 0; V: 0`, ...SCREEN });
-  const post = (body) => fetch(`${base}class/send`, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(body) });
+  // A laptop says hello first: its secret comes back, and every send proves it.
+  const hello = await (await fetch(`${base}class/hello`, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify({ laptop: `bench-one-${Date.now()}` }) })).json();
+  const answer = (id, x, y) => ({ laptop: hello.laptop, id, kind: 'answer', line: `Pixel: ${x},${y}; H: 0; V: 0`, ...SCREEN });
+  const post = (body) => fetch(`${base}class/send`, { method: 'POST', headers: { 'Content-Type': 'application/json', 'X-RT-Laptop-Secret': hello.secret }, body: JSON.stringify(body) });
   try {
     const single = [];
     for (let i = 0; i < 7; i++) {
       const t0 = performance.now();
-      const sent = await post(answer('bench-one', `one${i}`, i, 3));
+      const sent = await post(answer(`one${i}`, i, 3));
       if (sent.status !== 200) { console.log(`\na single answer: ${sent.status}`); return false; }
       const shown = await board.until((state) => state.answers.some((a) => a.line === `Pixel: ${i},3; H: 0; V: 0`));
       single.push(shown - t0);

@@ -12,6 +12,10 @@
  * the teacher adds (`npm run class -- --allow-host NAME`); any other gets a
  * page saying how to add it, and the terminal says so once.
  *
+ * No other origin may write to it (a page elsewhere, on another port of this
+ * computer too): a write or a preflight from another origin gets 403 (isOwnOrigin),
+ * and Vite's CORS answers are off (`server.cors: false`, ./classroom.js).
+ *
  * How the list is kept: docs/security.md. tests/unit/class-gate.test.js
  * walks the dev server's own routes and asks for each.
  */
@@ -185,6 +189,25 @@ export function allowedHostsFrom(argv) {
   return names;
 }
 
+/**
+ * Whether a request comes from a page of the class server itself. With an
+ * Origin (a browser sends one with every write, and with every request made
+ * across origins), that origin must be `http://` and the very host and port
+ * the request came to: another port, `null` (a sandboxed frame, a file), https,
+ * another spelling of the name are other origins. Without one, a browser's
+ * Sec-Fetch-Site must not say it came from another site; a request with
+ * neither is not a page's (a terminal's, a test's).
+ * @param {Record<string, string | string[] | undefined>} headers
+ */
+export function isOwnOrigin(headers) {
+  const origin = headers.origin;
+  if (origin !== undefined) return origin === `http://${String(headers.host ?? '').toLowerCase()}`;
+  const site = headers['sec-fetch-site'];
+  return site === undefined || site === 'same-origin' || site === 'none';
+}
+
+const READS = new Set(['GET', 'HEAD']);
+
 /** What a student sees for a name the server was not told. */
 export function unknownHostPage(host) {
   return `This class server does not answer to the name ${JSON.stringify(host)} yet.\n\n` +
@@ -207,6 +230,11 @@ export function classGate({ root, names, routes = STUDENT_ROUTES, guarded, isola
         log(`\n  A laptop asked for this computer as "${host}": to let it in, stop (Ctrl+C) and run  npm run class -- --allow-host ${host}\n`);
       }
       return refuse(res, 403, unknownHostPage(host));
+    }
+    // No other origin may write, nor ask whether it may (a preflight): the class's pages are its own origin.
+    const asking = req.method === 'OPTIONS' && req.headers.origin !== undefined;
+    if (asking || (!READS.has(req.method ?? 'GET') && !isOwnOrigin(req.headers))) {
+      return refuse(res, 403, 'Refused: only the class server\'s own pages may send to it.\n');
     }
     const path = requestPath(req.url ?? '/');
     if (!isStudentRoute(req.method ?? 'GET', req.url ?? '/', routes) || resolvesToGuarded(path, root, guardedIds)) {

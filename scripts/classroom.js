@@ -274,7 +274,8 @@ export function classroom({ isolation = {}, routes = [] } = {}) {
         optimizeDeps: { rolldownOptions: { output: { minify: true } } },
         // Vite's own refusal too (a 403), but for the gallery's thumbnails, which are in tests/.
         // The gate checks the host names itself, with a message that says how to add one.
-        server: { allowedHosts: true, fs: { deny: [...VITE_DENIES, '**/sketches/solutions/**', '**/tests/**/*.js', '**/tests/**/*solution*'] } },
+        // No CORS answers: no other origin may read or write (the gate refuses their writes and preflights).
+        server: { cors: false, allowedHosts: true, fs: { deny: [...VITE_DENIES, '**/sketches/solutions/**', '**/tests/**/*.js', '**/tests/**/*solution*'] } },
       };
     },
     configureServer(server) {

@@ -17,12 +17,18 @@
  * it is sent again (after a pause, when the network is back, on the next
  * page), and the server stores an id once. The line beside what was sent
  * says where it is; once stored it has `data-received`.
+ *
+ * The first hello gives the laptop a secret, kept beside its id; every
+ * request proves it (X-RT-Laptop-Secret). A page whose laptop the server does
+ * not know (a new class, a lost secret) says hello again, and what waited in
+ * its outbox goes after.
  */
 import { element, useStyle } from './dom.js';
 
 const OUTBOX = 'rt-class-outbox';
 const LAPTOP = 'rt-class-laptop';
 const NICKNAME = 'rt-class-nickname';
+const SECRET = 'rt-class-secret';
 /** The most submissions kept waiting on one laptop (the oldest go first past it). */
 const OUTBOX_MAX = 200;
 const RETRY_MS = [1000, 2000, 5000, 10_000, 30_000];
@@ -66,7 +72,7 @@ export function joinClassBoard() {
   });
   addEventListener('online', () => outbox.flush());
   outbox.hello(bar);
-  outbox.flush();
+  outbox.flush(); // after the hello is answered
   joined = { send: (submission, near) => outbox.add(submission, near) };
   return joined;
 }
@@ -91,9 +97,10 @@ function randomId() {
 /** This laptop's id, made once and kept. */
 function laptopId() {
   const store = storage();
-  let id = store?.getItem(LAPTOP);
-  if (!id || !/^[0-9a-f]{32}$/.test(id)) {
+  let id = store ? store.getItem(LAPTOP) : remembered.laptop;
+  if (!id || !/^[\w-]{8,64}$/.test(id)) {
     id = randomId();
+    remembered.laptop = id;
     store?.setItem(LAPTOP, id);
   }
   return id;
@@ -101,9 +108,33 @@ function laptopId() {
 
 const nickname = () => storage()?.getItem(NICKNAME) || undefined;
 
+/** What the server knows this laptop by: its id and the secret it gave at hello (in memory too, where storage is refused). */
+const remembered = { laptop: '', secret: '' };
+function laptopSecret() {
+  return storage()?.getItem(SECRET) ?? remembered.secret;
+}
+/** Keeps the id and secret a hello gave (a new laptop's, or another id when the server would not hand this one over). */
+function keepLaptop(laptop, secret) {
+  if (typeof laptop !== 'string' || !/^[\w-]{8,64}$/.test(laptop) || typeof secret !== 'string') return;
+  remembered.laptop = laptop;
+  remembered.secret = secret;
+  storage()?.setItem(LAPTOP, laptop);
+  storage()?.setItem(SECRET, secret);
+}
+
+/** A JSON POST to the class server, naming this laptop and proving it. */
+function post(url, body) {
+  const headers = { 'Content-Type': 'application/json', 'X-RT-Laptop': laptopId() };
+  const secret = laptopSecret();
+  if (secret) headers['X-RT-Laptop-Secret'] = secret;
+  return fetch(url, { method: 'POST', headers, body: JSON.stringify(body) });
+}
+
 /** What waits to be sent, kept in localStorage; each item's line on the page, while the page is open. */
 class Outbox {
-  #route; #lines = new Map(); #timer = 0; #tries = 0; #sending = false;
+  #route; #lines = new Map(); #timer = 0; #tries = 0; #sending = false; #bar = null; #helloedFor = new Set();
+  /** The hello under way (or done): nothing is sent before it is answered. */
+  #said = Promise.resolve();
 
   constructor(route) { this.#route = route; }
 
@@ -134,6 +165,7 @@ class Outbox {
     this.#sending = true;
     clearTimeout(this.#timer);
     try {
+      await this.#said;
       for (let item = this.#read()[0]; item; item = this.#read()[0]) {
         const wait = await this.#send(item);
         if (wait !== 0) {
@@ -151,7 +183,7 @@ class Outbox {
   async #send(item) {
     let answer, body;
     try {
-      answer = await fetch(new URL('send', this.#route), { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify({ ...item, laptop: laptopId(), nickname: nickname() }) });
+      answer = await post(new URL('send', this.#route), { ...item, laptop: laptopId() });
       body = await answer.json().catch(() => ({}));
     } catch {
       return this.#later('Not sent yet: the class server cannot be reached. It is kept, and sent when it can be.');
@@ -165,6 +197,12 @@ class Outbox {
       const seconds = Number(body.retryAfter) || 5;
       this.#sayWaiting(`Not sent yet: too many sends from this laptop. The next goes in ${seconds} s.`);
       return seconds * 1000;
+    }
+    if (answer.status === 403 && body.hello && !this.#helloedFor.has(item.id)) {
+      // The server does not know this laptop (a new class, a lost secret): hello again, then this item once more.
+      this.#helloedFor.add(item.id);
+      await this.hello();
+      return 0;
     }
     if (answer.status >= 500 && answer.status !== 507) return this.#later(`Not sent yet: ${body.error ?? `the class server answered ${answer.status}`}. It is sent again soon.`);
     this.#drop(item); // refused for good: sending it again would be refused again
@@ -193,15 +231,33 @@ class Outbox {
     for (const { id } of this.#read()) this.#say(id, text, 'waiting');
   }
 
-  /** Says hello to the board: the bar shows the name the teacher sees. */
-  async hello(bar) {
+  /**
+   * Says hello to the board, with the name to take (else the one kept): the
+   * bar shows the name the teacher sees, or why the name was refused (the
+   * old name stays).
+   * @param {?{ show: (name: ?string, trouble?: string, refused?: boolean) => void }} [bar]
+   * @param {string} [name]
+   */
+  hello(bar = this.#bar, name = nickname()) {
+    this.#bar = bar;
+    this.#said = this.#hello(name);
+    return this.#said;
+  }
+
+  async #hello(name) {
+    let answer, body;
     try {
-      const answer = await fetch(new URL('hello', this.#route), { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify({ laptop: laptopId(), nickname: nickname() }) });
-      const body = await answer.json();
-      bar.show(answer.ok ? body.name : null, answer.ok ? '' : body.error);
+      answer = await post(new URL('hello', this.#route), { laptop: laptopId(), nickname: name });
+      body = await answer.json();
     } catch {
-      bar.show(null, 'the class server cannot be reached now; what you do is kept and sent when it can be');
+      return this.#bar?.show(null, 'the class server cannot be reached now; what you do is kept and sent when it can be');
     }
+    keepLaptop(body.laptop, body.secret);
+    if (answer.ok) {
+      if (name) storage()?.setItem(NICKNAME, name);
+      return this.#bar?.show(body.name, '');
+    }
+    this.#bar?.show(body.name ?? null, body.field === 'name' ? `Not saved: ${body.error}` : (body.error ?? `the class server answered ${answer.status}`), body.field === 'name');
   }
 }
 
@@ -220,28 +276,29 @@ function lineNear(target) {
 function nameBar(outbox) {
   useStyle();
   const shown = element('b', { 'data-class-name': '' }, '…');
-  const input = element('input', { type: 'text', id: 'rt-class-nickname', maxlength: '40', autocomplete: 'nickname', value: nickname() ?? '' });
+  const input = element('input', { type: 'text', id: 'rt-class-nickname', maxlength: '40', autocomplete: 'nickname', value: nickname() ?? '', 'aria-describedby': 'rt-class-problem' });
+  // The server's word on the name, next to the box: read out when it comes.
+  const problem = element('span', { class: 'rt-class-problem', id: 'rt-class-problem', role: 'alert', 'data-class-problem': '' });
   const form = element('form', { class: 'rt-class-name' },
     element('label', { for: 'rt-class-nickname' }, 'Your name on the board'), input,
-    element('button', { type: 'submit', class: 'rt-button' }, 'Save name'));
-  const problem = element('span', { class: 'rt-class-problem', role: 'status' });
+    element('button', { type: 'submit', class: 'rt-button' }, 'Save name'), problem);
   const poll = /\/poll\.html$/.test(location.pathname) ? null : element('a', { href: new URL('/poll.html', location.href).href }, 'The lesson\'s poll');
   const bar = element('aside', { class: 'rt-class-bar', 'aria-label': 'Class board', 'data-class-bar': '' },
-    element('span', {}, 'Class board: the teacher sees you as ', shown, '.'), form, poll, problem);
+    element('span', {}, 'Class board: the teacher sees you as ', shown, '.'), form, poll);
   form.addEventListener('submit', (event) => {
     event.preventDefault();
     const name = input.value.trim().slice(0, 40);
-    if (name) storage()?.setItem(NICKNAME, name);
-    else storage()?.removeItem(NICKNAME);
-    outbox.hello(api);
+    if (!name) storage()?.removeItem(NICKNAME);
+    outbox.hello(api, name || undefined);
   });
   const header = document.querySelector('body > header');
   if (header) header.after(bar);
   else document.body.prepend(bar);
   const api = {
-    show(name, trouble) {
+    show(name, trouble, refused = false) {
       if (name) shown.textContent = name;
-      problem.textContent = trouble ? `(${trouble})` : '';
+      problem.textContent = trouble ? (refused ? trouble : `(${trouble})`) : '';
+      input.setAttribute('aria-invalid', String(refused));
     },
   };
   return api;

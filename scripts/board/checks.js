@@ -25,8 +25,20 @@ export class BadSubmission extends Error {}
 
 const ID = /^[A-Za-z0-9_-]{1,64}$/;
 const LAPTOP = /^[A-Za-z0-9_-]{8,64}$/;
-// Control characters, and the marks that reverse text around them (a name cannot turn the board's lines around).
-const UNSAFE = /[\p{Cc}\u202A-\u202E\u2066-\u2069\u2028\u2029]/u;
+// What a name may not hold: control characters, format characters (the marks that turn text around,
+// invisible joiners but the two that emoji and some scripts need), line and paragraph separators, lone surrogates.
+const UNSAFE = /[\p{Cc}\p{Zl}\p{Zp}\p{Cs}]|(?![\u200C\u200D])\p{Cf}/u;
+// What shows nothing on the board: whitespace, default-ignorable characters (zero-width ones,
+// the Hangul fillers U+3164, U+115F, U+1160, U+FFA0) and the blank braille pattern.
+const INVISIBLE = /[\p{White_Space}\p{Default_Ignorable_Code_Point}\u2800]/gu;
+const SEEN = /[\p{L}\p{N}\p{S}\p{P}]/u;
+// Letters of other scripts drawn like the Latin ones of "student" (and a few more): a name's key reads them as Latin.
+const LOOKALIKES = new Map(Object.entries({
+  а: 'a', е: 'e', о: 'o', р: 'p', с: 'c', у: 'y', х: 'x', ѕ: 's', і: 'i', ј: 'j', ԁ: 'd', ո: 'n', ս: 'u',
+  ο: 'o', ν: 'v', τ: 't', υ: 'u', ι: 'i', κ: 'k', ρ: 'p', ı: 'i',
+}));
+/** How the board names a student without a name (store.js nameOf): a name that reads the same is refused. */
+const ANONYMOUS = /^student\p{Nd}+$/u;
 
 const FIELDS = {
   hello: ['laptop', 'nickname'],
@@ -58,18 +70,53 @@ export function checkSubmission(body) {
 export function checkHello(body) {
   const sent = plainObject(body, 'the hello');
   knownFields(sent, FIELDS.hello);
-  if (typeof sent.laptop !== 'string' || !LAPTOP.test(sent.laptop)) throw new BadSubmission('laptop must be 8–64 letters, digits, - or _');
-  return { laptop: sent.laptop, nickname: checkNickname(sent.nickname) };
+  return { laptop: checkLaptop(sent.laptop), nickname: checkNickname(sent.nickname) };
 }
 
-/** A nickname: text of 1–40 characters, no control characters; undefined when none. */
+/** A hello's laptop id, and its nickname as sent: checked apart (checkNickname), as a refused name does not refuse the hello. */
+export function readHello(body) {
+  const sent = plainObject(body, 'the hello');
+  knownFields(sent, FIELDS.hello);
+  return { laptop: checkLaptop(sent.laptop), nickname: sent.nickname };
+}
+
+/** A laptop's id: 8–64 letters, digits, - or _. */
+export function checkLaptop(laptop) {
+  if (typeof laptop !== 'string' || !LAPTOP.test(laptop)) throw new BadSubmission('laptop must be 8–64 letters, digits, - or _');
+  return laptop;
+}
+
+/**
+ * A nickname as the board shows it: NFC, trimmed, at most 40 characters;
+ * undefined when none. Refused (the message names the field, `name`) when it
+ * holds control, format or direction characters or lone surrogates, when
+ * nothing of it shows once its invisible characters are removed, or when it
+ * reads like another student's anonymous label ("student 3").
+ * Whether another laptop has it is the store's to say (nameKey).
+ */
 export function checkNickname(nickname) {
   if (nickname === undefined || nickname === null) return undefined;
-  if (typeof nickname !== 'string') throw new BadSubmission(`nickname must be text, got ${shortly(nickname)}`);
-  const name = nickname.trim();
-  if ([...name].length > NICKNAME_MAX) throw new BadSubmission(`nickname is too long: at most ${NICKNAME_MAX} characters`);
-  if (UNSAFE.test(name)) throw new BadSubmission('nickname must not hold control characters');
-  return name === '' ? undefined : name;
+  if (typeof nickname !== 'string') throw new BadSubmission(`name must be text, got ${shortly(nickname)}`);
+  if (!nickname.isWellFormed()) throw new BadSubmission('name must not hold lone surrogates (half of a character)');
+  const name = nickname.normalize('NFC').replace(/^\p{White_Space}+|\p{White_Space}+$/gu, '');
+  if (name === '') return undefined;
+  if ([...name].length > NICKNAME_MAX) throw new BadSubmission(`name is too long: at most ${NICKNAME_MAX} characters`);
+  if (!SEEN.test(name.replace(INVISIBLE, ''))) throw new BadSubmission('name is blank once its invisible characters are removed: type a name with letters or digits');
+  const unsafe = UNSAFE.exec(name);
+  if (unsafe) throw new BadSubmission(`name must not hold control, format or direction characters (it holds U+${unsafe[0].codePointAt(0).toString(16).toUpperCase().padStart(4, '0')})`);
+  if (ANONYMOUS.test(nameKey(name).replace(/[\p{P}\p{S}]/gu, ''))) throw new BadSubmission('name reads like the board\'s label of a student without a name ("student 3"): choose another');
+  return name;
+}
+
+/**
+ * What two names that look the same have in common: compatibility forms
+ * (NFKC: "ＡＮＮＡ" is "ANNA"), any letter case, no invisible characters nor
+ * spaces, lookalike letters of other scripts read as Latin.
+ * @param {string} name
+ */
+export function nameKey(name) {
+  const folded = name.normalize('NFKC').replace(INVISIBLE, '').toUpperCase().toLowerCase().normalize('NFKC');
+  return [...folded].map((c) => LOOKALIKES.get(c) ?? c).join('');
 }
 
 const PARTS = {

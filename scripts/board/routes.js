@@ -11,11 +11,15 @@
  *
  * The board's routes answer 403 without the key. A student's routes take
  * only what a laptop sends and answer with that laptop's own name: no route
- * for students reads anyone's answers.
+ * for students reads anyone's answers. A hello gives a laptop new to the
+ * class its secret; every later request proves it (X-RT-Laptop-Secret), so
+ * no laptop speaks as another. Only the class's own pages write: a write
+ * from another origin is refused (403) here as at the class gate.
  */
 import { createHash, timingSafeEqual } from 'node:crypto';
 import { readFileSync } from 'node:fs';
-import { checkSubmission, checkHello, BadSubmission, BODY_MAX_BYTES } from './checks.js';
+import { checkSubmission, readHello, checkNickname, BadSubmission, BODY_MAX_BYTES } from './checks.js';
+import { isOwnOrigin } from '../class-gate.js';
 import { BoardFullError } from './store.js';
 import { RateLimit, LAPTOP_LIMIT, ADDRESS_LIMIT } from './limits.js';
 import { boardCSV } from './csv.js';
@@ -48,6 +52,13 @@ const SECURITY = {
 };
 const BOARD_POLICY = "default-src 'self'; img-src 'self' data:; style-src 'self'; script-src 'self'; connect-src 'self'; frame-ancestors 'none'";
 const HEARTBEAT_MS = 15_000;
+/** What a refused submission is called on the board (the kind it said it was, when it is one). */
+const KINDS = ['answer', 'task', 'check', 'poll'];
+/** A body over the limit is read to its end (and dropped) up to this, so that the page hears 413, not a reset connection. */
+const DISCARD_MAX_BYTES = 64 * 1024 * 1024;
+/** The headers a student's page names its laptop and proves it with (lib/p5/class-board.js). */
+export const LAPTOP_HEADER = 'x-rt-laptop';
+export const SECRET_HEADER = 'x-rt-laptop-secret';
 const PUSH_AFTER_MS = 250; // a burst of submits makes one push, at most this late
 
 /**
@@ -70,17 +81,42 @@ export function boardRoutes({ store, key, limits = { laptop: new RateLimit(LAPTO
     },
     'POST /board/clear': (req, res) => { json(res, 200, { class: store.clear() }); live.changed(); },
   };
+  /** The laptop a request proves it is (its id and secret in the headers), or null. */
+  const provenLaptop = (req, laptop = req.headers[LAPTOP_HEADER]) => (typeof laptop === 'string' && store.proves(laptop, req.headers[SECRET_HEADER]) ? laptop : null);
+  const refused = (laptop, what, error) => {
+    if (!laptop || !(error instanceof BadSubmission)) return;
+    try { store.refuse(laptop, what, error.message); } catch { return; } // a full board keeps what it has
+    live.changed();
+  };
   const student = {
     'POST /class/hello': (req, res, body) => {
-      const { laptop, nickname } = checkHello(body);
-      const wait = limits.laptop.take(laptop);
+      const { laptop: asked, nickname: sent } = readHello(body);
+      const wait = limits.laptop.take(asked);
       if (wait) return tooMany(res, wait);
-      json(res, 200, store.hello(laptop, nickname));
+      const who = store.hello(asked, req.headers[SECRET_HEADER]);
+      try {
+        const nickname = checkNickname(sent);
+        json(res, 200, nickname === undefined ? who : { ...who, ...store.rename(who.laptop, nickname) });
+      } catch (error) {
+        if (!(error instanceof BadSubmission)) throw error;
+        refused(who.laptop, 'name', error);
+        json(res, 400, { error: error.message, field: 'name', ...who });
+      }
     },
     'POST /class/send': async (req, res, body) => {
-      const submission = checkSubmission(body);
-      const wait = limits.laptop.take(submission.laptop);
+      const laptop = provenLaptop(req, typeof body?.laptop === 'string' ? body.laptop : undefined);
+      if (!laptop) return json(res, 403, { error: 'this laptop must say hello to the class board first (its secret is missing or wrong)', hello: true });
+      const wait = limits.laptop.take(laptop);
       if (wait) return tooMany(res, wait);
+      let submission;
+      try {
+        submission = checkSubmission(body);
+        if (submission.nickname !== undefined) store.rename(laptop, submission.nickname);
+      } catch (error) {
+        refused(laptop, KINDS.includes(body?.kind) ? body.kind : 'send', error);
+        throw error;
+      }
+      delete submission.nickname;
       const { name, number, stored } = await keep(submission); // on disk when it resolves
       json(res, 200, { received: true, name, number, again: !stored }, { 'Server-Timing': `board;dur=${(performance.now() - req.boardStart).toFixed(1)}` });
       if (stored) live.changed();
@@ -91,16 +127,21 @@ export function boardRoutes({ store, key, limits = { laptop: new RateLimit(LAPTO
     const url = new URL(req.url ?? '/', 'http://class');
     const route = `${req.method} ${url.pathname}`;
     if (url.pathname === '/board' || url.pathname.startsWith('/board/')) {
+      if (req.method !== 'GET' && req.method !== 'HEAD' && !isOwnOrigin(req.headers)) return send(res, 403, 'Only the class board\'s own page may change it.', { 'Content-Type': 'text/plain; charset=utf-8' });
       if (!hasKey(url)) return send(res, 403, 'This is the teacher\'s class board: its address, with its key, is in the terminal of npm run class.', { 'Content-Type': 'text/plain; charset=utf-8' });
       if (!board[route]) return send(res, 404, 'Not found', { 'Content-Type': 'text/plain; charset=utf-8' });
       try { return board[route](req, res); } catch (error) { return answerError(res, error); }
     }
     if (!url.pathname.startsWith(STUDENT_ROUTE)) return next();
     if (!student[route]) return json(res, 404, { error: 'not a route of the class board' });
+    if (!isOwnOrigin(req.headers)) return json(res, 403, { error: 'only the class\'s own pages may send to the class board' });
     req.boardStart = performance.now();
     const wait = limits.address.take(req.socket?.remoteAddress ?? '?');
     if (wait) return tooMany(res, wait);
-    readJSON(req).then((body) => student[route](req, res, body)).catch((error) => answerError(res, error));
+    readJSON(req).then((body) => student[route](req, res, body)).catch((error) => {
+      if (error.status === 413) refused(provenLaptop(req), 'send', error);
+      answerError(res, error);
+    });
   };
   middleware.close = () => live.close();
   return middleware;
@@ -175,7 +216,12 @@ function liveStreams(stateText) {
   };
 }
 
-/** The request's body as JSON: at most BODY_MAX_BYTES, sent as application/json. */
+/**
+ * The request's body as JSON: at most BODY_MAX_BYTES, sent as application/json.
+ * A longer body is read to its end and dropped, then answered 413: closing
+ * the connection while the page still sends would reset it, and the page
+ * would hear nothing. Past DISCARD_MAX_BYTES it is answered and closed.
+ */
 function readJSON(req) {
   return new Promise((done, fail) => {
     if (!/^application\/json\b/i.test(req.headers['content-type'] ?? '')) {
@@ -185,12 +231,17 @@ function readJSON(req) {
     const tooLong = () => Object.assign(new BadSubmission(`the submission is too long: at most ${BODY_MAX_BYTES} bytes`), { status: 413 });
     const chunks = [];
     let size = 0;
-    req.on('data', (chunk) => {
+    const onData = (chunk) => {
       size += chunk.length;
       if (size <= BODY_MAX_BYTES) chunks.push(chunk);
-      else if (size > 64 * BODY_MAX_BYTES) req.destroy(); // read to its end to answer 413, but not forever
-    });
+      else if (size > DISCARD_MAX_BYTES) {
+        req.off('data', onData);
+        fail(Object.assign(tooLong(), { close: true }));
+      }
+    };
+    req.on('data', onData);
     req.on('end', () => {
+      if (size > DISCARD_MAX_BYTES) return;
       if (size > BODY_MAX_BYTES) return fail(tooLong());
       try { done(JSON.parse(Buffer.concat(chunks).toString('utf8'))); } catch { fail(new BadSubmission('the submission is not JSON')); }
     });
@@ -200,7 +251,11 @@ function readJSON(req) {
 
 function answerError(res, error) {
   if (res.headersSent || res.destroyed) return;
-  if (error instanceof BadSubmission) return json(res, error.status ?? 400, { error: error.message });
+  if (error instanceof BadSubmission) {
+    json(res, error.status ?? 400, { error: error.message, ...(error.message.startsWith('name ') ? { field: 'name' } : {}) }, error.close ? { Connection: 'close' } : {});
+    if (error.close) res.on('finish', () => res.socket?.destroySoon?.());
+    return;
+  }
   if (error instanceof BoardFullError) return json(res, 507, { error: `${error.message}: ask your teacher` });
   console.error('class board:', error);
   json(res, 500, { error: 'the class board could not store it: it will be sent again' });

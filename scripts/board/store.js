@@ -11,8 +11,15 @@
  * key, the id made by the student's page, so a page that sends again what it
  * is not sure arrived is stored once. "Clear the board" archives the class
  * (its rows stay in the file, its CSV too) and starts a new one.
+ *
+ * Each laptop has a secret, made at its first hello and kept hashed
+ * (SHA-256): a later request that does not prove it is not that laptop.
+ * What the server refused from a known laptop is kept too, with the reason,
+ * for the teacher to see.
  */
+import { createHash, randomBytes, timingSafeEqual } from 'node:crypto';
 import { mkdirSync } from 'node:fs';
+import { BadSubmission, nameKey } from './checks.js';
 import { join } from 'node:path';
 
 /** The database file in the board's folder. */
@@ -27,6 +34,8 @@ CREATE TABLE IF NOT EXISTS classes (
 CREATE TABLE IF NOT EXISTS laptops (
   class INTEGER NOT NULL, laptop TEXT NOT NULL, number INTEGER NOT NULL, nickname TEXT, seen TEXT NOT NULL,
   PRIMARY KEY (class, laptop));
+CREATE TABLE IF NOT EXISTS refused (
+  class INTEGER NOT NULL, laptop TEXT NOT NULL, at TEXT NOT NULL, what TEXT NOT NULL, reason TEXT NOT NULL);
 CREATE TABLE IF NOT EXISTS sent (
   class INTEGER NOT NULL, laptop TEXT NOT NULL, id TEXT NOT NULL, kind TEXT NOT NULL, at TEXT NOT NULL,
   page TEXT, task TEXT, line TEXT, x INTEGER, y INTEGER, h REAL, v REAL, width INTEGER, height INTEGER, fov REAL,
@@ -34,6 +43,10 @@ CREATE TABLE IF NOT EXISTS sent (
   PRIMARY KEY (class, laptop, id));
 CREATE INDEX IF NOT EXISTS sent_by_kind ON sent (class, kind);
 `;
+/** Columns added since the first boards: a board made before gets them when it is opened. */
+const LAPTOP_COLUMNS = { secret: 'BLOB', name_key: 'TEXT' };
+/** The refusals the board shows, newest first. */
+const REFUSED_SHOWN = 50;
 
 /** Thrown when the database has reached its size cap. */
 export class BoardFullError extends Error {}
@@ -52,6 +65,9 @@ export function openStore(folder, { Database, maxBytes = DATABASE_MAX_BYTES }) {
   const pageSize = db.pragma('page_size', { simple: true });
   db.pragma(`max_page_count = ${Math.max(16, Math.floor(maxBytes / pageSize))}`);
   db.exec(SCHEMA);
+  const has = new Set(db.pragma('table_info(laptops)').map((c) => c.name));
+  for (const [column, type] of Object.entries(LAPTOP_COLUMNS)) if (!has.has(column)) db.exec(`ALTER TABLE laptops ADD COLUMN ${column} ${type}`);
+  db.exec('CREATE INDEX IF NOT EXISTS laptops_by_name ON laptops (class, name_key)');
   return new BoardStore(db, maxBytes);
 }
 
@@ -67,15 +83,22 @@ export class BoardStore {
       current: q('SELECT id, started FROM classes WHERE archived IS NULL ORDER BY id DESC LIMIT 1'),
       newClass: q('INSERT INTO classes (started) VALUES (?)'),
       archive: q('UPDATE classes SET archived = ? WHERE id = ?'),
-      laptop: q('SELECT number, nickname FROM laptops WHERE class = ? AND laptop = ?'),
+      laptop: q('SELECT number, nickname, secret FROM laptops WHERE class = ? AND laptop = ?'),
       nextNumber: q('SELECT COALESCE(MAX(number), 0) + 1 AS n FROM laptops WHERE class = ?'),
-      addLaptop: q('INSERT INTO laptops (class, laptop, number, nickname, seen) VALUES (?, ?, ?, ?, ?)'),
-      renameLaptop: q('UPDATE laptops SET nickname = ?, seen = ? WHERE class = ? AND laptop = ?'),
+      addLaptop: q('INSERT INTO laptops (class, laptop, number, secret, seen) VALUES (?, ?, ?, ?, ?)'),
+      renameLaptop: q('UPDATE laptops SET nickname = ?, name_key = ?, seen = ? WHERE class = ? AND laptop = ?'),
+      nameTaken: q('SELECT 1 FROM laptops WHERE class = ? AND name_key = ? AND laptop <> ? LIMIT 1'),
+      refuse: q('INSERT INTO refused (class, laptop, at, what, reason) VALUES (?, ?, ?, ?, ?)'),
+      refused: q(`SELECT r.at, r.what, r.reason, l.number AS student, l.nickname FROM refused r JOIN laptops l ON l.class = r.class AND l.laptop = r.laptop
+        WHERE r.class = ? ORDER BY r.rowid DESC LIMIT ${REFUSED_SHOWN}`),
+      refusedCount: q('SELECT COUNT(*) AS n FROM refused WHERE class = ?'),
       add: q(`INSERT OR IGNORE INTO sent (class, laptop, id, kind, at, page, task, line, x, y, h, v, width, height, fov,
         verdict, color, color_name, page_said, passed, to_fix, value)
         VALUES (@class, @laptop, @id, @kind, @at, @page, @task, @line, @x, @y, @h, @v, @width, @height, @fov,
         @verdict, @color, @colorName, @pageSaid, @passed, @toFix, @value)`),
-      students: q('SELECT number, nickname FROM laptops WHERE class = ? ORDER BY number'),
+      // A student is a laptop that sent something the board kept: a visit alone is not one.
+      students: q(`SELECT number, nickname FROM laptops l WHERE class = ?
+        AND EXISTS (SELECT 1 FROM sent WHERE class = l.class AND laptop = l.laptop) ORDER BY number`),
       answers: q(`SELECT s.rowid AS id, l.number AS student, s.at, s.line, s.x, s.y, s.h, s.v, s.width, s.height, s.verdict, s.color_name AS colorName
         FROM sent s JOIN laptops l ON l.class = s.class AND l.laptop = s.laptop WHERE s.class = ? AND s.kind = 'answer' ORDER BY s.rowid`),
       tasks: q(`SELECT page, task, COUNT(DISTINCT laptop) AS students FROM sent WHERE class = ? AND kind = 'task' GROUP BY page, task`),
@@ -101,24 +124,65 @@ export class BoardStore {
   get currentClass() { return { ...this.#class }; }
 
   /**
-   * A laptop's name on the board (its nickname, else "student N"), made
-   * known to the class on its first visit; a new nickname replaces the old.
-   * @returns {{ number: number, name: string }}
+   * A laptop saying hello: the laptop `laptop` when `secret` is its secret;
+   * a laptop new to the class gets a number and a secret; one that exists but
+   * whose secret was not given (or not this one) is not handed over: a new
+   * laptop, with an id of its own, is made instead.
+   * @param {string} laptop
+   * @param {string | undefined} secret
+   * @returns {{ laptop: string, number: number, name: string, secret?: string }} secret: only to a new laptop
    */
-  hello(laptop, nickname) {
-    return this.#write(() => this.#laptop(laptop, nickname, new Date().toISOString()));
+  hello(laptop, secret) {
+    return this.#write(() => {
+      const at = new Date().toISOString();
+      const found = this.#q.laptop.get(this.#class.id, laptop);
+      if (found && sameSecret(found.secret, secret)) return { laptop, number: found.number, name: nameOf(found.number, found.nickname) };
+      const id = found ? randomBytes(16).toString('hex') : laptop;
+      const made = randomBytes(32).toString('base64url');
+      const number = this.#add(id, at, hashOf(made)).number;
+      return { laptop: id, number, name: nameOf(number, null), secret: made };
+    });
   }
 
-  #laptop(laptop, nickname, at) {
-    const cls = this.#class.id;
-    const found = this.#q.laptop.get(cls, laptop);
-    if (!found) {
-      const number = this.#q.nextNumber.get(cls).n;
-      this.#q.addLaptop.run(cls, laptop, number, nickname ?? null, at);
-      return { number, name: nameOf(number, nickname) };
-    }
-    if (nickname && nickname !== found.nickname) this.#q.renameLaptop.run(nickname, at, cls, laptop);
-    return { number: found.number, name: nameOf(found.number, nickname ?? found.nickname) };
+  /** Whether `secret` is the secret of the laptop `laptop` of this class (compared in constant time). */
+  proves(laptop, secret) {
+    const found = this.#q.laptop.get(this.#class.id, laptop);
+    return Boolean(found) && sameSecret(found.secret, secret);
+  }
+
+  /**
+   * A new name for a laptop of the class (checked by checkNickname first): refused
+   * when another laptop of the class has one that reads the same (nameKey).
+   * @returns {{ number: number, name: string }}
+   */
+  rename(laptop, nickname) {
+    const key = nameKey(nickname);
+    return this.#write(() => {
+      const cls = this.#class.id;
+      const found = this.#q.laptop.get(cls, laptop);
+      if (!found) throw new BadSubmission('laptop must say hello before it takes a name');
+      if (this.#q.nameTaken.get(cls, key, laptop)) throw new BadSubmission(`name ${JSON.stringify(nickname)} is taken: another laptop of the class has it (or one that reads the same); choose another`);
+      if (nickname !== found.nickname) this.#q.renameLaptop.run(nickname, key, new Date().toISOString(), cls, laptop);
+      return { number: found.number, name: nameOf(found.number, nickname) };
+    });
+  }
+
+  /** Keeps what the server refused from a laptop of the class, and why, for the board. */
+  refuse(laptop, what, reason) {
+    this.#write(() => this.#q.refuse.run(this.#class.id, laptop, new Date().toISOString(), what, reason));
+  }
+
+  /** A laptop of the class (made, without a secret, when a submission comes from one it does not know). */
+  #laptop(laptop, at) {
+    const found = this.#q.laptop.get(this.#class.id, laptop);
+    if (found) return { number: found.number, name: nameOf(found.number, found.nickname) };
+    return this.#add(laptop, at, null);
+  }
+
+  #add(laptop, at, secretHash) {
+    const number = this.#q.nextNumber.get(this.#class.id).n;
+    this.#q.addLaptop.run(this.#class.id, laptop, number, secretHash, at);
+    return { number, name: nameOf(number, null) };
   }
 
   /**
@@ -139,7 +203,7 @@ export class BoardStore {
   addMany(submissions) {
     return this.#write(() => submissions.map((submission) => {
       const at = new Date().toISOString();
-      const who = this.#laptop(submission.laptop, submission.nickname, at);
+      const who = this.#laptop(submission.laptop, at);
       const row = { ...EMPTY_ROW, ...submission, class: this.#class.id, at };
       delete row.nickname;
       const { changes } = this.#q.add.run(row);
@@ -168,6 +232,8 @@ export class BoardStore {
       tasks: this.#q.tasks.all(cls),
       poll: this.#q.poll.all(cls),
       homework: this.#q.homework.all({ class: cls }),
+      refused: this.#q.refused.all(cls).map(({ nickname, ...r }) => ({ ...r, name: nameOf(r.student, nickname) })),
+      refusedCount: this.#q.refusedCount.get(cls).n,
     };
   }
 
@@ -186,6 +252,14 @@ export class BoardStore {
   }
 
   close() { this.#db.close(); }
+}
+
+const hashOf = (text) => createHash('sha256').update(String(text)).digest();
+
+/** Whether `secret` hashes to `kept` (a laptop without a secret, from an older board, proves nothing). */
+function sameSecret(kept, secret) {
+  if (!kept || typeof secret !== 'string' || secret.length > 200) return false;
+  return timingSafeEqual(hashOf(secret), kept);
 }
 
 /** A student's name on the board: the nickname, else "student N". */

@@ -43,9 +43,15 @@ async function openBoard(page) {
   await expect(page.locator('[data-live]')).toHaveAttribute('data-live', 'live', { timeout: 30_000 }); // the first time, the server prepares the board's modules
 }
 
-/** Sends as a student's page does (JSON to /class/send). */
-async function send(body) {
-  const answer = await fetch(`${server.url}class/send`, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(body) });
+/** Says hello as a student's page does: the laptop's id and secret (and name, status, error). */
+async function hello(laptop, nickname, secret = '') {
+  const answer = await fetch(`${server.url}class/hello`, { method: 'POST', headers: { 'Content-Type': 'application/json', 'X-RT-Laptop-Secret': secret }, body: JSON.stringify({ laptop, nickname }) });
+  return { status: answer.status, ...(await answer.json()) };
+}
+
+/** Sends as a student's page does (JSON to /class/send, with the laptop's secret). */
+async function send(body, { secret }) {
+  const answer = await fetch(`${server.url}class/send`, { method: 'POST', headers: { 'Content-Type': 'application/json', 'X-RT-Laptop-Secret': secret }, body: JSON.stringify(body) });
   return { status: answer.status, body: await answer.json() };
 }
 
@@ -132,6 +138,82 @@ test('a task, a homework check and the poll reach the board', async ({ browser }
   expect(errors).toEqual([]);
 });
 
+test('the name bar shows the server\'s word next to the box when a name is refused, and the old name stays', async ({ browser }) => {
+  test.setTimeout(120_000);
+  await hello('name-owner-laptop', 'Noor');
+  const student = await (await browser.newContext()).newPage();
+  const errors = watchConsole(student);
+  await student.goto(`${server.url}poll.html`);
+  const shown = student.locator('[data-class-name]');
+  await expect(shown).toHaveText(/^student \d+$/);
+  const anonymous = await shown.textContent();
+  const box = student.getByLabel('Your name on the board');
+  const problem = student.locator('[data-class-problem]');
+  await expect(box).toHaveAttribute('aria-describedby', await problem.getAttribute('id'));
+  await expect(problem).toHaveAttribute('role', 'alert');
+  for (const [name, message] of [['NOOR', /^Not saved: name "NOOR" is taken/], ['Student 1', /^Not saved: name reads like the board's label/], ['\u3164', /^Not saved: name is blank/]]) {
+    await box.fill(name);
+    await student.getByRole('button', { name: 'Save name' }).click();
+    await expect(problem).toHaveText(message);
+    await expect(box).toHaveAttribute('aria-invalid', 'true');
+    await expect(shown).toHaveText(anonymous);
+  }
+  expect(await student.evaluate(() => localStorage.getItem('rt-class-nickname'))).toBeNull();
+  await box.fill('Noor B');
+  await student.getByRole('button', { name: 'Save name' }).click();
+  await expect(shown).toHaveText('Noor B');
+  await expect(problem).toHaveText('');
+  await expect(box).toHaveAttribute('aria-invalid', 'false');
+  expect((await new AxeBuilder({ page: student }).withTags(TAGS).analyze()).violations.filter((v) => ['serious', 'critical'].includes(v.impact)).map((v) => v.id)).toEqual([]);
+  expect(errors).toEqual([]);
+});
+
+test('what waited in the outbox before the laptop had a secret still arrives, under a laptop of its own', async ({ browser }) => {
+  test.setTimeout(120_000);
+  const taken = await hello('someone-elses-laptop-1', 'Owner'); // its id, written into another page's storage: not handed over
+  const context = await browser.newContext();
+  const queued = { id: 'queued-before-secret', kind: 'answer', line: `Pixel: ${NOT_PINK[7].x},${NOT_PINK[7].y}; H: 0; V: 0`, ...SCREEN };
+  await context.addInitScript(([laptop, item]) => {
+    if (sessionStorage.getItem('seeded')) return;
+    sessionStorage.setItem('seeded', '1');
+    localStorage.setItem('rt-class-laptop', laptop);
+    localStorage.setItem('rt-class-outbox', JSON.stringify([item]));
+  }, [taken.laptop, queued]);
+  const student = await context.newPage();
+  const errors = watchConsole(student);
+  const before = (await stateOf()).answers.length;
+  await student.goto(`${server.url}poll.html`);
+  await expect.poll(async () => (await stateOf()).answers.length, { timeout: 30_000 }).toBe(before + 1);
+  const state = await stateOf();
+  expect(state.answers.at(-1).line).toBe(queued.line);
+  expect(state.students.find((s) => s.number === state.answers.at(-1).student)?.name).not.toBe('Owner');
+  const kept = await student.evaluate(() => [localStorage.getItem('rt-class-laptop'), localStorage.getItem('rt-class-secret'), localStorage.getItem('rt-class-outbox')]);
+  expect(kept[0]).not.toBe(taken.laptop);
+  expect(kept[1]).toMatch(/^[\w-]{43}$/);
+  expect(JSON.parse(kept[2])).toEqual([]);
+  expect(errors).toEqual([]);
+});
+
+test('another origin cannot write to the class board: its page\'s POST is refused and nothing is stored', async ({ browser }) => {
+  const page = await (await browser.newContext()).newPage();
+  const before = await stateOf();
+  await page.goto(`${server.url.replace('127.0.0.1', 'localhost')}favicon-elsewhere`).catch(() => {}); // a page of another origin (another name of this server)
+  const outcome = await page.evaluate(async (url) => {
+    try {
+      const answer = await fetch(`${url}class/hello`, { method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify({ laptop: 'cross-origin-laptop', nickname: 'Mallory' }) });
+      return `answered ${answer.status}`;
+    } catch (error) { return `refused: ${error.name}`; }
+  }, server.url);
+  expect(outcome).toBe('refused: TypeError'); // the preflight was refused: the browser never sent it
+  const simple = await page.evaluate(async (url) => {
+    try { await fetch(`${url}class/hello`, { method: 'POST', mode: 'no-cors', headers: { 'Content-Type': 'text/plain' }, body: '{"laptop":"cross-origin-laptop-2"}' }); return 'sent'; } catch { return 'refused'; }
+  }, server.url);
+  expect(simple).toBe('sent'); // a simple request goes out, opaque to the page: the server refused it (403), as the state shows
+  const after = await stateOf();
+  expect(after.students).toEqual(before.students);
+  expect(after.refusedCount).toBe(before.refusedCount);
+});
+
 test('without the key the board and its actions answer 403; a student\'s routes read nothing', async ({ request }) => {
   for (const path of ['board', 'board/state', 'board/events', 'board/class.csv']) {
     for (const key of ['', '?key=', `?key=${server.key}0`, `?key=${server.key.toUpperCase()}`]) {
@@ -145,18 +227,26 @@ test('without the key the board and its actions answer 403; a student\'s routes 
   for (const path of ['class/send', 'class/hello', 'class/state', 'class/']) expect((await request.get(server.url + path)).status(), path).toBe(404);
 });
 
-test('hostile nicknames and answers: refused with the field named, or shown as text', async ({ page }) => {
+test('hostile nicknames and answers: refused with the field named, or shown as text; the board lists what was refused, as text', async ({ page }) => {
   const errors = watchConsole(page);
   let dialogs = 0;
   page.on('dialog', (d) => { dialogs++; d.dismiss(); });
-  const laptop = 'hostile-laptop-1';
-  const refused = await send({ laptop, id: 'h1', kind: 'answer', line: HOSTILE, ...SCREEN });
+  const me = await hello('hostile-laptop-1');
+  const laptop = me.laptop;
+  const refused = await send({ laptop, id: 'h1', kind: 'answer', line: HOSTILE, ...SCREEN }, me);
   expect(refused.status).toBe(400);
   expect(refused.body.error).toMatch(/^line must/);
-  expect((await send({ laptop, id: 'h2', kind: 'answer', nickname: 'x'.repeat(41), line: 'Pixel: 1,1; H: 0; V: 0', ...SCREEN })).body.error).toMatch(/^nickname is too long/);
-  const liar = await send({ laptop, nickname: HOSTILE.slice(0, 40), id: 'h3', kind: 'answer', line: `Pixel: ${NOT_PINK[3].x},${NOT_PINK[3].y}; H: 0; V: 0`, ...SCREEN, verdict: 'right' });
+  expect((await send({ laptop, id: 'h2', kind: 'answer', nickname: 'x'.repeat(41), line: 'Pixel: 1,1; H: 0; V: 0', ...SCREEN }, me)).body.error).toMatch(/^name is too long/);
+  const liar = await send({ laptop, nickname: HOSTILE.slice(0, 40), id: 'h3', kind: 'answer', line: `Pixel: ${NOT_PINK[3].x},${NOT_PINK[3].y}; H: 0; V: 0`, ...SCREEN, verdict: 'right' }, me);
   expect(liar.status).toBe(200);
+  // Without the laptop's secret: refused, and nothing of it on the board.
+  expect((await send({ laptop, id: 'h4', kind: 'answer', line: 'Pixel: 2,2; H: 0; V: 0', ...SCREEN }, { secret: '' })).status).toBe(403);
   await openBoard(page);
+  const list = page.locator('[data-refused]');
+  await expect(list.locator('li[data-refused="answer"]').filter({ hasText: 'line must read like' })).toHaveCount(1);
+  await expect(list.locator('li[data-refused="answer"]').filter({ hasText: 'name is too long' })).toHaveCount(1);
+  await expect(list.locator('li').first()).toContainText(HOSTILE.slice(0, 40)); // the newest first, its name as text
+  await expect(page.locator('[data-refused-count]')).toHaveText(/^[1-9]\d*$/);
   const mark = page.locator(`[data-answer][data-pixel="${NOT_PINK[3].x},${NOT_PINK[3].y}"]`);
   await expect(mark).toHaveAttribute('data-verdict', 'wrong'); // judged again: the page's "right" is not taken
   await expect(mark).toHaveAttribute('aria-label', new RegExp(`^${HOSTILE.slice(0, 40).replace(/[.*+?^${}()|[\]\\]/g, '\\$&')}:`));
@@ -170,7 +260,8 @@ test('hostile nicknames and answers: refused with the field named, or shown as t
 test('kill -9, start again with the same folder: the board shows the same', async ({ page }) => {
   test.setTimeout(180_000);
   const before = await stateOf();
-  const last = await send({ laptop: 'restart-laptop', nickname: 'Ada', id: 'r1', kind: 'answer', line: `Pixel: ${PINK[0].x},${PINK[0].y}; H: 0; V: 0`, ...SCREEN });
+  const ada = await hello('restart-laptop', 'Ada');
+  const last = await send({ laptop: ada.laptop, id: 'r1', kind: 'answer', line: `Pixel: ${PINK[0].x},${PINK[0].y}; H: 0; V: 0`, ...SCREEN }, ada);
   expect(last.body.received).toBe(true);
   await server.crash(); // right after "received": it must be on disk already
   server = await startBoardServer({ data, port: server.port });
@@ -181,8 +272,8 @@ test('kill -9, start again with the same folder: the board shows the same', asyn
   await openBoard(page);
   await expect(page.locator('[data-board-answers]')).toHaveText(String(after.answers.length));
   await expect(page.locator('[data-answer]')).toHaveCount(after.answers.length);
-  // Sent again (the page was not sure it arrived): still once.
-  expect((await send({ laptop: 'restart-laptop', id: 'r1', kind: 'answer', line: `Pixel: ${PINK[0].x},${PINK[0].y}; H: 0; V: 0`, ...SCREEN })).body.again).toBe(true);
+  // Sent again (the page was not sure it arrived): still once; the laptop's secret outlived the crash.
+  expect((await send({ laptop: ada.laptop, id: 'r1', kind: 'answer', line: `Pixel: ${PINK[0].x},${PINK[0].y}; H: 0; V: 0`, ...SCREEN }, ada)).body.again).toBe(true);
   expect((await stateOf()).answers).toHaveLength(after.answers.length);
 });
 

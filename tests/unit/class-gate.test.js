@@ -12,11 +12,12 @@ import {
   computerNames, allowedHostsFrom, hostName, STUDENT_ROUTES,
 } from '../../scripts/class-gate.js';
 import { isTeacherOnly } from '../../scripts/classroom.js';
+import { boardKey } from '../../scripts/board/setup.js';
 
 /** One request to the server: its status, headers and body. */
-function ask(port, path, { method = 'GET', host = `127.0.0.1:${port}`, json } = {}) {
+function ask(port, path, { method = 'GET', host = `127.0.0.1:${port}`, json, headers: more = {} } = {}) {
   return new Promise((done, fail) => {
-    const headers = { host, ...(json === undefined ? {} : { 'content-type': 'application/json' }) };
+    const headers = { host, ...(json === undefined ? {} : { 'content-type': 'application/json' }), ...more };
     const req = request({ host: '127.0.0.1', port, path: path.replace(/[^\x21-\x7e]/gu, encodeURIComponent), method, headers }, (res) => {
       let body = '';
       res.on('data', (chunk) => { body += chunk; });
@@ -52,7 +53,8 @@ describe('the class server, started as npm run class starts it', () => {
     expect(gate).toBeGreaterThanOrEqual(0);
     // Before it: only Vite's checks of a request's form (invalid requests, CORS, timing).
     const before = stack.slice(0, gate).map((layer) => layer.handle.name);
-    for (const name of before) expect(name, `${name} runs before the gate`).toMatch(/^(viteRejectInvalidRequestMiddleware|corsMiddleware|viteTimeMiddleware)$/);
+    for (const name of before) expect(name, `${name} runs before the gate`).toMatch(/^(viteRejectInvalidRequestMiddleware|viteTimeMiddleware)$/);
+    expect(stack.map((layer) => layer.handle.name)).not.toContain('corsMiddleware'); // no CORS answers at all
     expect(stack.slice(0, gate).every((layer) => layer.route === '')).toBe(true);
   });
 
@@ -101,6 +103,37 @@ describe('the class server, started as npm run class starts it', () => {
     // A name the server was not told: refused before the board hears of it.
     const rebound = await ask(port, '/class/send', { method: 'POST', host: `rebound.example:${port}`, json: {} });
     expect([rebound.status, rebound.headers['x-refused-by']]).toEqual([403, 'class-gate']);
+  });
+
+  it('answers no other origin: no Access-Control-Allow-Origin, preflights and writes refused, nothing stored', async () => {
+    const key = boardKey(boardFolder);
+    const own = `http://127.0.0.1:${port}`;
+    const foreign = [`http://127.0.0.1:${port + 1}`, 'null', `https://127.0.0.1:${port}`, `http://LOCALHOST:${port}`, `http://localhost.:${port}`,
+      `http://localhost:${port}`, 'http://class.test', 'http://evil.example', `${own}.evil.example`];
+    for (const origin of foreign) {
+      for (const path of ['/', '/lib/index.js', `/board/state?key=${key}`, '/board/state']) {
+        const read = await ask(port, path, { headers: { origin } });
+        expect([origin, path, read.headers['access-control-allow-origin']]).toEqual([origin, path, undefined]);
+      }
+      for (const path of ['/class/send', '/class/hello', `/board/clear?key=${key}`, '/lib/index.js']) {
+        const preflight = await ask(port, path, { method: 'OPTIONS', headers: { origin, 'access-control-request-method': 'POST', 'access-control-request-headers': 'content-type' } });
+        expect([origin, path, preflight.status, preflight.headers['access-control-allow-origin']]).toEqual([origin, path, 403, undefined]);
+      }
+      for (const path of ['/class/hello', '/class/send', `/board/clear?key=${key}`]) {
+        const write = await ask(port, path, { method: 'POST', json: { laptop: 'laptop-from-elsewhere', nickname: 'Mallory' }, headers: { origin } });
+        expect([origin, path, write.status, write.headers['x-refused-by']]).toEqual([origin, path, 403, 'class-gate']);
+      }
+    }
+    const crossSite = await ask(port, '/class/hello', { method: 'POST', json: { laptop: 'laptop-from-elsewhere' }, headers: { 'sec-fetch-site': 'cross-site' } });
+    expect(crossSite.status).toBe(403);
+    const before = JSON.parse((await ask(port, `/board/state?key=${key}`)).body);
+    expect(before.refusedCount).toBe(0);
+    // The class's own page, by the name it was opened with: let through.
+    const hello = await ask(port, '/class/hello', { method: 'POST', json: { laptop: 'laptop-own-page' }, headers: { origin: own, 'sec-fetch-site': 'same-origin' } });
+    expect(hello.status).toBe(200);
+    const named = await ask(port, '/class/hello', { method: 'POST', host: `class.test:${port}`, json: { laptop: 'laptop-own-page-2' }, headers: { origin: `http://class.test:${port}` } });
+    expect(named.status).toBe(200);
+    expect(JSON.parse(named.body).laptop).toBe('laptop-own-page-2');
   });
 
   it('gives the editor each sketch\'s own file as its starter, never a solution', async () => {

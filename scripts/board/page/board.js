@@ -6,7 +6,7 @@
  */
 import { classScene, Camera, render } from '../../../lib/index.js';
 import { showMarks } from './board-marks.js';
-import { showSpread, showPoll, showHomework, showTasks } from './board-parts.js';
+import { showSpread, showPoll, showHomework, showTasks, showRefused } from './board-parts.js';
 
 const key = new URLSearchParams(location.search).get('key') ?? '';
 const withKey = (path) => `${path}?key=${encodeURIComponent(key)}`;
@@ -30,6 +30,7 @@ function show(state) {
   const answered = new Set(answers.map((a) => a.student));
   $('[data-count="right"]').textContent = String(right.size);
   $('[data-count="wrong"]').textContent = String(answered.size - right.size);
+  // Students are the laptops that sent something kept: those without an answer sent other work.
   $('[data-count="not-yet"]').textContent = String(state.students.length - answered.size);
   showMarks($('[data-marks]'), answers, state.class.id);
   showLatest(answers);
@@ -38,6 +39,8 @@ function show(state) {
   whenChanged('poll', state.poll, () => showPoll($('[data-poll]'), state.poll));
   whenChanged('homework', [state.homework, n], () => showHomework($('[data-homework]'), state.homework, n));
   whenChanged('tasks', [state.tasks, n], () => showTasks($('[data-tasks]'), state.tasks, n));
+  whenChanged('refused', state.refused, () => showRefused($('[data-refused]'), state.refused ?? []));
+  $('[data-refused-count]').textContent = String(state.refusedCount ?? 0);
 }
 
 /** Draws a part again only when what it shows changed (a burst of answers leaves the others as they are). */
