@@ -8,6 +8,9 @@
  *
  * Code that came in a link waits for the student's Run, and runs only in
  * the frame, which cannot read this page, its storage or the class's board.
+ * From the first run the page's tasks and self-check are the page's own,
+ * under the frame (page-judge.js): judged from what the code built, kept
+ * through every run, sent to the class's board from the page.
  * The sketch's own script still runs in the page at first, as the teacher's
  * file: a save of the file swaps it in place, as on every page, and sets the
  * editor's text too while the student has not changed it.
@@ -16,12 +19,10 @@ import { showMistake, clearMistakes } from '../lib/p5/error-panel.js';
 import { pageViews } from '../lib/p5/page-state.js';
 import { element, copyText } from '../lib/p5/dom.js';
 import { downloadText } from '../lib/p5/text-box.js';
-import { loadProgress, saveProgress } from '../lib/p5/progress-store.js';
-import { LESSONS } from '../lib/lesson/tasks.js';
-import { PROGRESS_KEY, parseProgress } from '../lib/lesson/progress.js';
 import { createCodeEditor } from './code-editor.js';
 import './code-in-page.css';
 import { SketchFrames } from './frame-host.js';
+import { openPageJudge, boardLines } from './page-judge.js';
 import { codeTextInLink, decodeCodeLink, codeLinkURL, CODE_LINK_WARN_LENGTH } from './code-link.js';
 import { keptCode, keepCode } from './kept-code.js';
 
@@ -57,10 +58,11 @@ export function openCodePanel({ name, main, markup, instances }) {
     element('div', { class: 'code-toolbar' }, buttons.run, buttons.download, buttons.reset, buttons.share),
     status, linkBox, editorBox);
   const frames = element('div', { class: 'code-frames', 'data-code-frames': '', hidden: '' });
-  const area = element('div', { class: 'code-in-page' }, frames, panel); // on a wide screen, once the code runs: the frame beside the editor
+  const judged = element('div', { class: 'code-judged', 'data-code-judged': '', hidden: '' }); // the page's tasks and self-check, once the code runs
+  const area = element('div', { class: 'code-in-page' }, element('div', { class: 'code-picture' }, frames, judged), panel); // on a wide screen, once the code runs: the frame beside the editor
   main.after(area);
 
-  let starter = null, editor = null, timer = 0, linkWaiting = false, selected = null, runs = 0, quiet = false;
+  let starter = null, editor = null, timer = 0, linkWaiting = false, selected = null, runs = 0, quiet = false, judge = null;
   const say = (text) => { status.textContent = text; };
   const keep = (code) => keepCode(name, code, starter);
 
@@ -84,7 +86,6 @@ export function openCodePanel({ name, main, markup, instances }) {
       bodyClass: document.body.className,
       imports: ['../lib/index.js', '../lib/p5/index.js'].map((path) => new URL(path, location.href).href),
       sourceURL: file,
-      progressKey: PROGRESS_KEY,
     },
     onMessage: heard,
   });
@@ -99,7 +100,10 @@ export function openCodePanel({ name, main, markup, instances }) {
     clearMistakes();
     if (!host.showing) {
       selected ??= pageViews().find((v) => typeof v.select === 'function')?.selected ?? null;
+      const lines = boardLines(); // what the page's own parts sent stays said, under the page's judge
       for (const p of [...instances]) p.remove();
+      judge ??= openPageJudge({ page: name.slice(0, 2), box: judged, lines });
+      judged.hidden = false;
       const was = panel.getBoundingClientRect().top;
       main.hidden = true;
       main.style.display = 'none'; // its layout's own display would keep showing an empty box
@@ -124,12 +128,11 @@ export function openCodePanel({ name, main, markup, instances }) {
   }
 
   function heard(message, current) {
+    judge?.heard(message);
     switch (message.type) {
       case 'setup': say(`Your code ran (run ${runs}).`); break;
       case 'render': document.body.dataset.render = message.state; break;
       case 'select': selected = message.x === null ? null : { x: message.x, y: message.y }; break;
-      case 'check': panel.dataset.check = message.passed ? 'passed' : 'not-yet'; break;
-      case 'progress': keepProgress(message.text); break;
       case 'stuck': // the frames are gone (frame-host.js): the picture too
         mistake(`Your code did not answer for ${message.seconds} s: is there a loop that never ends (while (true), a step that goes the wrong way)? It was stopped.`);
         say('Your code was stopped: fix the loop and it runs again.');
@@ -148,16 +151,6 @@ export function openCodePanel({ name, main, markup, instances }) {
         break;
       }
     }
-  }
-
-  /** The frame's task list ticked tasks of this page: kept with the rest of the student's progress. */
-  function keepProgress(text) {
-    const page = name.slice(0, 2);
-    const done = parseProgress(text, LESSONS)[page];
-    if (!done?.length) return;
-    const progress = loadProgress();
-    progress[page] = [...new Set([...(progress[page] ?? []), ...done])];
-    saveProgress(progress);
   }
 
   const changed = (code) => {

@@ -19,20 +19,17 @@
  * whose step goes the wrong way): the frames are removed, which stops it and
  * frees the student's processor, and the page hears `{ type: 'stuck' }`.
  */
-import { readFrameMessage } from './frame-protocol.js';
+import { readFrameMessage, frameHeight } from './frame-protocol.js';
 
 /** The frame's bootstrap, written into its document as text: it runs in the frame, not here. */
 function frameBootstrap() {
   const tell = (message) => parent.postMessage(message, '*');
-  // Storage of its own, in memory: a sandboxed frame's own throws. The task list's progress goes to the page.
-  const memory = (progressKey) => {
+  // Storage of its own, in memory: a sandboxed frame's own throws. Nothing in it reaches the page.
+  const memory = () => {
     const items = new Map();
     return {
       getItem: (key) => (items.has(String(key)) ? items.get(String(key)) : null),
-      setItem: (key, value) => {
-        items.set(String(key), String(value));
-        if (String(key) === progressKey) tell({ type: 'progress', text: String(value) });
-      },
+      setItem: (key, value) => { items.set(String(key), String(value)); },
       removeItem: (key) => { items.delete(String(key)); },
       clear: () => items.clear(),
       key: (i) => [...items.keys()][i] ?? null,
@@ -49,8 +46,8 @@ function frameBootstrap() {
     const run = event.data;
     if (event.source !== parent || !run || run.type !== 'run') return;
     removeEventListener('message', listen);
-    Object.defineProperty(window, 'localStorage', { value: memory(run.progressKey), configurable: true });
-    Object.defineProperty(window, 'sessionStorage', { value: memory(null), configurable: true });
+    Object.defineProperty(window, 'localStorage', { value: memory(), configurable: true });
+    Object.defineProperty(window, 'sessionStorage', { value: memory(), configurable: true });
     const blob = (code) => URL.createObjectURL(new Blob([code], { type: 'text/javascript' }));
     const runtime = blob(run.runtime);
     const imports = { p5: blob(`export { p5 as default } from ${JSON.stringify(runtime)};`) };
@@ -84,7 +81,8 @@ function frameBootstrap() {
 export const SILENCE_MS = 8_000;
 
 /** In the frame, the page's margins are the page's own, around the frame. */
-const FRAME_CSS = 'body.in-frame { margin: 0; padding: 0.25rem 0 0; min-height: 0; }';
+// The page shows the tasks and the self-check outside the frame: the frame's empty place for them goes.
+const FRAME_CSS = 'body.in-frame { margin: 0; padding: 0.25rem 0 0; min-height: 0; }\nbody.in-frame .hw-panel:empty { display: none; }';
 
 const escapeText = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');
 
@@ -109,7 +107,7 @@ export class SketchFrames {
    * @param {object} options
    * @param {HTMLElement} options.box where the frames go
    * @param {() => Promise<string>} options.runtime the runtime's code (fetched once by the caller)
-   * @param {{ base: string, title: string, css: () => string, markup: string, bodyClass: string, imports: string[], sourceURL: string, progressKey: string }} options.page
+   * @param {{ base: string, title: string, css: () => string, markup: string, bodyClass: string, imports: string[], sourceURL: string }} options.page
    * @param {(message: object, current: boolean) => void} options.onMessage each checked message of a frame still on the page
    */
   constructor({ box, runtime, page, onMessage }) {
@@ -143,7 +141,7 @@ export class SketchFrames {
     frame.style.height = this.#current ? this.#current.style.height : '';
     const page = this.#page;
     frame.srcdoc = frameDocument({ base: page.base, title: page.title, css: page.css(), markup: page.markup, bodyClass: page.bodyClass });
-    this.#runs.set(frame, { type: 'run', runtime, code, sourceURL: page.sourceURL, imports: page.imports, selected, progressKey: page.progressKey });
+    this.#runs.set(frame, { type: 'run', runtime, code, sourceURL: page.sourceURL, imports: page.imports, selected });
     this.#pending = frame;
     this.#heardAt.set(frame, performance.now());
     this.#watchForLoops();
@@ -209,7 +207,7 @@ export class SketchFrames {
       return;
     }
     if (message.type === 'size') {
-      from.style.height = `${message.height}px`;
+      from.style.height = `${frameHeight(message.height, innerHeight)}px`;
       return;
     }
     if (from === this.#pending) {

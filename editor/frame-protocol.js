@@ -4,6 +4,9 @@
  * may have come in a link, so everything it says is untrusted input: each
  * message is read here, field by field, into a fresh object with known
  * types and sizes, or refused (null). Nothing in it is ever parsed as HTML.
+ * The frame reports; it never judges: a message claiming a verdict, a task
+ * done or progress is no message the page knows. The page judges the
+ * homework itself from the scene the code built (editor/page-judge.js).
  *
  *   frame → page
  *     { type: 'ready' }                          the frame's document waits for its run
@@ -12,23 +15,29 @@
  *     { type: 'render', state }                  'rendering' | 'done' | 'error' (body[data-render] in the frame)
  *     { type: 'error', message, line, column, exact }   a mistake, at a line of the editor's code (or null)
  *     { type: 'select', x, y }                   the pixel selected in the frame's first tracer view
- *     { type: 'check', passed }                  a homework self-check ran on the edited code
- *     { type: 'progress', text }                 the task list's progress, as the kit stores it (lib/lesson/progress.js)
- *     { type: 'size', height }                   the frame's content height in CSS pixels
+ *     { type: 'scene', scene, camera, mode, order, problem }   what the code built, as the library's JSON text
+ *                                                (lib/scene/json.js), read again by the page; or null and the
+ *                                                problem, in words, when it could not be written
+ *     { type: 'size', height }                   the frame's content height in CSS pixels (the page clamps it: frameHeight)
  *   page → frame
  *     { type: 'run', runtime, code, sourceURL, imports, selected }
  */
 
 /** The longest message text a frame may send (a mistake's message), in characters. */
 export const MAX_MESSAGE = 2_000;
-/** The longest progress text a frame may send. */
-export const MAX_PROGRESS = 4_000;
-/** The tallest a frame may ask to be, in CSS pixels. */
-export const MAX_HEIGHT = 20_000;
+/** The longest scene JSON a frame may send (characters): 10,000 objects, or sketch 13's bunny, with room to spare. */
+export const MAX_SCENE_TEXT = 4_000_000;
+/** The longest camera JSON a frame may send (characters): a camera is about 100. */
+const MAX_CAMERA_TEXT = 1_000;
+/** The shortest a frame is made, in CSS pixels, whatever it asks. */
+export const MIN_HEIGHT = 160;
+/** The tallest a frame is made, in CSS pixels, unless the window is taller: past it, the frame scrolls. */
+export const MAX_HEIGHT = 2_000;
 /** The largest traced picture's side a selected pixel may name. */
 const MAX_PIXEL = 8_192;
 
 const RENDER_STATES = ['rendering', 'done', 'error'];
+const ORDERS = ['coarse', 'scanline', 'slow'];
 
 const isWhole = (n, min, max) => Number.isInteger(n) && n >= min && n <= max;
 const text = (s, max) => (typeof s === 'string' ? s.slice(0, max) : null);
@@ -59,17 +68,35 @@ export function readFrameMessage(data) {
     case 'select':
       if (m.x === null && m.y === null) return { type: 'select', x: null, y: null };
       return isWhole(m.x, 0, MAX_PIXEL) && isWhole(m.y, 0, MAX_PIXEL) ? { type: 'select', x: m.x, y: m.y } : null;
-    case 'check':
-      return typeof m.passed === 'boolean' ? { type: 'check', passed: m.passed } : null;
-    case 'progress': {
-      const progress = text(m.text, MAX_PROGRESS + 1);
-      return progress !== null && progress.length <= MAX_PROGRESS ? { type: 'progress', text: progress } : null;
-    }
+    case 'scene':
+      return readScene(m);
     case 'size':
-      return typeof m.height === 'number' && Number.isFinite(m.height) && m.height >= 0 ? { type: 'size', height: Math.min(Math.ceil(m.height), MAX_HEIGHT) } : null;
+      return typeof m.height === 'number' && Number.isFinite(m.height) && m.height >= 0 ? { type: 'size', height: m.height } : null;
     default:
       return null;
   }
+}
+
+/** A scene message's fields: whole texts within their limits (a cut scene would be another scene), or null. */
+function readScene(m) {
+  const within = (s, max) => s === null || (typeof s === 'string' && s.length <= max);
+  if (!within(m.scene, MAX_SCENE_TEXT) || !within(m.camera, MAX_CAMERA_TEXT)) return null;
+  if ((m.scene === null) !== (m.camera === null)) return null;
+  const mode = typeof m.mode === 'string' && /^[a-z]{1,20}$/.test(m.mode) ? m.mode : 'shaded';
+  const order = ORDERS.includes(/** @type {string} */ (m.order)) ? m.order : 'coarse';
+  const problem = m.scene === null ? text(m.problem, MAX_MESSAGE) ?? 'the scene could not be written as JSON' : null;
+  return { type: 'scene', scene: m.scene, camera: m.camera, mode, order, problem };
+}
+
+/**
+ * The frame's height on the page for the height it asked for: at least
+ * MIN_HEIGHT, at most MAX_HEIGHT or the window's height, whichever is more.
+ * @param {number} asked the frame's content height (a checked size message's)
+ * @param {number} windowHeight the page's window (innerHeight)
+ */
+export function frameHeight(asked, windowHeight) {
+  const most = Math.max(MAX_HEIGHT, Number.isFinite(windowHeight) ? windowHeight : 0);
+  return Math.min(Math.max(Math.ceil(asked), MIN_HEIGHT), most);
 }
 
 /**

@@ -8,13 +8,17 @@
  *
  * startFrame() tells the page, by postMessage (frame-protocol.js), what the
  * page shows around the frame: the code's mistakes at the editor's lines,
- * when setup() is done, the render state, the selected pixel, the homework
- * check's verdict and the frame's height. The kit's own mistake panel is off
- * in the frame (the page shows them, at the editor's lines).
+ * when setup() is done, the render state, the selected pixel, the frame's
+ * height, and what the code built (its first tracer view's scene and camera,
+ * as the library's JSON), from which the page itself judges the tasks and
+ * the homework. The kit's own mistake panel is off in the frame (the page
+ * shows them, at the editor's lines), and so are its task list and
+ * self-check: the page keeps them, outside the frame.
  */
 import p5 from 'p5';
 import { pageViews } from '../lib/p5/page-state.js';
 import { errorMessage } from '../lib/p5/error-panel.js';
+import { sceneToJSON, cameraToJSON } from '../lib/scene/json.js';
 import { codePlace } from './frame-protocol.js';
 
 export * from '../lib/index.js';
@@ -39,23 +43,62 @@ export function startFrame({ sourceURL, selected }, tell) {
   addEventListener('error', (event) => mistake(event.error, event));
   addEventListener('unhandledrejection', (event) => mistake(event.reason, null));
 
+  const scene = sceneTeller(tell);
   new MutationObserver(() => {
     const state = document.body.dataset.render;
+    if (state === 'done') scene.now(); // the page judges a finished picture by the scene it was traced from
     if (state) tell({ type: 'render', state });
   }).observe(document.body, { attributes: true, attributeFilter: ['data-render'] });
 
-  document.addEventListener('rt-check', (event) => tell({ type: 'check', passed: /** @type {CustomEvent} */ (event).detail?.passed === true }));
   new ResizeObserver(() => tell({ type: 'size', height: document.documentElement.scrollHeight })).observe(document.documentElement);
 
   let told = false;
-  p5.registerAddon((_p5, _fn, lifecycles) => {
+  p5.registerAddon((_p5, fn, lifecycles) => {
+    // The page's own task list and self-check judge what the code built: none in the frame.
+    fn.createTaskList = () => ({ tasks: [], startAgain() {}, destroy() {} });
+    fn.createHomeworkCheck = () => ({ button: null, results: null, run() {}, destroy() {} });
     lifecycles.postsetup = function () {
       if (told) return; // the first sketch's setup; a second p5 instance of the same code says nothing new
       told = true;
       const view = pageViews().find((v) => typeof v.select === 'function' && typeof v.on === 'function');
       if (view && selected && selected.x < view.width && selected.y < view.height) view.select(selected.x, selected.y);
-      view?.on('select', (pixel) => tell({ type: 'select', x: pixel?.x ?? null, y: pixel?.y ?? null }));
+      view?.on('select', (pixel) => {
+        scene.now(); // a pixel of the scene the page has
+        tell({ type: 'select', x: pixel?.x ?? null, y: pixel?.y ?? null });
+      });
       tell({ type: 'setup' });
+      if (view) {
+        scene.follow(view);
+        view.on('restart', () => scene.soon());
+      }
     };
   });
+}
+
+/** How often at most the scene goes to the page while it keeps changing (an animation, a camera that orbits), in ms. */
+const SCENE_EVERY_MS = 400;
+
+/** Tells the page the view's scene and camera: at once, or soon (at most every SCENE_EVERY_MS), and only when changed. */
+function sceneTeller(tell) {
+  let view = null, timer = 0, last = '';
+  const now = () => {
+    clearTimeout(timer);
+    timer = 0;
+    if (!view) return;
+    let message;
+    try {
+      message = { type: 'scene', scene: JSON.stringify(sceneToJSON(view.scene)), camera: JSON.stringify(cameraToJSON(view.camera)), mode: view.mode, order: view.order };
+    } catch (error) {
+      message = { type: 'scene', scene: null, camera: null, problem: String(error?.message ?? error) };
+    }
+    const key = `${message.scene}\n${message.camera}\n${message.mode}\n${message.order}`;
+    if (key === last) return;
+    last = key;
+    tell(message);
+  };
+  return {
+    follow(v) { view = v; now(); },
+    now,
+    soon() { if (!timer) timer = setTimeout(now, SCENE_EVERY_MS); },
+  };
 }

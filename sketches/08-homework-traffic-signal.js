@@ -3,8 +3,8 @@
  *
  * A scene is shapes with materials, and a sphere with an emission is a light
  * you can see. The road, the pole and the signal's housing are here already;
- * your task is the three lights: write them in addLights() below, save (the
- * page reloads), then press "Check my scene".
+ * your task is the three lights: write them in addLights() below, here in
+ * the page's editor, press Run, then "Check my scene" under the picture.
  * The teacher's answer: open this page with ?solution=1 (on the teacher's own
  * `npm start`; the class server and the built site do not have it).
  */

@@ -3,7 +3,8 @@
  *
  * The camera stands behind a car made of boxes and spheres. Your task: the
  * two red rear lights, side by side at the same height. Write them in
- * addLights() below, save (the page reloads), then press "Check my scene".
+ * addLights() below, here in the page's editor, press Run, then "Check my
+ * scene" under the picture.
  * The teacher's answer: open this page with ?solution=1 (on the teacher's own
  * `npm start`; the class server and the built site do not have it).
  */

@@ -1,7 +1,8 @@
 /**
  * 10 · Playground: live coding (the whole lesson, one edit at a time).
  *
- * Edit this file and save: the page reloads and re-traces the picture.
+ * Edit this code in the page's editor and press Run (or stop typing): the
+ * picture is traced again.
  * Try a second sphere, another colour, a mirror (reflection: 0.8), glass
  * (transparency: 0.9), a light you can see (a sphere with an emission),
  * or move the camera. Click a pixel to see its ray, A, B, C and the

@@ -407,3 +407,10 @@ export function solutionParameter(search) {
   if (value === '1') return { solution: true, message: null };
   return { solution: false, message: `?solution= takes 1 (show the reference solution) or 0 (your scene), got ${show(value)}: showing your scene.` };
 }
+
+/**
+ * Each homework page's self-check, by its number ('08'): a page whose code
+ * runs in a sandboxed frame judges the scene it read from the frame with
+ * this, whatever check the code itself names.
+ */
+export const HOMEWORK_CHECKS = Object.freeze({ '08': checkTrafficSignal, '09': checkRearLights });

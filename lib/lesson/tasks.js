@@ -326,9 +326,9 @@ function homeworkLesson(page, title, lights) {
   return { page, title, homework: true, tasks: [
     { id: 'check', text: 'Run the self-check.', hint: 'The "Check my scene" button under the picture.', done: (e) => e.type === 'check' },
     { id: 'light', text: 'Select a pixel of a light you added.',
-      hint: `Write the ${lights} in addLights() in the sketch's file, save, then click one of them in the picture.`,
+      hint: `Write the ${lights} in addLights() in the code under the picture, press Run, then click one of them in the picture.`,
       done: (e) => selected(e) && (e.record.hit?.object.material.isEmissive ?? false) },
-    { id: 'pass', text: 'Pass the self-check.', hint: 'Fix each line marked ✗, save, and check again.', done: (e) => e.type === 'check' && e.passed },
+    { id: 'pass', text: 'Pass the self-check.', hint: 'Fix each line marked ✗ in the code, press Run, and check again.', done: (e) => e.type === 'check' && e.passed },
   ] };
 }
 

@@ -28,16 +28,26 @@ import { joinClassBoard } from './class-board.js';
  */
 export function createHomeworkCheck(p, options) {
   const { view, check, parent, problem = null } = checkOptions(options, ['view', 'check', 'parent', 'problem'], 'createHomeworkCheck');
-  const host = resolveParent(parent, sketchNode(p));
+  return homeworkCheck({ view, check, parent: resolveParent(parent, sketchNode(p)), problem, prefix: libraryPrefix(p) });
+}
+
+/**
+ * The self-check without a sketch: the button and the verdict in `parent`,
+ * checking `view.scene` and `view.camera` as they are at each press (a page
+ * whose picture runs in a sandboxed frame checks the scene it read from it).
+ * @param {{ view: { scene: object, camera: object }, check: Function, parent: HTMLElement, problem?: string|null, prefix?: string }} options
+ * @returns {{ button: HTMLButtonElement, results: HTMLElement, run: () => void, destroy: () => void }}
+ */
+export function homeworkCheck({ view, check, parent, problem = null, prefix = '' }) {
   useStyle(); // the list's marks and colours are in the kit's stylesheet (inside the one-file build too)
   const button = element('button', { type: 'button', class: 'rt-button' }, 'Check my scene');
   const results = element('div', { 'data-check-results': '' }, 'Press the button to check your scene against the task.');
   const warning = problem ? element('p', { class: 'hw-warning', role: 'alert' }, problem) : null;
   const announcer = createAnnouncer({ name: 'check' }); // the verdict is said; the list is read on demand
   const box = element('div', { class: 'rt-check' }, button, results, announcer.element, warning); // a block of its own, whatever the page around it
-  host.append(box);
+  parent.append(box);
   const run = () => {
-    const result = check(view.scene, view.camera, { prefix: libraryPrefix(p) });
+    const result = check(view.scene, view.camera, { prefix });
     announcer.say(showCheck(results, result));
     // The page's tasks (task-list.js) hear of each check.
     const toFix = result.checks.filter((c) => !c.passed && !c.skipped && !c.bonus).length;

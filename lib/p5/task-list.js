@@ -30,7 +30,7 @@ const INPUT_EVENTS = ['input', 'change', 'click', 'pointerup', 'keyup'];
  * @param {import('p5').default} p the sketch
  * @param {object} options
  * @param {string} options.page the lesson page, '00'–'14'
- * @param {import('./tracer-view.js').TracerView} options.view the picture whose selected pixel the tasks look at
+ * @param {import('./tracer-view.js').TracerView} options.view the picture whose selected pixel the tasks look at (or what stands for it: `scene`, `camera`, `onSelect`)
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where the list goes; default right after the page's `<main>`
  * @param {object} [options.parts] the page's other parts the tasks look at: `photons`, `sceneView`, `animation`
  * @param {number} [options.hintAfterMs=60000] a task's hint shows after this long on the page,
@@ -131,6 +131,7 @@ export class TaskList {
   /** Asks each task not yet done whether `happened` did it. */
   #judge(happened) {
     const view = this.#view;
+    if (!view.scene) return; // a picture that runs in a sandboxed frame, before its scene came (editor/page-judge.js)
     const event = { scene: view.scene, camera: view.camera, mode: view.mode, order: view.order, renderMode: view.order, parts: this.#parts, ...happened };
     const before = loadProgress(); // another tab of the same browser may have done tasks too
     let progress = { ...before, [this.#lesson.page]: [...new Set([...(before[this.#lesson.page] ?? []), ...(this.#progress[this.#lesson.page] ?? [])])] };

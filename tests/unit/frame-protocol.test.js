@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import { readFrameMessage, codePlace, MAX_MESSAGE, MAX_HEIGHT } from '../../editor/frame-protocol.js';
+import { readFrameMessage, codePlace, frameHeight, MAX_MESSAGE, MAX_HEIGHT, MIN_HEIGHT, MAX_SCENE_TEXT } from '../../editor/frame-protocol.js';
 
 describe('readFrameMessage: what the sandboxed frame says, checked field by field', () => {
   it('keeps the known fields of each known message, in a new object', () => {
@@ -10,7 +10,6 @@ describe('readFrameMessage: what the sandboxed frame says, checked field by fiel
     expect(readFrameMessage({ type: 'render', state: 'done' })).toEqual({ type: 'render', state: 'done' });
     expect(readFrameMessage({ type: 'select', x: 20, y: 10 })).toEqual({ type: 'select', x: 20, y: 10 });
     expect(readFrameMessage({ type: 'select', x: null, y: null })).toEqual({ type: 'select', x: null, y: null });
-    expect(readFrameMessage({ type: 'check', passed: true })).toEqual({ type: 'check', passed: true });
     expect(readFrameMessage({ type: 'ready' })).toEqual({ type: 'ready' });
     expect(readFrameMessage({ type: 'alive', at: 'x' })).toEqual({ type: 'alive' });
     expect(readFrameMessage({ type: 'setup', more: 1 })).toEqual({ type: 'setup' });
@@ -19,18 +18,41 @@ describe('readFrameMessage: what the sandboxed frame says, checked field by fiel
   it('refuses what is not a message it knows, or a field of the wrong type or size', () => {
     for (const bad of [null, 'setup', 42, [], { type: 'eval', code: 'x' }, { type: 'render', state: 'finished' },
       { type: 'select', x: -1, y: 0 }, { type: 'select', x: 1.5, y: 0 }, { type: 'select', x: '3', y: 4 }, { type: 'select', x: 1e9, y: 0 },
-      { type: 'check', passed: 'yes' }, { type: 'error', message: 42 }, { type: 'size', height: Infinity }, { type: 'size', height: -3 },
-      { type: 'progress', text: 'x'.repeat(5_000) }, { type: '__proto__' }]) {
+      { type: 'error', message: 42 }, { type: 'size', height: Infinity }, { type: 'size', height: -3 }, { type: 'size', height: '900' },
+      { type: 'scene', scene: 42, camera: '{}' }, { type: 'scene', scene: '{}', camera: null }, { type: 'scene', scene: '{}' },
+      { type: 'scene', scene: 'x'.repeat(MAX_SCENE_TEXT + 1), camera: '{}' }, { type: '__proto__' }]) {
       expect(readFrameMessage(bad)).toBeNull();
     }
   });
 
-  it('cuts a long message, drops a bad line number, and caps the height', () => {
+  it('knows no message that claims a verdict, a task or progress: the frame reports, the page judges', () => {
+    for (const claim of [{ type: 'check', passed: true }, { type: 'check', passed: true, toFix: 0 }, { type: 'task', page: '08', tasks: ['pass'] },
+      { type: 'progress', text: '{"v":1,"pages":{"08":["check","light","pass"]}}' }]) {
+      expect(readFrameMessage(claim), claim.type).toBeNull();
+    }
+  });
+
+  it('reads what the code built as text for the page to read again, and only the known render orders', () => {
+    const sent = { type: 'scene', scene: '{"objects":[]}', camera: '{"width":4,"height":3}', mode: 'normals', order: 'slow', extra: 1 };
+    expect(readFrameMessage(sent)).toEqual({ type: 'scene', scene: '{"objects":[]}', camera: '{"width":4,"height":3}', mode: 'normals', order: 'slow', problem: null });
+    expect(readFrameMessage({ ...sent, mode: '<b>', order: 'sideways' })).toMatchObject({ mode: 'shaded', order: 'coarse' });
+    expect(readFrameMessage({ type: 'scene', scene: null, camera: null, problem: 'scene objects must be spheres…' }))
+      .toMatchObject({ scene: null, problem: 'scene objects must be spheres…' });
+  });
+
+  it('cuts a long message and drops a bad line number', () => {
     const read = readFrameMessage({ type: 'error', message: 'x'.repeat(10 * MAX_MESSAGE), line: 0, column: 3 });
     expect(read.message).toHaveLength(MAX_MESSAGE);
     expect(read.line).toBeNull();
     expect(read.column).toBeNull();
-    expect(readFrameMessage({ type: 'size', height: 1e9 })).toEqual({ type: 'size', height: MAX_HEIGHT });
+  });
+
+  it('makes a frame no shorter than MIN_HEIGHT and no taller than MAX_HEIGHT or the window, whatever it asks', () => {
+    expect(frameHeight(readFrameMessage({ type: 'size', height: 20_000 }).height, 900)).toBe(MAX_HEIGHT);
+    expect(frameHeight(1e9, 3_000)).toBe(3_000);
+    expect(frameHeight(0, 900)).toBe(MIN_HEIGHT);
+    expect(frameHeight(640.2, 900)).toBe(641);
+    expect(frameHeight(5_000, NaN)).toBe(MAX_HEIGHT);
   });
 });
 
