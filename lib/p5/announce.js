@@ -5,9 +5,16 @@
  * 30 ms; the status waits until it rests. One arrow press on sketch 04 moves
  * the pixel, judges the answer and may tick a task off: the three come as one
  * message (pixel, then verdict, then task), not three that interrupt each other.
+ * What the sketch's setup() selects is on the page, not news: the voice speaks
+ * once the student has done something (a key, a press, a typed value), so a
+ * message made while the page loads is not said at some later moment, as if
+ * the student's first key had caused it. While a message waits to be said the
+ * status carries `data-pending` (a walk by keys waits for the page's voice).
  */
 import { element } from './dom.js';
 
+/** What the student does: the page's voice speaks after the first of them. */
+const STUDENT_EVENTS = ['keydown', 'pointerdown', 'input', 'change'];
 /** How long the news must rest before it is said, ms. */
 export const ANNOUNCE_DELAY_MS = 200;
 /** The most words one part (the pixel, a verdict, a task) may have. */
@@ -31,9 +38,24 @@ function pageVoice() {
   return voice;
 }
 
+/**
+ * Has the student done anything on this page yet? Heard from the page's start
+ * (a voice made on the first key must say what that key did), capturing (a
+ * handler that stops an event does not hide it).
+ */
+let studentActed = typeof document === 'undefined';
+if (!studentActed) {
+  const acted = () => {
+    studentActed = true;
+    for (const type of STUDENT_EVENTS) document.removeEventListener(type, acted, true);
+  };
+  for (const type of STUDENT_EVENTS) document.addEventListener(type, acted, true);
+}
+
 /** Says the parts heard since the last message, in their order, as one message. */
 function speak(v) {
   v.timer = 0;
+  delete v.status.dataset.pending;
   const parts = [...v.parts.entries()].filter(([name]) => !v.silenced.get(name)).map(([, part]) => part).sort((a, b) => a.order - b.order);
   v.parts.clear();
   if (parts.length === 0) return;
@@ -68,7 +90,9 @@ export function createAnnouncer({ name = '', order = 0, speaksFor = '', delay = 
       const words = limitWords(text);
       last.textContent = words;
       const now = pageVoice();
+      if (!studentActed) return; // the page as it opens: read with the page, not said
       now.parts.set(key, { text: words, order });
+      now.status.dataset.pending = '';
       clearTimeout(now.timer);
       now.timer = setTimeout(() => speak(now), delay);
     },

@@ -7,7 +7,7 @@
  * the arrow keys for their own cursor unless the focus is in such a widget,
  * and the picture takes the arrow keys. Its keys beside the arrows: a colour's
  * first letters jump to the next pixel of that colour (p: the next pink one;
- * Shift: the one before). A "Skip to the picture" link opens the page, and a
+ * Shift: the one before; while the picture is still traced, once it is done). A "Skip to the picture" link opens the page, and a
  * "Picture as text" disclosure reads the traced picture row by row of pixels,
  * in colour names, saying when the rows change.
  */
@@ -52,6 +52,8 @@ export function createPictureWords(canvas, view) {
   const details = element('details', { class: 'rt-picture-text' }, element('summary', {}, 'Picture as text'), rowsNote, rows);
   const voice = createAnnouncer({ name: 'picture', order: 1 });
   let last = -Infinity, timer = 0, names = null, typed = '', typedAt = 0, sought = '', shownRows = '', stageElement = null;
+  /** A colour key pressed while the picture was being traced, answered when it is done. */
+  let waiting = null;
   addSkipLink(canvas);
 
   const caption = () => canvas.closest('figure')?.querySelector('figcaption')?.textContent.trim() || 'Traced picture';
@@ -98,7 +100,11 @@ export function createPictureWords(canvas, view) {
     if (next) event.preventDefault();
   });
 
-  /** A letter typed on the picture: the next pixel of the colour its letters begin; true when it was one. */
+  /**
+   * A letter typed on the picture: the next pixel of the colour its letters begin; true when it was one.
+   * While the picture is still being traced its coarse blocks are no colours to go by: the key is
+   * answered once the picture is done.
+   */
   function colorKey(letter, back) {
     const now = performance.now();
     typed = now - typedAt < TYPE_AHEAD_MS ? typed + letter : letter;
@@ -106,18 +112,28 @@ export function createPictureWords(canvas, view) {
     if (!COLOR_NAMES.some((c) => c.startsWith(typed)) && !/^(.)\1+$/.test(typed)) typed = letter; // w then g: gray, not "wg" (as a list box)
     // the same letter again: the next pixel of the colour already sought
     const again = /^(.)\1+$/.test(typed) && sought.startsWith(letter);
+    if (!again && !COLOR_NAMES.some((c) => c.startsWith(typed))) return false; // not a colour's letter (h, v: the 3D view's fans)
+    if (view.done) {
+      findColor(typed, again, back);
+      return true;
+    }
+    waiting = { typed, again, back };
+    voice.say(`Still tracing: the ${again ? sought : COLOR_NAMES.find((c) => c.startsWith(typed))} pixel is found once the picture is done.`);
+    return true;
+  }
+
+  /** The next (or, back, the previous) pixel of the colour `typed` begins, in the finished picture. */
+  function findColor(letters, again, back) {
     const all = pictureNames();
     const present = COLOR_NAMES.filter((_, i) => all.includes(i));
-    const colour = again ? sought : present.find((c) => c.startsWith(typed));
+    const colour = again ? sought : present.find((c) => c.startsWith(letters));
     if (!colour) {
-      if (!COLOR_NAMES.some((c) => c.startsWith(typed))) return false; // not a colour's letter (h, v: the 3D view's fans)
-      voice.say(`No ${COLOR_NAMES.find((c) => c.startsWith(typed))} pixel here. This picture has ${present.join(', ')}.`);
-      return true;
+      voice.say(`No ${COLOR_NAMES.find((c) => c.startsWith(letters))} pixel here. This picture has ${present.join(', ')}.`);
+      return;
     }
     sought = colour;
     const next = nextPixelNamed(all, view.width, colour, view.selected, back ? -1 : 1);
     if (next) view.select(next.x, next.y); // the inspector (or the activity's verdict) says the pixel
-    return true;
   }
 
   return {
@@ -135,6 +151,11 @@ export function createPictureWords(canvas, view) {
     done() {
       names = null;
       if (details.open) readRows();
+      if (waiting) {
+        const { typed: letters, again, back } = waiting;
+        waiting = null;
+        findColor(letters, again, back);
+      }
     },
     /** Makes the picture's stage the application the keys go to (it holds the focusable picture). */
     stage(stage) {

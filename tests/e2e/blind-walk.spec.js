@@ -130,6 +130,33 @@ test('12: the cone found by its colour\'s letter', async ({ page }) => {
   expect(reader.words, reader.text).toBeLessThanOrEqual(WORD_BUDGET);
 });
 
+test('12: a colour\'s letter pressed while the picture is traced is answered from the finished picture', async ({ page }) => {
+  // the letter comes the moment the picture's canvas is on the page: its first, coarse blocks are no colours to go by
+  await page.addInitScript(() => {
+    new MutationObserver((_, observer) => {
+      const picture = document.querySelector('[data-tracer]');
+      if (!picture?.isConnected) return;
+      observer.disconnect();
+      window.__pressedWhile = document.body.dataset.render;
+      picture.dispatchEvent(new KeyboardEvent('keydown', { key: 'y', bubbles: true }));
+    }).observe(document, { childList: true, subtree: true });
+  });
+  await page.goto('/sketches/12-cylinders-cones-triangles.html');
+  await waitForDone(page);
+  expect(await page.evaluate(() => window.__pressedWhile)).toBe('rendering');
+  await expect(page.locator('[data-inspector] tr.rt-hit-row')).toContainText('yellow cone');
+  await expect(page.locator('[data-announce="page"]')).toContainText(/Yellow, the yellow cone\./);
+});
+
+test('11: what setup() selects is not said as news: the page\'s voice waits for the student', async ({ page }) => {
+  const reader = await open(page, '/sketches/11-several-rays-per-pixel.html');
+  await expect(page.locator('[data-announce="pixel"]')).toContainText('Pixel: 24,7'); // on the page, for who reads it
+  await page.waitForTimeout(1000);
+  await reader.press('Shift');
+  expect(reader.said.filter((s) => s.how === 'live'), reader.text).toEqual([]);
+  await expect(page.locator('[data-announce="page"]')).toHaveText('');
+});
+
 /** What the page said (its live news) since the walk began, as one text. */
 const news = (reader) => reader.said.filter((s) => s.how === 'live').map((s) => s.text).join(' ');
 

@@ -76,9 +76,14 @@ export class ScreenReader {
     this.mode = this.mode === 'browse' ? 'focus' : 'browse';
   }
 
-  /** Waits for the page's debounced news, then hears what changed: the live regions, the focus. */
+  /**
+   * Waits for the page's debounced news, then hears what changed: the live regions, the focus.
+   * A message still waiting to be said then (a busy machine runs the page's timers late) is
+   * waited for: the reader hears it whenever it comes, and it belongs to this key.
+   */
   async #listen(ms = 450) {
     await this.#page.waitForTimeout(ms);
+    await this.#page.waitForFunction(() => !document.querySelector('[data-announce="page"][data-pending]'), null, { timeout: 10_000 });
     const live = await this.#page.evaluate(() => window.__said.splice(0));
     const { nodes } = await this.#cdp.send('Accessibility.getFullAXTree');
     const byId = new Map(nodes.map((n) => [n.nodeId, n]));
