@@ -32,6 +32,7 @@ if (findBrowser() === null) {
 
 const ok = lintStatus === 0 && unitStatus === 0 && e2eStatus === 0 && counts.failed === 0;
 console.log(`\ntotal: ${counts.passed} passed, ${counts.failed} failed`);
+console.log('where the time went: npm run test:timing (from test-results/e2e.json and unit.json)');
 process.exit(ok ? 0 : 1);
 
 function readJSON(path) {
