@@ -12,7 +12,7 @@ const executablePath = findBrowser() ?? undefined;
 const BUILT_SPECS = ['**/layout.spec.js', '**/access.spec.js', '**/projector.spec.js'];
 // npm run test:quick (RT_QUICK=1): one smoke page of each kind, on the dev server, no build.
 const QUICK = Boolean(process.env.RT_QUICK);
-const QUICK_PAGES = /axe: .* on (\/|\/sketches\/01-rays-through-pixels\.html|\/sketches\/08-homework-traffic-signal\.html|\/web-editor\.html|\/teacher\.html|\/api\/)$/;
+const QUICK_PAGES = /axe: .* on (\/|\/sketches\/01-rays-through-pixels\.html|\/sketches\/08-homework-traffic-signal\.html|\/web-editor\.html|\/teacher\.html|\/api\/)(;|$)/;
 const LIVE_SPECS = ['**/mistakes.spec.js', '**/saves.spec.js', '**/swaps.spec.js', '**/class-server.spec.js', '**/class-board.spec.js', '**/code-in-page-class.spec.js'];
 
 // Screenshots are of traced canvases only, at a pinned viewport, headless.
