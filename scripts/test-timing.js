@@ -25,7 +25,10 @@ function printBrowserTests(report, counted) {
   const files = byFile(tests);
   const work = sum(tests.map((t) => t.duration));
   const wall = report.stats?.duration ?? 0;
-  console.log(`\nBrowser tests: ${tests.length} in ${files.length} files, ${minutes(wall)} wall, ${minutes(work)} of test time` +
+  const byStatus = {};
+  for (const t of tests) byStatus[t.status] = (byStatus[t.status] ?? 0) + 1;
+  const statuses = Object.entries(byStatus).map(([status, count]) => `${count} ${status}`).join(', ');
+  console.log(`\nBrowser tests: ${tests.length} in ${files.length} files (${statuses}), ${minutes(wall)} wall, ${minutes(work)} of test time` +
     (counted ? `, ${counted.total} expect calls reached` : ''));
   table(`Slowest ${Math.min(top, files.length)} spec files (test time, the file's share, its longest test)`, files.slice(0, top).map((f) => [
     minutes(f.duration), percent(f.duration, work), `${f.count} tests`, `max ${seconds(f.longest)}`, f.file,
