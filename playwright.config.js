@@ -50,7 +50,7 @@ export default defineConfig({
     url: `http://localhost:${PORT}/`,
     reuseExistingServer: !process.env.CI,
     timeout: 60_000,
-  }, ...QUICK ? [] : [{
+  }, ...QUICK || process.env.PW_NO_BUILD ? [] : [{ // PW_NO_BUILD=1: a dev-server spec run alone, without the build
     command: `node scripts/serve-built.js --port ${BUILT_PORT}`,
     url: `http://localhost:${BUILT_PORT}/`,
     reuseExistingServer: !process.env.CI,
