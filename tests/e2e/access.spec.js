@@ -29,11 +29,32 @@ async function violations(page) {
     .map((v) => `${v.id} (${v.impact}): ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(' | ')}${v.nodes.length > 3 ? ` and ${v.nodes.length - 3} more` : ''}`);
 }
 
+/**
+ * Every traced picture of a sketch is an image described by what its scene holds:
+ * a colour name and a kind of shape, or a floor, or the word "Nothing" for an empty
+ * scene; a second picture of the same scene from the same eye names the first
+ * instead of saying it all again.
+ */
+async function expectDescribedPictures(page, file) {
+  const pictures = page.locator('[data-tracer]');
+  expect(await pictures.count(), file).toBeGreaterThan(0);
+  const captions = [];
+  for (const picture of await pictures.all()) {
+    await expect(picture, file).toHaveAttribute('role', 'img');
+    await expect(picture, file).toHaveAccessibleName(/.+/);
+    const twin = captions.length ? `|The same scene as (${captions.map((c) => c.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')).join('|')}), seen from the same eye\\.$` : '';
+    await expect(picture, file).toHaveAccessibleDescription(new RegExp(`\\b(sphere|box|plane|floor|wall|ceiling)\\b|Nothing${twin}`));
+    captions.push(await picture.evaluate((c) => c.closest('figure')?.querySelector('figcaption')?.textContent.trim() || 'the picture before'));
+  }
+}
+
+// Each page opened once: axe as it opens and with a pixel selected; on a sketch, its pictures' descriptions as it opens.
 for (const path of PAGES) {
-  test(`axe: no serious or critical WCAG 2.2 A/AA violation on ${path}`, async ({ page }) => {
+  test(`axe: no serious or critical WCAG 2.2 A/AA violation on ${path}${path.startsWith('/sketches/') ? '; every traced picture an image described by its scene' : ''}`, async ({ page }) => {
     test.setTimeout(90_000);
     await page.goto(path);
     await settle(page);
+    if (path.startsWith('/sketches/')) await expectDescribedPictures(page, path.slice('/sketches/'.length));
     expect(await violations(page), 'as it opens').toEqual([]);
     const tracer = page.locator('[data-tracer]').first();
     if (await tracer.count()) { // the inspector filled in, the 3D view drawn
@@ -44,26 +65,6 @@ for (const path of PAGES) {
     }
   });
 }
-
-test('every traced picture is an image described by what its scene holds, on every sketch', async ({ page }) => {
-  test.setTimeout(120_000);
-  for (const file of SKETCHES) {
-    await page.goto(`/sketches/${file}`);
-    await waitForDone(page);
-    const pictures = page.locator('[data-tracer]');
-    expect(await pictures.count(), file).toBeGreaterThan(0);
-    const captions = [];
-    for (const picture of await pictures.all()) {
-      await expect(picture, file).toHaveAttribute('role', 'img');
-      await expect(picture, file).toHaveAccessibleName(/.+/);
-      // a colour name and a kind of shape, or a floor, or the word "Nothing" for an empty scene;
-      // a second picture of the same scene from the same eye names the first instead of saying it all again
-      const twin = captions.length ? `|The same scene as (${captions.map((c) => c.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')).join('|')}), seen from the same eye\\.$` : '';
-      await expect(picture, file).toHaveAccessibleDescription(new RegExp(`\\b(sphere|box|plane|floor|wall|ceiling)\\b|Nothing${twin}`));
-      captions.push(await picture.evaluate((c) => c.closest('figure')?.querySelector('figcaption')?.textContent.trim() || 'the picture before'));
-    }
-  }
-});
 
 test('sketch 01\'s picture is described as the scene shows it', async ({ page }) => {
   await page.goto('/sketches/01-rays-through-pixels.html');

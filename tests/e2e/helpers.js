@@ -38,6 +38,26 @@ export function expectQuietConsole(test) {
 }
 
 /**
+ * One page for all the tests of the calling describe block, run in order: for
+ * tests that each open a page and only read it, the pages then share one
+ * browser context and its cache (the page's scripts are not fetched and
+ * compiled again). Made with the project's baseURL, viewport and scale; its
+ * console must stay quiet, checked after each test. Use `shared.page`.
+ */
+export function sharedPage(test) {
+  const shared = { page: null, errors: [] };
+  test.describe.configure({ mode: 'serial' });
+  test.beforeAll(async ({ browser }, info) => {
+    const { baseURL, viewport, deviceScaleFactor } = info.project.use;
+    shared.page = await (await browser.newContext({ baseURL, viewport, deviceScaleFactor })).newPage();
+    shared.errors = watchConsole(shared.page);
+  });
+  test.afterEach(() => { expect(shared.errors.splice(0), 'console errors').toEqual([]); });
+  test.afterAll(() => shared.page?.context().close());
+  return shared;
+}
+
+/**
  * Clicks the centre of traced pixel (x, y) of a tracer canvas, whatever its
  * on-screen scale. Through the locator, so Playwright first waits until the
  * canvas is visible, still and the one that receives the click.

@@ -6,13 +6,11 @@
 // still maps a click to the right traced pixel.
 import { test, expect } from '@playwright/test';
 import { readdirSync } from 'node:fs';
-import { clickPixel, expectQuietConsole, waitForDone } from './helpers.js';
+import { clickPixel, expectQuietConsole, sharedPage, waitForDone } from './helpers.js';
 
 const SKETCHES = readdirSync(new URL('../../sketches/', import.meta.url)).filter((f) => f.endsWith('.html')).sort();
 const PAGES = ['/', ...SKETCHES.map((f) => `/sketches/${f}`), '/web-editor.html', '/teacher.html', '/api/'];
 const PROJECTOR_KEY = 'raytracing-sketchbook:projector';
-
-expectQuietConsole(test);
 
 /** How far the page reaches past the window's right edge, in CSS px (0: no sideways scrolling). */
 const overflow = (page) => page.evaluate(() => document.documentElement.scrollWidth - document.documentElement.clientWidth);
@@ -46,11 +44,16 @@ async function expectFits(page) {
   for (const line of progress) expect(line, line.text).toMatchObject({ cut: false });
 }
 
-for (const [width, height] of [[1024, 768], [1920, 1080]]) {
-  test.describe(`at ${width}×${height}`, () => {
-    test.use({ viewport: { width, height } });
-    for (const file of SKETCHES) {
-      test(`${file}: no sideways scrolling, the answer line on one line${width === 1920 ? ', pictures grown into the room' : ''}`, async ({ page }) => {
+// Each sketch at each size in one serial group with one page: opened again at
+// each size (laid out as it opens there), its scripts from the context's cache.
+for (const file of SKETCHES) {
+  test.describe(file, () => {
+    const shared = sharedPage(test);
+
+    for (const [width, height] of [[1024, 768], [1920, 1080]]) {
+      test(`at ${width}×${height}: no sideways scrolling, the answer line on one line${width === 1920 ? ', pictures grown into the room' : ''}`, async () => {
+        const { page } = shared;
+        await page.setViewportSize({ width, height });
         await openAndSelect(page, `/sketches/${file}`);
         await expectFits(page);
         if (width !== 1920) return;
@@ -59,20 +62,29 @@ for (const [width, height] of [[1024, 768], [1920, 1080]]) {
         for (const [w, h] of sizes) expect(w >= width / 3 || h >= height / 2, `a ${w}×${h} picture: at least ${width / 3} px wide or ${height / 2} px tall`).toBe(true);
       });
     }
+
+    test('at 320 CSS px wide: does not scroll sideways, the answer line too', async () => {
+      const { page } = shared;
+      await page.setViewportSize({ width: 320, height: 640 });
+      await openAndSelect(page, `/sketches/${file}`);
+      await expectFits(page);
+    });
+
+    test('in Projector at 1024×768: no sideways scrolling, the answer line on one line', async () => {
+      const { page } = shared;
+      await page.setViewportSize({ width: 1024, height: 768 });
+      await page.evaluate((key) => localStorage.setItem(key, '1'), PROJECTOR_KEY); // the switch remembered, before the page opens
+      await openAndSelect(page, `/sketches/${file}`);
+      await expect(page.locator('html')).toHaveClass(/projector/);
+      await expectFits(page);
+    });
   });
 }
 
 test.describe('in Projector at 1024×768', () => {
   test.use({ viewport: { width: 1024, height: 768 } });
   test.beforeEach(({ page }) => page.addInitScript((key) => localStorage.setItem(key, '1'), PROJECTOR_KEY));
-
-  for (const file of SKETCHES) {
-    test(`${file}: no sideways scrolling, the answer line on one line`, async ({ page }) => {
-      await openAndSelect(page, `/sketches/${file}`);
-      await expect(page.locator('html')).toHaveClass(/projector/);
-      await expectFits(page);
-    });
-  }
+  expectQuietConsole(test);
 
   test('04: the activity and its answer panel stay beside the picture', async ({ page }) => {
     await openAndSelect(page, '/sketches/04-find-the-pink-pixel.html');
@@ -86,17 +98,13 @@ test.describe('in Projector at 1024×768', () => {
 
 test.describe('at 320 CSS px wide', () => {
   test.use({ viewport: { width: 320, height: 640 } });
+  expectQuietConsole(test);
 
-  for (const path of PAGES) {
+  for (const path of PAGES.filter((p) => !p.startsWith('/sketches/'))) { // the sketches: in their groups above
     test(`${path} does not scroll sideways`, async ({ page }) => {
-      if (path.startsWith('/sketches/')) {
-        await openAndSelect(page, path);
-        await expectFits(page); // the answer line too
-      } else {
-        await page.goto(path);
-        await page.waitForLoadState('load');
-        expect(await overflow(page), 'px past the right edge').toBe(0);
-      }
+      await page.goto(path);
+      await page.waitForLoadState('load');
+      expect(await overflow(page), 'px past the right edge').toBe(0);
     });
   }
 
