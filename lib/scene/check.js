@@ -142,7 +142,8 @@ function checkLights(lights) {
     if (l === null || typeof l !== 'object' || typeof l.position !== 'object' || l.position === null || !('source' in l)) {
       throw new TypeError(`lights[${i}] must be a light source as scene.add(light) makes them (add lights with scene.add(new PointLight(…)), not lights.push), got ${show(l)}`);
     }
-    const Light = lightClassOf(l.source);
+    const emissive = l.object !== null && typeof l.object === 'object' && l.object.material instanceof Material; // a lamp: a shape's source
+    const Light = emissive ? undefined : lightClassOf(l.source);
     if (Light && !checked?.has(l.source)) {
       try {
         Light.build(l.source);
@@ -152,7 +153,7 @@ function checkLights(lights) {
       }
       (checked ??= new Set()).add(l.source);
     }
-    if (isShape(l.object)) { // an emissive shape's source: where it is and what it gives off, as they are now
+    if (emissive && isShape(l.object)) { // an emissive shape's source: where it is and what it gives off, as they are now
       l.position = middleOf(l.object);
       l.emission = l.object.material.emission;
     }
