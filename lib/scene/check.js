@@ -10,7 +10,8 @@
  * starts again), never per pixel.
  */
 import { Scene } from './scene.js';
-import { Camera } from '../math/camera.js';
+import { Camera, MAX_CAMERA_SIDE, MAX_CAMERA_PIXELS } from '../math/camera.js';
+import { Vec3 } from '../math/vec3.js';
 import { Material, MATERIAL_FIELDS } from '../shapes/material.js';
 import { lightClassOf } from '../lights/index.js';
 import { lightName } from '../lights/checks.js';
@@ -27,8 +28,10 @@ import { finiteNumber, show, withPath } from '../text/check.js';
  * @param {Scene} scene
  */
 export function checkScene(scene) {
-  withPath(() => new Scene(sceneOptions(scene)), 'scene.');
-  scene.background = asColor(scene.background, 'scene.background');
+  if (!sceneFieldsFine(scene)) { // the constructor's checks say which and why (or read a colour given as text)
+    withPath(() => new Scene(sceneOptions(scene)), 'scene.');
+    scene.background = asColor(scene.background, 'scene.background');
+  }
   if (!Array.isArray(scene.objects)) throw new TypeError(`scene.objects must be a list of shapes, got ${show(scene.objects)}`);
   if (!Array.isArray(scene.lights)) throw new TypeError(`scene.lights must be a list of light sources, got ${show(scene.lights)}`);
   for (let i = 0; i < scene.objects.length; i++) checkShape(scene.objects[i], i);
@@ -40,9 +43,30 @@ export function checkScene(scene) {
  * @param {Camera} camera
  */
 export function checkCamera(camera) {
+  if (cameraFieldsFine(camera)) return;
   const { width, height, fov, position, yaw, pitch, samples } = camera;
   withPath(() => new Camera({ width, height, fov, position, yaw, pitch, samples }), 'camera.');
 }
+
+/**
+ * The quick look before the constructors' checks (once per trace, so
+ * nothing built while all is well): true when every field is what the
+ * constructor makes of good options; anything else goes to the constructor,
+ * which names the field in its own words.
+ */
+function sceneFieldsFine({ background, ambient, shadows, bias, epsilon, maxDepth, specular }) {
+  return isColor(background) && inUnit(ambient) && inUnit(bias) && inUnit(epsilon) && typeof shadows === 'boolean' && typeof specular === 'boolean'
+    && Number.isInteger(maxDepth) && maxDepth >= 0 && maxDepth <= 16;
+}
+
+/** cameraFieldsFine: sceneFieldsFine's quick look, for a camera. */
+function cameraFieldsFine({ width: w, height: h, fov, position: p, yaw, pitch, samples }) {
+  return Number.isInteger(w) && w > 0 && w <= MAX_CAMERA_SIDE && Number.isInteger(h) && h > 0 && h <= MAX_CAMERA_SIDE && w * h <= MAX_CAMERA_PIXELS
+    && typeof fov === 'number' && fov > 0 && fov < 180 && p instanceof Vec3 && Number.isFinite(p.x) && Number.isFinite(p.y) && Number.isFinite(p.z)
+    && Number.isFinite(yaw) && typeof pitch === 'number' && pitch >= -90 && pitch <= 90 && (samples === 1 || samples === 4 || samples === 9 || samples === 16);
+}
+
+const inUnit = (v) => typeof v === 'number' && v >= 0 && v <= 1;
 
 /** The scene's own options as they are now. */
 function sceneOptions({ background, ambient, shadows, bias, epsilon, maxDepth, specular }) {
@@ -118,7 +142,8 @@ function checkLights(lights) {
     if (l === null || typeof l !== 'object' || typeof l.position !== 'object' || l.position === null || !('source' in l)) {
       throw new TypeError(`lights[${i}] must be a light source as scene.add(light) makes them (add lights with scene.add(new PointLight(…)), not lights.push), got ${show(l)}`);
     }
-    const Light = lightClassOf(l.source);
+    const emissive = l.object !== null && typeof l.object === 'object' && l.object.material instanceof Material; // a lamp: a shape's source
+    const Light = emissive ? undefined : lightClassOf(l.source);
     if (Light && !checked?.has(l.source)) {
       try {
         Light.build(l.source);
@@ -128,7 +153,7 @@ function checkLights(lights) {
       }
       (checked ??= new Set()).add(l.source);
     }
-    if (isShape(l.object)) { // an emissive shape's source: where it is and what it gives off, as they are now
+    if (emissive && isShape(l.object)) { // an emissive shape's source: where it is and what it gives off, as they are now
       l.position = middleOf(l.object);
       l.emission = l.object.material.emission;
     }
