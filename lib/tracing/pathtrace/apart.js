@@ -1,5 +1,5 @@
 /**
- * `apart(fn, a, b, c, d)` calls fn(a, b, c, d) from one call site that has
+ * `apart(fn, a, b, c, d, e)` calls fn(a, b, c, d, e) from one call site that has
  * seen many functions (five no-ops, when the module loads), so V8 inlines
  * none of the functions called through it: each is compiled on its own,
  * with the small functions it calls inlined in it.
@@ -12,8 +12,8 @@
  * and not others. Called through here, with objects and whole numbers only
  * as arguments, the heavy steps cost a call and allocate nothing.
  */
-export function apart(fn, a, b, c, d) {
-  fn(a, b, c, d);
+export function apart(fn, a, b, c, d, e) {
+  fn(a, b, c, d, e);
 }
 
 const NO_OPS = [() => {}, () => {}, () => {}, () => {}, () => {}];

@@ -16,12 +16,15 @@
  * whose best density for a diffuse surface is already the bounce's cosine one
  * (a sky sampled all round would only add noise there: the white furnace).
  *
- * Numbers go in and out through Float64Arrays (docs/performance.md).
+ * Numbers go in and out through Float64Arrays, and the samplers are called
+ * through `apart` with objects and whole numbers only: a number passed to or
+ * returned from a call V8 does not inline is boxed (docs/performance.md).
  */
 import { Sphere } from '../../shapes/sphere.js';
 import { Box } from '../../shapes/box.js';
 import { EMISSION, MATERIAL } from './materials.js';
 import { isUniform } from './sky.js';
+import { apart } from './apart.js';
 
 /** A light's numbers in the table: its kind, shape index, probability of being picked, cumulative probability, six numbers of shape (a sphere: centre, radius; a box: min, max). */
 export const LIGHT = 10;
@@ -95,9 +98,9 @@ export function sampleLight(lights, from, u, out) {
   while (slot < lights.count - 1 && u[0] >= table[slot * LIGHT + CDF]) slot++;
   const at = slot * LIGHT, kind = table[at + KIND];
   out[L_SLOT] = slot; out[L_PDF] = 0;
-  if (kind === SPHERE_LIGHT) sampleSphere(table, at, from, u, out);
-  else if (kind === BOX_LIGHT) sampleBox(table, at, from, u, out);
-  else sampleSky(lights.skyNumbers, u, out);
+  if (kind === SPHERE_LIGHT) apart(sampleSphere, table, at, from, u, out);
+  else if (kind === BOX_LIGHT) apart(sampleBox, table, at, from, u, out);
+  else apart(sampleSky, lights.skyNumbers, u, out);
   out[L_PDF] *= table[at + PICK];
 }
 
@@ -112,7 +115,11 @@ function sampleSphere(table, at, from, u, out) {
   if (d2 > r * r) {
     const d = Math.sqrt(d2), sin2Max = (r * r) / d2, cosMax = Math.sqrt(1 - sin2Max), oneMinusCosMax = sin2Max / (1 + cosMax);
     const cos = 1 - u[2] * oneMinusCosMax, sin = Math.sqrt(Math.max(0, 1 - cos * cos)), phi = TWO_PI * u[3];
-    aroundAxis(out, wx / d, wy / d, wz / d, cos, sin * Math.cos(phi), sin * Math.sin(phi));
+    const a = sin * Math.cos(phi), b = sin * Math.sin(phi), ux = wx / d, uy = wy / d, uz = wz / d;
+    // cos·w + a·T + b·B in a basis (T, B) around w (as sampling.js's, Duff et al. 2017)
+    const sign = uz >= 0 ? 1 : -1, k = -1 / (sign + uz), m = ux * uy * k;
+    const Tx = 1 + sign * ux * ux * k, Ty = sign * m, Tz = -sign * ux, Bx = m, By = sign + uy * uy * k, Bz = -uy;
+    out[0] = a * Tx + b * Bx + cos * ux; out[1] = a * Ty + b * By + cos * uy; out[2] = a * Tz + b * Bz + cos * uz;
     const along = d * cos - Math.sqrt(Math.max(0, r * r - d2 * (1 - cos * cos))); // the nearer crossing
     out[L_DISTANCE] = along;
     out[L_POINT] = from[0] + out[0] * along; out[L_POINT + 1] = from[1] + out[1] * along; out[L_POINT + 2] = from[2] + out[2] * along;
@@ -121,35 +128,40 @@ function sampleSphere(table, at, from, u, out) {
   }
   const z = 1 - 2 * u[2], ring = Math.sqrt(Math.max(0, 1 - z * z)), phi = TWO_PI * u[3];
   const nx = ring * Math.cos(phi), ny = ring * Math.sin(phi), nz = z;
-  towardPoint(out, from, cx + r * nx, cy + r * ny, cz + r * nz, nx, ny, nz, FOUR_PI * r * r);
+  target[0] = cx + r * nx; target[1] = cy + r * ny; target[2] = cz + r * nz; target[3] = nx; target[4] = ny; target[5] = nz; target[6] = FOUR_PI * r * r;
+  towardPoint(out, from, target);
 }
+
+/** Scratch: a point drawn on a light, its normal, the area it was drawn over; a box's visible area. */
+const target = new Float64Array(7), visible = new Float64Array(1);
 
 /** A box: one of the faces that face the point (all six from inside), picked by area, and a point uniform on it. */
 function sampleBox(table, at, from, u, out) {
-  const visible = visibleArea(table, at, from);
-  if (!(visible > 0)) return;
-  let pick = u[1] * visible, lastAxis = 0, lastHigh = 0;
+  visibleArea(table, at, from, visible);
+  if (!(visible[0] > 0)) return;
+  let pick = u[1] * visible[0], lastAxis = 0, lastHigh = 0;
   for (let axis = 0; axis < 3; axis++) {
     const b = (axis + 1) % 3, c = (axis + 2) % 3;
     const area = (table[at + G + 3 + b] - table[at + G + b]) * (table[at + G + 3 + c] - table[at + G + c]);
     for (let high = 0; high < 2; high++) {
       if (!faceVisible(table, at, from, axis, high) || !(area > 0)) continue;
-      if (pick < area) { boxFacePoint(table, at, from, u, out, axis, high, visible); return; }
+      if (pick < area) { boxFacePoint(table, at, from, u, out, axis, high); return; }
       pick -= area; lastAxis = axis; lastHigh = high;
     }
   }
-  boxFacePoint(table, at, from, u, out, lastAxis, lastHigh, visible); // rounding left a sliver past the last face
+  boxFacePoint(table, at, from, u, out, lastAxis, lastHigh); // rounding left a sliver past the last face
 }
 
-function boxFacePoint(table, at, from, u, out, axis, high, visible) {
-  const p = boxPoint, b = (axis + 1) % 3, c = (axis + 2) % 3;
-  p[axis] = table[at + G + 3 * high + axis];
-  p[b] = table[at + G + b] + u[2] * (table[at + G + 3 + b] - table[at + G + b]);
-  p[c] = table[at + G + c] + u[3] * (table[at + G + 3 + c] - table[at + G + c]);
-  boxNormal[0] = boxNormal[1] = boxNormal[2] = 0; boxNormal[axis] = 1;
-  towardPoint(out, from, p[0], p[1], p[2], boxNormal[0], boxNormal[1], boxNormal[2], visible);
+/** A point uniform on face `high` across `axis`, drawn over the visible area (in `visible[0]`), into `target`, and the direction to it. */
+function boxFacePoint(table, at, from, u, out, axis, high) {
+  const b = (axis + 1) % 3, c = (axis + 2) % 3;
+  target[axis] = table[at + G + 3 * high + axis];
+  target[b] = table[at + G + b] + u[2] * (table[at + G + 3 + b] - table[at + G + b]);
+  target[c] = table[at + G + c] + u[3] * (table[at + G + 3 + c] - table[at + G + c]);
+  target[3] = target[4] = target[5] = 0; target[3 + axis] = 1;
+  target[6] = visible[0];
+  towardPoint(out, from, target);
 }
-const boxPoint = new Float64Array(3), boxNormal = new Float64Array(3);
 
 /** Whether face `high` (0: min, 1: max) across `axis` faces the point (every face does from inside the box). */
 function faceVisible(table, at, from, axis, high) {
@@ -159,33 +171,26 @@ function faceVisible(table, at, from, axis, high) {
   return true; // inside
 }
 
-/** The area of the box's faces that face the point. */
-function visibleArea(table, at, from) {
+/** The area of the box's faces that face the point, into `area[0]`. */
+function visibleArea(table, at, from, area) {
   let sum = 0;
   for (let axis = 0; axis < 3; axis++) {
     const b = (axis + 1) % 3, c = (axis + 2) % 3;
-    const area = (table[at + G + 3 + b] - table[at + G + b]) * (table[at + G + 3 + c] - table[at + G + c]);
-    for (let high = 0; high < 2; high++) if (faceVisible(table, at, from, axis, high)) sum += area;
+    const face = (table[at + G + 3 + b] - table[at + G + b]) * (table[at + G + 3 + c] - table[at + G + c]);
+    for (let high = 0; high < 2; high++) if (faceVisible(table, at, from, axis, high)) sum += face;
   }
-  return sum;
+  area[0] = sum;
 }
 
-/** The direction to a point on a light drawn uniformly over `area`, with normal n: density distance² / (|cos| · area) in solid angle. */
-function towardPoint(out, from, px, py, pz, nx, ny, nz, area) {
+/** The direction to the point `p[0 …]` on a light, of normal `p[3 …]`, drawn uniformly over the area `p[6]`: density distance² / (|cos| · area) in solid angle. */
+function towardPoint(out, from, p) {
+  const px = p[0], py = p[1], pz = p[2], nx = p[3], ny = p[4], nz = p[5], area = p[6];
   const dx = px - from[0], dy = py - from[1], dz = pz - from[2], d2 = dx * dx + dy * dy + dz * dz, d = Math.sqrt(d2);
   out[L_POINT] = px; out[L_POINT + 1] = py; out[L_POINT + 2] = pz; out[L_DISTANCE] = d;
   if (!(d > 0)) return;
   out[0] = dx / d; out[1] = dy / d; out[2] = dz / d;
   const cos = Math.abs(nx * out[0] + ny * out[1] + nz * out[2]);
   if (cos > 0) out[L_PDF] = d2 / (cos * area);
-}
-
-/** The unit vector cos·w + a·T + b·B, in a basis (T, B) around the unit w (as sampling.js's). */
-function aroundAxis(out, wx, wy, wz, cos, a, b) {
-  const sign = wz >= 0 ? 1 : -1, k = -1 / (sign + wz), m = wx * wy * k;
-  const Tx = 1 + sign * wx * wx * k, Ty = sign * m, Tz = -sign * wx;
-  const Bx = m, By = sign + wy * wy * k, Bz = -wy;
-  out[0] = a * Tx + b * Bx + cos * wx; out[1] = a * Ty + b * By + cos * wy; out[2] = a * Tz + b * Bz + cos * wz;
 }
 
 /**
@@ -208,13 +213,7 @@ function sampleSky(sky, u, out) {
   const dy = Math.min(1, Math.max(-1, 2 * t - 1)), ring = Math.sqrt(Math.max(0, 1 - dy * dy)), phi = TWO_PI * u[3];
   out[0] = ring * Math.cos(phi); out[1] = dy; out[2] = ring * Math.sin(phi);
   out[L_DISTANCE] = Infinity;
-  out[L_PDF] = skyDensity(sky, dy);
-}
-
-/** The sky sampler's density (solid angle) of a direction whose y is dy: brightness / (4π · mean brightness). */
-function skyDensity(sky, dy) {
-  const t = 0.5 * (dy + 1), total = (sky[0] + sky[1]) / 2;
-  return (t * sky[0] + (1 - t) * sky[1]) / (FOUR_PI * total);
+  out[L_PDF] = (t * top + (1 - t) * bottom) / (FOUR_PI * (top + bottom) / 2); // brightness / (4π · mean brightness)
 }
 
 /**
@@ -226,13 +225,17 @@ export function lightPdf(lights, slot, ray, hit, out) {
   const table = lights.table, at = slot * LIGHT, kind = table[at + KIND];
   let pdf;
   out[0] = 0;
-  if (kind === SKY_LIGHT) pdf = skyDensity(lights.skyNumbers, ray[4]);
-  else {
+  if (kind === SKY_LIGHT) {
+    const sky = lights.skyNumbers, t = 0.5 * (ray[4] + 1);
+    pdf = (t * sky[0] + (1 - t) * sky[1]) / (FOUR_PI * (sky[0] + sky[1]) / 2); // as sampleSky's
+  } else {
     const cos = Math.abs(hit[3] * ray[3] + hit[4] * ray[4] + hit[5] * ray[5]);
     const hx = hit[0] - ray[0], hy = hit[1] - ray[1], hz = hit[2] - ray[2], distance2 = hx * hx + hy * hy + hz * hz;
     if (!(cos > 0)) return;
-    if (kind === BOX_LIGHT) pdf = distance2 / (cos * visibleArea(table, at, ray));
-    else {
+    if (kind === BOX_LIGHT) {
+      visibleArea(table, at, ray, visible);
+      pdf = distance2 / (cos * visible[0]);
+    } else {
       const wx = table[at + G] - ray[0], wy = table[at + G + 1] - ray[1], wz = table[at + G + 2] - ray[2], r = table[at + G + 3];
       const d2 = wx * wx + wy * wy + wz * wz;
       const sin2Max = (r * r) / d2;
