@@ -244,8 +244,8 @@ test('hostile nicknames and answers: refused with the field named, or shown as t
   expect((await send({ laptop, id: 'h4', kind: 'answer', line: 'Pixel: 2,2; H: 0; V: 0', ...SCREEN }, { secret: '' })).status).toBe(403);
   await openBoard(page);
   const list = page.locator('[data-refused]');
-  await expect(list.locator('li[data-refused="answer"]').filter({ hasText: 'line must read like' })).toHaveCount(1);
-  await expect(list.locator('li[data-refused="answer"]').filter({ hasText: 'name is too long' })).toHaveCount(1);
+  await expect(list.locator('li[data-refused-what="answer"]').filter({ hasText: 'line must read like' })).toHaveCount(1);
+  await expect(list.locator('li[data-refused-what="answer"]').filter({ hasText: 'name is too long' })).toHaveCount(1);
   await expect(list.locator('li').first()).toContainText(HOSTILE.slice(0, 40)); // the newest first, its name as text
   await expect(page.locator('[data-refused-count]')).toHaveText(/^[1-9]\d*$/);
   const mark = page.locator(`[data-answer][data-pixel="${NOT_PINK[3].x},${NOT_PINK[3].y}"]`);
