@@ -68,6 +68,10 @@ export function openStore(folder, { Database, maxBytes = DATABASE_MAX_BYTES }) {
   const has = new Set(db.pragma('table_info(laptops)').map((c) => c.name));
   for (const [column, type] of Object.entries(LAPTOP_COLUMNS)) if (!has.has(column)) db.exec(`ALTER TABLE laptops ADD COLUMN ${column} ${type}`);
   db.exec('CREATE INDEX IF NOT EXISTS laptops_by_name ON laptops (class, name_key)');
+  // Names taken before names had keys: keyed now, so that no other laptop takes them in another spelling.
+  const unkeyed = db.prepare('SELECT rowid, nickname FROM laptops WHERE nickname IS NOT NULL AND name_key IS NULL').all();
+  const setKey = db.prepare('UPDATE laptops SET name_key = ? WHERE rowid = ?');
+  db.transaction(() => { for (const { rowid, nickname } of unkeyed) setKey.run(nameKey(nickname), rowid); })();
   return new BoardStore(db, maxBytes);
 }
 

@@ -259,3 +259,19 @@ describe('the board\'s count and what was refused', () => {
     expect(() => checkNickname('\u200B')).toThrow(BadSubmission);
   });
 });
+
+describe('a board made before laptops had secrets', () => {
+  it('gives an old laptop\'s id to nobody, and keeps its name from being taken in another spelling', () => {
+    store.close();
+    const db = new Database(join(folder, 'board.sqlite'));
+    db.exec('DROP TABLE laptops');
+    db.exec(`CREATE TABLE laptops (class INTEGER NOT NULL, laptop TEXT NOT NULL, number INTEGER NOT NULL, nickname TEXT, seen TEXT NOT NULL, PRIMARY KEY (class, laptop))`);
+    db.prepare('INSERT INTO laptops VALUES (1, ?, 1, ?, ?)').run('old-laptop-0001', 'Anna', new Date().toISOString());
+    db.close();
+    store = openStore(folder, { Database });
+    expect(store.proves('old-laptop-0001', '')).toBe(false);
+    const hello = store.hello('old-laptop-0001', undefined);
+    expect(hello.laptop).not.toBe('old-laptop-0001');
+    expect(() => store.rename(hello.laptop, 'ANNA')).toThrow(/^name "ANNA" is taken/);
+  });
+});

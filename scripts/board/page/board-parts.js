@@ -117,7 +117,7 @@ export function showRefused(host, refused) {
   if (refused.length === 0) return void host.replaceChildren(make('li', 'Nothing refused.'));
   host.replaceChildren(...refused.map((r) => {
     const item = make('li');
-    item.dataset.refused = r.what;
+    item.dataset.refusedWhat = r.what;
     const time = make('time', new Date(r.at).toLocaleTimeString());
     time.dateTime = r.at;
     item.append(make('b', r.name), ' ', time, ` ${r.what}: `, make('span', r.reason, 'reason'));
