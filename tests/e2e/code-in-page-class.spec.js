@@ -5,7 +5,8 @@
 // itself judges the scene the code built, keeps its task list and the
 // board's "Received" lines through every Run, and the teacher's board gets
 // the self-checks and the tasks. A student's code that claims a verdict,
-// progress or a task by posting messages to the page changes nothing.
+// progress or a task by posting messages to the page changes nothing. The
+// playground's tasks, done in its edited code, reach the board too.
 import { readFileSync } from 'node:fs';
 import { test, expect } from '@playwright/test';
 import { findBrowser } from '../../scripts/find-browser.js';
@@ -165,5 +166,23 @@ test('a student\'s code that posts a passed check, progress and tasks to the pag
   await expect(page.locator('[data-task="pass"]')).toHaveAttribute('data-done', 'false');
   const after = await homework08();
   expect([after.passed, after.students, after.checks]).toEqual([before.homework.passed, before.homework.students + 1, before.homework.checks + 1]);
+  expect(errors).toEqual([]);
+});
+
+test('the playground\'s tasks done in the edited code reach the board from the page', async ({ browser }) => {
+  const teacher = await browser.newPage();
+  await teacher.goto(board.url);
+  await expect(teacher.locator('[data-live]')).toHaveAttribute('data-live', 'live', { timeout: 60_000 });
+  const page = await (await browser.newContext()).newPage();
+  const errors = watchConsole(page);
+  await page.goto(`${server.url.replace('127.0.0.1', HOST)}sketches/10-playground.html`);
+  await expect(page.locator('[data-editor]')).toBeVisible({ timeout: 60_000 });
+  const starter = readFileSync('sketches/10-playground.js', 'utf8');
+  await setCode(page, starter.replace('scene.add(new PointLight', 'scene.add(new Sphere([6, 1, -26], 2, { color: [0, 0, 0], emission: 1 }));\n  scene.add(new PointLight'));
+  await waitForRun(page, 1, 120_000);
+  const glow = page.locator('[data-code-judged] [data-tasks="10"] [data-task="glow"]');
+  await expect(glow).toHaveAttribute('data-done', 'true');
+  await expect(page.locator('[data-code-judged] [data-tasks="10"] [data-received]')).toHaveText(/Received by the class board/);
+  await expect(teacher.locator('[data-page="10"] [data-task="glow"] .bar-count')).toHaveText(/^1 of \d+$/);
   expect(errors).toEqual([]);
 });
