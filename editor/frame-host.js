@@ -80,8 +80,10 @@ function frameBootstrap() {
 /** How long a frame may be silent before it is taken for stuck (ms): timers of a frame out of view run once a second. */
 export const SILENCE_MS = 8_000;
 
-/** In the frame, the page's margins are the page's own, around the frame. */
-// The page shows the tasks and the self-check outside the frame: the frame's empty place for them goes.
+/**
+ * In the frame, the page's margins are the page's own, around the frame; the
+ * page shows the tasks and the self-check outside it, so their empty place goes.
+ */
 const FRAME_CSS = 'body.in-frame { margin: 0; padding: 0.25rem 0 0; min-height: 0; }\nbody.in-frame .hw-panel:empty { display: none; }';
 
 const escapeText = (s) => String(s).replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;');

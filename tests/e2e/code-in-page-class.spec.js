@@ -5,7 +5,8 @@
 // itself judges the scene the code built, keeps its task list and the
 // board's "Received" lines through every Run, and the teacher's board gets
 // the self-checks and the tasks. A student's code that claims a verdict,
-// progress or a task by posting messages to the page changes nothing.
+// progress or a task by posting messages to the page changes nothing. The
+// playground's tasks, done in its edited code, reach the board too.
 import { readFileSync } from 'node:fs';
 import { test, expect } from '@playwright/test';
 import { findBrowser } from '../../scripts/find-browser.js';
@@ -52,6 +53,17 @@ test.beforeAll(async () => {
 });
 test.afterAll(async () => { await server?.close(); });
 
+/**
+ * Presses the page's "Check my scene" from the keyboard: the frame above it
+ * takes its new picture's height when it is ready, and a click could land
+ * where the button was a moment before.
+ */
+async function pressCheck(check) {
+  const button = check.getByRole('button', { name: 'Check my scene' });
+  await button.focus();
+  await button.press('Enter');
+}
+
 /** What the board shows, as JSON. */
 const boardState = async () => (await fetch(`${server.url}board/state?key=${board.key}`)).json();
 const homework08 = async () => (await boardState()).homework.find((h) => h.page === '08') ?? null;
@@ -70,6 +82,10 @@ test('on the class server, reached by a name: the homework edited in the page is
   expect(await page.evaluate(() => window.isSecureContext)).toBe(false); // as on a classroom's network
   await expect(page.locator('[data-editor]')).toBeVisible({ timeout: 60_000 });
   expect(await editorText(page)).toBe(STARTER); // the starter, read as the student saves it
+  // Before any Run, the page's own sketch: its Check, received by the board.
+  await page.locator('main#sketch').getByRole('button', { name: 'Check my scene' }).click();
+  await expect(page.locator('main#sketch .rt-check [data-received]')).toBeVisible();
+  await expect(page.locator('#tasks [data-received]')).toBeVisible();
 
   await setCode(page, lights(RED));
   await waitForRun(page, 1, 120_000);
@@ -77,14 +93,18 @@ test('on the class server, reached by a name: the homework edited in the page is
   const check = page.locator('[data-code-judged] [data-page-check]');
   const tasks = page.locator('[data-code-judged] [data-tasks="08"]');
   await expect(tasks).toBeVisible();
+  await expect(tasks.locator('[data-task="check"]')).toHaveAttribute('data-done', 'true');
+  // What the page's own parts were told stays said, under the page's judge.
+  await expect(check.locator('[data-received]')).toHaveText(/Received by the class board/);
+  await expect(tasks.locator('[data-received]')).toHaveText(/Received by the class board/);
   await expect(sketchFrame(page).locator('[data-tasks]')).toHaveCount(0);
   await expect(sketchFrame(page).getByRole('button', { name: 'Check my scene' })).toHaveCount(0);
-  await check.getByRole('button', { name: 'Check my scene' }).click();
+  await pressCheck(check);
   await expect(check.locator('[data-check-results]')).toHaveAttribute('data-check', 'not-yet');
   await expect(check.locator('[data-check-item="failed"]').first()).toContainText('Found 1 light (red)');
   await expect(check.locator('[data-received]')).toHaveText(/Received by the class board/);
   await expect(teacher.locator('[data-homework="08"]')).toContainText('0 passed');
-  await expect(teacher.locator('[data-homework="08"]')).toContainText('of 1 who checked (1 checks run)');
+  await expect(teacher.locator('[data-homework="08"]')).toContainText('of 1 who checked (2 checks run)');
   // A pixel of the red light, selected in the frame: the page finds it is a light, from the scene it read.
   await clickPixel(sketchFrame(page).locator('[data-tracer]'), RED_PIXEL.x, RED_PIXEL.y);
   await expect(tasks.locator('[data-task="light"]')).toHaveAttribute('data-done', 'true');
@@ -96,13 +116,13 @@ test('on the class server, reached by a name: the homework edited in the page is
   await expect(tasks.locator('[data-task="light"]')).toHaveAttribute('data-done', 'true');
   await expect(tasks.locator('[data-received]')).toBeVisible();
   await expect(check.locator('[data-received]')).toBeVisible();
-  await check.getByRole('button', { name: 'Check my scene' }).click();
+  await pressCheck(check);
   await expect(check.locator('[data-check-results]')).toHaveAttribute('data-check', 'passed');
   await expect(check.locator('.hw-headline')).toHaveText(/^Passed!/);
   await expect(tasks.locator('[data-task="pass"]')).toHaveAttribute('data-done', 'true');
   await expect(tasks.locator('[data-received]')).toHaveText(/Received by the class board/);
   await expect(teacher.locator('[data-homework="08"]')).toContainText('1 passed');
-  await expect(teacher.locator('[data-homework="08"]')).toContainText('(2 checks run)');
+  await expect(teacher.locator('[data-homework="08"]')).toContainText('(3 checks run)');
   // Page 08's tasks on the board: each done by this student.
   for (const id of ['check', 'light', 'pass']) {
     await expect(teacher.locator(`[data-page="08"] [data-task="${id}"] .bar-count`)).toHaveText('1 of 1');
@@ -140,11 +160,29 @@ test('a student\'s code that posts a passed check, progress and tasks to the pag
 
   // The page's own Check judges the scene the code built: no light, not passed.
   const check = page.locator('[data-code-judged] [data-page-check]');
-  await check.getByRole('button', { name: 'Check my scene' }).click();
+  await pressCheck(check);
   await expect(check.locator('[data-check-results]')).toHaveAttribute('data-check', 'not-yet');
   await expect(check.locator('[data-received]')).toBeVisible();
   await expect(page.locator('[data-task="pass"]')).toHaveAttribute('data-done', 'false');
   const after = await homework08();
   expect([after.passed, after.students, after.checks]).toEqual([before.homework.passed, before.homework.students + 1, before.homework.checks + 1]);
+  expect(errors).toEqual([]);
+});
+
+test('the playground\'s tasks done in the edited code reach the board from the page', async ({ browser }) => {
+  const teacher = await browser.newPage();
+  await teacher.goto(board.url);
+  await expect(teacher.locator('[data-live]')).toHaveAttribute('data-live', 'live', { timeout: 60_000 });
+  const page = await (await browser.newContext()).newPage();
+  const errors = watchConsole(page);
+  await page.goto(`${server.url.replace('127.0.0.1', HOST)}sketches/10-playground.html`);
+  await expect(page.locator('[data-editor]')).toBeVisible({ timeout: 60_000 });
+  const starter = readFileSync('sketches/10-playground.js', 'utf8');
+  await setCode(page, starter.replace('scene.add(new PointLight', 'scene.add(new Sphere([6, 1, -26], 2, { color: [0, 0, 0], emission: 1 }));\n  scene.add(new PointLight'));
+  await waitForRun(page, 1, 120_000);
+  const glow = page.locator('[data-code-judged] [data-tasks="10"] [data-task="glow"]');
+  await expect(glow).toHaveAttribute('data-done', 'true');
+  await expect(page.locator('[data-code-judged] [data-tasks="10"] [data-received]')).toHaveText(/Received by the class board/);
+  await expect(teacher.locator('[data-page="10"] [data-task="glow"] .bar-count')).toHaveText(/^1 of \d+$/);
   expect(errors).toEqual([]);
 });

@@ -7,6 +7,7 @@ import { test, expect } from '@playwright/test';
 import AxeBuilder from '@axe-core/playwright';
 import { clickPixel, waitForDone, watchConsole } from './helpers.js';
 import { setCode, editorText, waitForRun, sketchFrame, codeLink } from './code-editor.js';
+import { Scene, Sphere, PointLight, Camera, inspectPixel } from '../../lib/index.js';
 
 const PLAYGROUND = '/sketches/10-playground.html';
 const STARTER = readFileSync('sketches/10-playground.js', 'utf8');
@@ -102,6 +103,41 @@ test('the selected pixel stays selected when the edited code runs again', async 
   await waitForRun(page, 2);
   await expect(answer).toHaveText(/^Pixel: 30,12; /);
   await expect(sketchFrame(page).locator('[data-inspector] .rt-color-name')).toHaveText('blue');
+});
+
+test('the page\'s own task list judges what the edited code built, through every Run; a scene it cannot read is named, and nothing breaks', async ({ page }) => {
+  const errors = watchConsole(page);
+  const OWN = 'scene.add(new Sphere([6, 1, -26], 2, { color: [0, 0, 0], emission: 1 }));';
+  // A pixel of that sphere, as the page's own tracer finds it.
+  const scene = new Scene({ background: [0.85, 0.92, 1], ambient: 0.1 }).add(new Sphere([0, 0, -20], 4, { color: [1, 0.32, 0.36] }))
+    .add(new PointLight([-10, 20, 0])).add(new Sphere([6, 1, -26], 2, { color: [0, 0, 0], emission: 1 }));
+  const camera = new Camera({ width: 64, height: 48, fov: 30 });
+  let own = null;
+  for (let y = 0; y < 48 && !own; y++) for (let x = 0; x < 64 && !own; x++) if (inspectPixel(scene, camera, x, y).hit?.object === scene.objects[1]) own = { x, y };
+  await page.goto(PLAYGROUND);
+  await waitForDone(page);
+  await setCode(page, STARTER.replace('scene.add(new PointLight', `${OWN}\n  scene.add(new PointLight`));
+  await waitForRun(page, 1);
+  const tasks = page.locator('[data-code-judged] [data-tasks="10"]');
+  await expect(tasks.locator('[data-task="glow"]')).toHaveAttribute('data-done', 'true');
+  await expect(sketchFrame(page).locator('[data-tasks]')).toHaveCount(0); // the frame shows no list of its own
+  await clickPixel(sketchFrame(page).locator('[data-tracer]'), own.x, own.y);
+  await expect(tasks.locator('[data-task="select"]')).toHaveAttribute('data-done', 'true');
+  await expect(tasks.locator('[data-task="own"]')).toHaveAttribute('data-done', 'true');
+  expect(await page.evaluate(() => JSON.parse(localStorage.getItem('raytracing-sketchbook:tasks:v1')).pages['10'])).toEqual(expect.arrayContaining(['glow', 'select', 'own']));
+
+  // Code that sends the page a scene that is not JSON: the page names it, keeps its list, and judges nothing from it.
+  await setCode(page, `${STARTER}\nsetTimeout(() => parent.postMessage({ type: 'scene', scene: '{"objects": [', camera: '{}', mode: 'shaded', order: 'coarse' }, '*'), 1000);\n`);
+  await waitForRun(page, 2);
+  await expect(page.locator('[data-judge-status]')).toHaveText(/^The scene your code built could not be read: scene is not valid JSON/);
+  await expect(tasks.locator('[data-task="own"]')).toHaveAttribute('data-done', 'true');
+  await clickPixel(sketchFrame(page).locator('[data-tracer]'), 3, 3); // no scene to judge it by: no task, no mistake
+  await expect(tasks.locator('[data-task="mirror"]')).toHaveAttribute('data-done', 'false');
+  await setCode(page, STARTER);
+  await waitForRun(page, 3);
+  await expect(page.locator('[data-judge-status]')).toBeHidden(); // the next run's scene is read again
+  await expect(page.locator('[data-tasks]')).toHaveCount(1);
+  expect(errors).toEqual([]);
 });
 
 test('the student\'s code is kept in this browser; Reset brings back the starter, Download saves the file, Copy share link carries the code', async ({ page }) => {

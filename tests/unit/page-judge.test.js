@@ -1,7 +1,7 @@
 import { describe, it, expect } from 'vitest';
 import { FrameView } from '../../editor/page-judge.js';
 import { sceneToJSON, cameraToJSON } from '../../lib/scene/json.js';
-import { trafficSignalScene, trafficSignalCamera, checkTrafficSignal, inspectPixel, Sphere } from '../../lib/index.js';
+import { trafficSignalScene, trafficSignalCamera, checkTrafficSignal, checkRearLights, inspectPixel, Sphere } from '../../lib/index.js';
 import { HOMEWORK_CHECKS } from '../../lib/lesson/homework.js';
 import { MAX_SCENE_OBJECTS } from '../../lib/scene/codec.js';
 
@@ -20,6 +20,7 @@ describe('FrameView: the page reads what the frame\'s code built, and judges it 
     expect(view.problem).toBeNull();
     expect(view.scene.objects).toHaveLength(RIGHT.objects.length);
     expect(view.camera.width).toBe(trafficSignalCamera().width);
+    expect(HOMEWORK_CHECKS).toEqual({ '08': checkTrafficSignal, '09': checkRearLights }); // the page's own check, whatever the code names
     expect(HOMEWORK_CHECKS['08'](view.scene, view.camera).passed).toBe(true);
     view.read(message(signal([6.5, [1, 0, 0]])));
     expect(checkTrafficSignal(view.scene, view.camera).passed).toBe(false);
