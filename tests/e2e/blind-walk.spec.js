@@ -273,17 +273,52 @@ test('02: the three pictures of one scene have three names, each map described a
   await expect(pictures.nth(2)).toHaveAccessibleDescription(/^64 by 48 pixels\. Roots map: 2 roots \(two hits\) on pixels/);
 });
 
-test('the 3D view says where it looks from as it turns, in its name and once it rests', async ({ page }) => {
+test('the 3D view says where it looks from as it turns, in its name and once each burst of keys rests, with its angles', async ({ page }) => {
   const reader = await open(page, '/sketches/01-rays-through-pixels.html');
   const view3d = page.locator('[data-view3d]');
   await expect(view3d).toHaveAccessibleName(/^The scene in 3D, seen from behind the eye and to its right, from above: arrow keys turn it/);
   await view3d.focus();
   reader.said = [];
-  for (let i = 0; i < 6; i++) await view3d.press('ArrowRight'); // yaw −35 → −95: round to the eye's right side
+  await view3d.evaluate((canvas) => { // six presses in one burst (a held key): yaw −35 → −95, round to the eye's right side
+    for (let i = 0; i < 6; i++) canvas.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowRight', bubbles: true }));
+  });
   await reader.press('Shift');
   await expect(view3d).toHaveAccessibleName(/^The scene in 3D, seen from the eye's right, from above:/);
-  expect(reader.said.filter((s) => s.how === 'live').map((s) => s.text)).toEqual(['Seen from the eye\'s right, from above.']);
+  expect(reader.said.filter((s) => s.how === 'live').map((s) => s.text)).toEqual(['Seen from the eye\'s right, from above: yaw -95°, pitch 20°.']);
+  // every key is heard, a turn that stays in one sector of words too (ArrowUp was not said at all)
+  for (const [key, said] of [['ArrowUp', 'pitch 10°'], ['ArrowDown', 'pitch 20°'], ['ArrowLeft', 'yaw -85°']]) {
+    reader.said = [];
+    await reader.press(key);
+    expect(reader.said.filter((s) => s.how === 'live').map((s) => s.text), key).toEqual([expect.stringContaining(said)]);
+  }
 });
+
+test('from the picture to the 3D view in one key, said by the picture\'s name', async ({ page }) => {
+  const reader = await open(page, '/sketches/01-rays-through-pixels.html');
+  await toPicture(reader);
+  expect(reader.said.at(-1).text).toMatch(/3: the 3D view/);
+  await reader.press('3');
+  await expect(page.locator('[data-view3d]')).toBeFocused();
+  expect(reader.said.at(-1).text).toMatch(/^The scene in 3D, seen from/);
+});
+
+for (const path of ['00-light-or-eye', '01-rays-through-pixels', '02-the-quadratic', '03-the-geometric-approach', '04-find-the-pink-pixel',
+  '05-value-boxes', '06-lights-shadows-reflections', '07-original-examples', '11-several-rays-per-pixel', '12-cylinders-cones-triangles',
+  '13-meshes-and-a-bvh', '14-spot-and-area-lights', '15-live-on-the-gpu', '16-light-that-bounces', '17-one-weekend']) {
+  test(`${path}: the first Tab lands on the picture, and a named main landmark holds it`, async ({ page }) => {
+    test.setTimeout(120_000);
+    await page.goto(`/sketches/${path}.html`);
+    await page.locator('[data-skip-to-picture]').waitFor({ state: 'attached' }); // the picture takes the keys while it is traced too
+    await page.keyboard.press('Tab');
+    const picture = page.locator(await page.locator('[data-skip-to-picture]').getAttribute('href'));
+    await expect(picture).toHaveAttribute('data-tracer', '');
+    await expect(picture).toBeFocused();
+    await expect(page.getByRole('main', { name: 'The picture and its panels' }).locator(picture)).toBeVisible();
+    // back towards the header: the link stops there, no trap
+    await page.keyboard.press('Shift+Tab');
+    await expect(picture).not.toBeFocused();
+  });
+}
 
 test('"Picture as text" reads every row of pixels, in the answer\'s coordinates, and says when they change', async ({ page }) => {
   const reader = await open(page, '/sketches/01-rays-through-pixels.html');
