@@ -416,6 +416,27 @@ test.describe('with reduced motion', () => {
     expect(drawn).toBe(true);
   });
 
+  test('sketch 00: the photons\' picture and count show once every photon is sent, not step by step', async ({ page }) => {
+    test.setTimeout(120_000);
+    await page.goto('/sketches/00-light-or-eye.html');
+    // every frame until the page is done: how many different pictures and counts has the photon view shown?
+    const shown = await page.evaluate(() => new Promise((resolve) => {
+      const pictures = new Set(), counts = new Set();
+      const look = () => {
+        const c = document.querySelector('[data-photons]');
+        if (c) {
+          pictures.add(c.toDataURL());
+          counts.add(document.querySelector('[data-photon-count]').textContent);
+        }
+        if (c && document.body.dataset.render === 'done') resolve({ pictures: pictures.size, counts: counts.size }); else requestAnimationFrame(look);
+      };
+      look();
+    }));
+    expect(shown.pictures).toBeLessThanOrEqual(2); // the blank canvas, then the last picture
+    expect(shown.counts).toBeLessThanOrEqual(2);
+    await expect(page.locator('[data-photon-count]')).toHaveText(/^Of 1,000,000 rays from the light, [\d,]+ reached the eye/);
+  });
+
   test('Shoot rays does not fly rays one by one: the picture is traced again at once', async ({ page }) => {
     await page.goto('/sketches/01-rays-through-pixels.html');
     await waitForDone(page);
