@@ -12,7 +12,8 @@
  */
 import p5 from 'p5';
 import { Camera, Scene, Sphere, PointLight } from '../lib/index.js';
-import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
+import { createAnnouncer } from '../lib/p5/index.js'; // and the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
+import { mapValue } from '../lib/p5/map-words.js';
 
 // The sphere (the worksheet's: centre (0, 0, −20), radius 4) and the screen.
 const SPHERE = { x: 0, y: 0, z: -20, r: 4 };
@@ -54,10 +55,22 @@ new p5((p) => {
     p.createCanvas(560, 380).parent('left');
     p.pixelDensity(1);
     p.createInspector({ view: views[0], parent: 'sketch' });
+    sayDiscriminant(views[0]);
     views[0].select(WIDTH / 2, HEIGHT / 2);
     p.createTaskList({ page: '02', view: views[0] }); // the page's tasks, ticked off as they are done
     p.noLoop();
   };
+
+  /**
+   * The shaded picture says the selected pixel's discriminant too, after the pixel (the maps say
+   * their own value): a student who cannot see the maps hears a miss from a graze on any picture.
+   */
+  function sayDiscriminant(view) {
+    const voice = createAnnouncer({ name: 'discriminant', order: 1 });
+    view.onSelect((s) => {
+      if (s && document.activeElement === view.canvas) voice.say(mapValue('discriminant', view.scene, view.camera, s.x, s.y));
+    });
+  }
 
   /** A new number for the sphere: all three pictures are traced again. A bad radius throws, and nothing changes. */
   function setSphere(name, value) {

@@ -3,7 +3,8 @@
  * leave the lights a batch per animation frame; the few that reach the eye
  * build the picture, under a live count ("of 1,000,000 rays from the light,
  * 58 reached the eye: 0.0058 %"). Once the photons are sent it hands a sample
- * of their paths to a 3D scene view.
+ * of their paths to a 3D scene view. With reduced motion (the system's
+ * setting) the picture and the count show once every photon is sent.
  *
  *   const view = p.createTracerView({ scene, camera });
  *   const photons = p.createPhotonView({ scene, camera, seed: 1968, link: view });
@@ -20,6 +21,7 @@ import { RAY_COLORS } from './scene-view.js';
 import { arrowMove } from './tracer-input.js';
 import { cappedScale, roomFor, watchRoom } from './tracer-layout.js';
 import { describeScene } from '../lesson/describe.js';
+import { reducedMotion } from './announce.js';
 
 const OPTIONS = ['scene', 'camera', 'seed', 'eyeRadius', 'photons', 'samplePaths', 'scale', 'parent', 'label', 'budgetMs', 'link', 'sceneView'];
 
@@ -98,6 +100,7 @@ export class PhotonView {
     this.#raf = 0;
     const t = this.#tracer, start = performance.now();
     while (t.emitted < this.#target && performance.now() - start < this.budgetMs) t.emit(Math.min(2000, this.#target - t.emitted));
+    if (reducedMotion() && !this.done) return this.#schedule(); // less motion: no picture growing step by step, the last one at once
     t.writePicture(this.#image.data);
     this.#ctx.putImageData(this.#image, 0, 0);
     this.countText.textContent = `Of ${t.emitted.toLocaleString('en-US')} rays from the light, ${t.reached.toLocaleString('en-US')} reached the eye: ${percent(t.share)}.`;

@@ -7,9 +7,11 @@
  * the arrow keys for their own cursor unless the focus is in such a widget,
  * and the picture takes the arrow keys. Its keys beside the arrows: a colour's
  * first letters jump to the next pixel of that colour (p: the next pink one;
- * Shift: the one before; while the picture is still traced, once it is done). A "Skip to the picture" link opens the page, and a
- * "Picture as text" disclosure reads the traced picture row by row of pixels,
- * in colour names, saying when the rows change.
+ * Shift: the one before; while the picture is still traced, once it is done);
+ * 3 goes to the page's 3D view. The first Tab into the page lands on the
+ * picture (through the "Skip to the picture" link), and a "Picture as text"
+ * disclosure reads the traced picture row by row of pixels, in colour names,
+ * saying when the rows change.
  */
 import { describeScene, pixelNames, pixelRows, nextPixelNamed, COLOR_NAMES } from '../lesson/describe.js';
 import { MODES } from '../tracing/modes.js';
@@ -24,6 +26,8 @@ const TYPE_AHEAD_MS = 800;
 /** Rows of pixels read out at most: beyond, a row is every n-th pixel row. */
 const MAX_ROWS = 240;
 let ids = 0;
+/** The key on the picture that goes to the page's 3D view (a digit: the letters are colours'). */
+const VIEW3D_KEY = '3';
 /** The application's name: its keys, by engine. */
 const KEYS = {
   cpu: 'Arrow keys: a pixel; p: next pink, or a colour\'s first letter',
@@ -54,6 +58,7 @@ export function createPictureWords(canvas, view) {
   let last = -Infinity, timer = 0, names = null, typed = '', typedAt = 0, sought = '', shownRows = '', stageElement = null;
   /** A colour key pressed while the picture was being traced, answered when it is done. */
   let waiting = null;
+  let engineNow = 'cpu';
   addSkipLink(canvas);
 
   const caption = () => canvas.closest('figure')?.querySelector('figcaption')?.textContent.trim() || 'Traced picture';
@@ -89,13 +94,21 @@ export function createPictureWords(canvas, view) {
     if (again) voice.say('Picture as text: the picture was traced again, its rows changed.');
   };
   details.addEventListener('toggle', () => { if (details.open) readRows(); });
+  // the 3D view comes after the picture in setup(): the application's name says its key once there is one
+  canvas.addEventListener('focus', () => words.engine(engineNow));
 
   // a map says what the pixel stands for, when the student is on it (the page's inspector says the pixel)
   const unlisten = view.on('select', (s) => {
     if (s && view.mode !== 'shaded' && document.activeElement === canvas) voice.say(mapValue(view.mode, view.scene, view.camera, s.x, s.y));
   });
   canvas.addEventListener('keydown', (event) => {
-    if (event.ctrlKey || event.metaKey || event.altKey || !/^[a-z]$/i.test(event.key)) return;
+    if (event.ctrlKey || event.metaKey || event.altKey) return;
+    if (event.key === VIEW3D_KEY && sceneView3d()) { // one key to the 3D view, not a dozen Tabs past the panels
+      event.preventDefault();
+      sceneView3d().focus();
+      return;
+    }
+    if (!/^[a-z]$/i.test(event.key)) return;
     const next = colorKey(event.key.toLowerCase(), event.shiftKey);
     if (next) event.preventDefault();
   });
@@ -136,7 +149,7 @@ export function createPictureWords(canvas, view) {
     if (next) view.select(next.x, next.y); // the inspector (or the activity's verdict) says the pixel
   }
 
-  return {
+  const words = {
     details,
     description,
     /** The scene, camera or mode changed: describe it again (in the next task, or later when it changes every frame). */
@@ -166,7 +179,8 @@ export function createPictureWords(canvas, view) {
     },
     /** The engine tracing now: on the GPU the arrow keys turn the camera until a pixel is selected (gpu-orbit.js); the name says so. */
     engine(engine) {
-      stageElement?.setAttribute('aria-label', KEYS[engine] ?? KEYS.cpu);
+      engineNow = engine;
+      stageElement?.setAttribute('aria-label', `${KEYS[engine] ?? KEYS.cpu}${sceneView3d() ? `; ${VIEW3D_KEY}: the 3D view` : ''}`);
     },
     destroy() {
       clearTimeout(timer);
@@ -174,7 +188,11 @@ export function createPictureWords(canvas, view) {
       voice.destroy();
     },
   };
+  return words;
 }
+
+/** The page's 3D view of the scene, if it has one. */
+const sceneView3d = () => /** @type {HTMLElement|null} */ (document.querySelector('[data-view3d]'));
 
 /** "every other", "every 3rd", "every 4th": which rows a tall picture's text reads. */
 const everyNth = (n) => (n === 2 ? 'every other' : `every ${n}${(n % 100 > 10 && n % 100 < 14) ? 'th' : ({ 1: 'st', 2: 'nd', 3: 'rd' })[n % 10] ?? 'th'}`);
@@ -194,9 +212,20 @@ function earlierTwin(description) {
   return null;
 }
 
-/** Once a page: its first link, shown when focused, goes to the first picture (the picture takes the keys). */
+/**
+ * Once a page: its first link, "Skip to the picture". The first Tab into the
+ * page (the focus coming from outside it) goes on through it to the picture,
+ * so the picture is one key from the page's start; Shift+Tab back from the
+ * header stops on the link itself (no trap), and Enter on it goes to the picture.
+ * The page's `<main>`, which holds the picture, is a landmark named for it.
+ */
 function addSkipLink(canvas) {
   if (document.querySelector('[data-skip-to-picture]')) return;
   const link = element('a', { class: 'rt-skip-link', href: `#${canvas.id}`, 'data-skip-to-picture': '' }, 'Skip to the picture');
+  link.addEventListener('focus', (event) => { if (!event.relatedTarget && canvas.isConnected) canvas.focus(); });
   document.body.prepend(link);
+  queueMicrotask(() => { // once the view has put its picture on the page
+    const main = canvas.closest('main');
+    if (main && !main.hasAttribute('aria-label') && !main.hasAttribute('aria-labelledby')) main.setAttribute('aria-label', 'The picture and its panels');
+  });
 }

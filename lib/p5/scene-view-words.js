@@ -1,6 +1,8 @@
 /**
  * The 3D view in words: where it looks from, in its name and said once it
- * rests, so that turning it by keys or buttons is heard, not only seen.
+ * rests, so that turning it by keys or buttons is heard, not only seen. Every
+ * burst of keys is said, with the view's yaw and pitch (a turn that stays in
+ * one sector of words, or one against the pitch's limit, is heard too).
  * Yaw 0 looks from behind the eye the way the eye looks; yaw < 0 from its
  * right; pitch > 0 from above (lib/lesson/rays3d.js orbitCamera).
  */
@@ -38,7 +40,6 @@ export function orbitChanged(view, speak = true) {
 
 function createOrbitWords(view) {
   let voice = null; // made with the first orbit there is to say: a view without a canvas (yet) says nothing
-  let said = '';
   return (speak) => {
     const c = view.canvas;
     const orbit = c && c.dataset.yaw !== undefined ? { yaw: Number(c.dataset.yaw), pitch: Number(c.dataset.pitch) } : null;
@@ -46,7 +47,6 @@ function createOrbitWords(view) {
     const where = orbitWords(orbit);
     c.setAttribute('aria-label', `The scene in 3D, seen ${where}: ${KEYS}`);
     voice ??= createAnnouncer({ name: 'view3d' });
-    if (speak && where !== said) voice.say(`Seen ${where}.`);
-    said = where;
+    if (speak) voice.say(`Seen ${where}: yaw ${Math.round(orbit.yaw)}°, pitch ${Math.round(orbit.pitch)}°.`);
   };
 }

@@ -16,7 +16,8 @@ const browseKey = (key) => /^(Arrow(Up|Down|Left|Right)|Home|End|PageUp|PageDown
 const LEAF_ROLES = new Set(['button', 'textbox', 'checkbox', 'radio', 'combobox', 'slider', 'img', 'image', 'application', 'progressbar', 'spinbutton', 'switch', 'searchbox']);
 /** How a role is said (Chromium's role names to NVDA's words). */
 const ROLE_WORDS = { img: 'graphic', image: 'graphic', textbox: 'edit', button: 'button', link: 'link', checkbox: 'check box',
-  heading: 'heading', application: 'application', slider: 'slider', progressbar: 'progress bar', combobox: 'combo box' };
+  heading: 'heading', application: 'application', slider: 'slider', progressbar: 'progress bar', combobox: 'combo box',
+  main: 'main landmark' };
 
 export const countWords = (text) => String(text).split(/\s+/).filter((w) => /[\p{L}\p{N}]/u.test(w)).length;
 
