@@ -10,9 +10,11 @@ const executablePath = findBrowser() ?? undefined;
 // Specs that only read pages, run on the built site (the dev server's own ways, hot swap and
 // the mistakes panel, stay with the dev server).
 const BUILT_SPECS = ['**/layout.spec.js', '**/access.spec.js', '**/projector.spec.js'];
-// npm run test:quick (RT_QUICK=1): one smoke page of each kind, on the dev server, no build.
+// npm run test:quick (RT_QUICK=1): one smoke page of each kind, on the dev server, no build: the
+// axe test of the gallery, a lesson, a homework, the web editor and the teacher's page; the API
+// reference (axe takes a minute on its long page) by its narrow-window test.
 const QUICK = Boolean(process.env.RT_QUICK);
-const QUICK_PAGES = /axe: .* on (\/|\/sketches\/01-rays-through-pixels\.html|\/sketches\/08-homework-traffic-signal\.html|\/web-editor\.html|\/teacher\.html|\/api\/)(;|$)/;
+const QUICK_PAGES = /axe: .* on (\/|\/sketches\/01-rays-through-pixels\.html|\/sketches\/08-homework-traffic-signal\.html|\/web-editor\.html|\/teacher\.html)(;|$)|at 320 CSS px wide \/api\/ does not scroll sideways$/;
 const LIVE_SPECS = ['**/mistakes.spec.js', '**/saves.spec.js', '**/swaps.spec.js', '**/class-server.spec.js', '**/class-board.spec.js', '**/code-in-page-class.spec.js'];
 
 // Screenshots are of traced canvases only, at a pinned viewport, headless.
@@ -40,7 +42,7 @@ export default defineConfig({
   },
   // Live-coding tests write sketch files the dev server watches; the reloads
   // those saves cause must not reach other tests' pages: they run last, alone.
-  projects: QUICK ? [{ name: 'quick', testMatch: '**/access.spec.js', grep: QUICK_PAGES }] : [
+  projects: QUICK ? [{ name: 'quick', testMatch: ['**/access.spec.js', '**/layout.spec.js'], grep: QUICK_PAGES }] : [
     { name: 'built', testMatch: BUILT_SPECS, use: { baseURL: `http://localhost:${BUILT_PORT}` } },
     { name: 'pages', testIgnore: [...LIVE_SPECS, ...BUILT_SPECS] },
     { name: 'live', testMatch: LIVE_SPECS, dependencies: ['pages', 'built'], workers: 1, fullyParallel: false },
