@@ -165,13 +165,16 @@ function checkLights(lights) {
   }
 }
 
-/** The numbers the tracers read from a light source: where it is and what it gives off. */
+/**
+ * The numbers the tracers read from a light source: where it is and what it
+ * gives off (a light's colour × intensity, so past MAX_COLOR, but finite and not negative).
+ */
 function checkSource(l) {
   const { position: p, emission: e } = l;
   finiteNumber(p.x, 'position.x'); finiteNumber(p.y, 'position.y'); finiteNumber(p.z, 'position.z');
-  if (!isColor(e)) {
-    toColor(e, 'emission'); // throws, naming the bad number
-    throw new TypeError(`emission must be [r, g, b], got ${show(e)}`);
+  if (!(Array.isArray(e) || ArrayBuffer.isView(e)) || /** @type {ArrayLike<number>} */ (e).length !== 3) throw new TypeError(`emission must be [r, g, b], got ${show(e)}`);
+  for (let c = 0; c < 3; c++) {
+    if (!(finiteNumber(e[c], `emission[${c}]`) >= 0)) throw new RangeError(`emission[${c}] must not be negative, got ${e[c]}`);
   }
 }
 

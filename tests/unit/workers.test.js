@@ -3,7 +3,7 @@ import { ParallelRenderer, splitRows, bandHeight, claimHeight } from '../../lib/
 import { workerHandler, REPORT_MS } from '../../lib/tracing/workers/split.js';
 import { fakeWorkers, silentWorker } from './fake-workers.js';
 import { sceneToJSON, cameraToJSON } from '../../lib/scene/json.js';
-import { render, Camera, Scene, Sphere, Plane, Box, PointLight, classScene, classSceneAt } from '../../lib/index.js';
+import { render, Camera, Scene, Sphere, Plane, Box, PointLight, Material, classScene, classSceneAt } from '../../lib/index.js';
 
 describe('splitRows', () => {
   it('puts every row in exactly one band, for many heights, worker counts and band sizes', () => {
@@ -158,7 +158,7 @@ describe('ParallelRenderer', () => {
     const fake = fakeWorkers();
     const parallel = new ParallelRenderer({ workers: 2, createWorker: fake.create });
     const scene = classScene();
-    scene.objects.push({ hit: () => Infinity, material: { isEmissive: false } });
+    scene.objects.push({ hit: () => Infinity, material: new Material() }); // a shape of the sketch's own: it traces, but has no JSON
     await expect(parallel.render(scene, new Camera({ width: 4, height: 4 }))).rejects.toThrow(/spheres, planes, boxes or point lights/);
     await expect(parallel.render(classScene(), { width: 4, height: 4 })).rejects.toThrow(/camera must be a Camera/);
     expect(fake.started.length).toBe(0);
