@@ -188,7 +188,7 @@ function surfacePhrase(s) {
   return article(`${colorOf(s.object)} ${s.surface}`);
 }
 
-/** "pink sphere", "white mirror sphere", "glowing yellow sphere (a light)", "orange sphere called yellow". */
+/** "pink sphere", "white mirror sphere", "glowing yellow sphere (a light)", "orange sphere called sun". */
 function nounPhrase(o) {
   const m = o.material, color = colorOf(o), kind = kindOf(o);
   if (m.isEmissive) return `glowing ${color} ${kind} (a light)`;
@@ -210,8 +210,14 @@ function kindOf(o) {
   return kind === 'object' ? 'shape' : kind;
 }
 
-/** A shape's colour name: its glow for a light, else its surface colour. */
+/**
+ * A shape's colour name: the colour it is named by, when the sketch named it so (the class's
+ * "yellow" sphere, whose surface is nearest orange, is yellow in the description as in the
+ * inspector and the verdict: one name a sphere); else its glow for a light, else its surface colour.
+ */
 function colorOf(o) {
+  const name = typeof o.name === 'string' ? o.name.trim().toLowerCase().replace(/^grey$/, 'gray') : '';
+  if (COLOR_NAMES.includes(name)) return name;
   const m = o.material;
   return colorWord(m.isEmissive ? m.emission : m.color);
 }

@@ -10,7 +10,7 @@ describe('describeScene', () => {
     expect(text).toMatch(/^A pink sphere in the middle; /);
     expect(text).toContain('a white sphere on the left');
     expect(text).toContain('a blue sphere on the right, behind the pink sphere');
-    expect(text).toContain('an orange sphere called yellow on the right');
+    expect(text).toContain('a yellow sphere on the right'); // named yellow: one colour name a sphere, the inspector's and the verdict's
     expect(text).toContain('a gray floor, on a white background.');
     expect(text).toMatch(/Two lights\.$/);
     expect(text).not.toContain('out of view'); // the emissive spheres count as lights
