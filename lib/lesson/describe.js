@@ -215,7 +215,7 @@ function kindOf(o) {
  * "yellow" sphere, whose surface is nearest orange, is yellow in the description as in the
  * inspector and the verdict: one name a sphere); else its glow for a light, else its surface colour.
  */
-export function colorOf(o) {
+function colorOf(o) {
   const name = typeof o.name === 'string' ? o.name.trim().toLowerCase().replace(/^grey$/, 'gray') : '';
   if (COLOR_NAMES.includes(name)) return name;
   const m = o.material;
