@@ -58,7 +58,7 @@ for (const [width, height] of SIZES) {
 
 // One test per sketch (each opens it at three sizes), so that two workers share them.
 for (const [file, diagram] of [['03-the-geometric-approach', '#diagram > canvas'], ['06-lights-shadows-reflections'], ['05-value-boxes']]) {
-  test(`${file}: on a 1920 px screen the text, the pictures${diagram ? ' and the diagrams' : ''} are bigger than at 1280 px; at 1024 px the text is not smaller`, async ({ page }) => {
+  test(`${file}: on a 1920 px screen the text${diagram ? ', the pictures and the diagrams' : ' and the pictures'} are bigger than at 1280 px; at 1024 px the text is not smaller`, async ({ page }) => {
     const measure = async () => {
       const view = await openAndSelect(page, file);
       return {
