@@ -56,30 +56,31 @@ for (const [width, height] of SIZES) {
   });
 }
 
-test('on a 1920 px screen the text, the pictures and the diagrams are bigger than at 1280 px; at 1024 px the text is not smaller', async ({ page }) => {
-  const measure = async (file, diagram) => {
-    const view = await openAndSelect(page, file);
-    return {
-      rem: await page.evaluate(() => parseFloat(getComputedStyle(document.documentElement).fontSize)),
-      label: await page.locator('h1').evaluate((h) => parseFloat(getComputedStyle(h).fontSize)),
-      picture: (await view.boundingBox()).width,
-      diagram: diagram ? (await page.locator(diagram).first().boundingBox()).width : 0,
+// One test per sketch (each opens it at three sizes), so that two workers share them.
+for (const [file, diagram] of [['03-the-geometric-approach', '#diagram > canvas'], ['06-lights-shadows-reflections'], ['05-value-boxes']]) {
+  test(`${file}: on a 1920 px screen the text${diagram ? ', the pictures and the diagrams' : ' and the pictures'} are bigger than at 1280 px; at 1024 px the text is not smaller`, async ({ page }) => {
+    const measure = async () => {
+      const view = await openAndSelect(page, file);
+      return {
+        rem: await page.evaluate(() => parseFloat(getComputedStyle(document.documentElement).fontSize)),
+        label: await page.locator('h1').evaluate((h) => parseFloat(getComputedStyle(h).fontSize)),
+        picture: (await view.boundingBox()).width,
+        diagram: diagram ? (await page.locator(diagram).first().boundingBox()).width : 0,
+      };
     };
-  };
-  for (const [file, diagram] of [['03-the-geometric-approach', '#diagram > canvas'], ['06-lights-shadows-reflections'], ['05-value-boxes']]) {
     await page.setViewportSize({ width: 1280, height: 900 });
-    const usual = await measure(file, diagram);
+    const usual = await measure();
     expect(usual.rem).toBe(16);
     await page.setViewportSize({ width: 1920, height: 1080 });
-    const big = await measure(file, diagram);
+    const big = await measure();
     expect(big.rem, file).toBeGreaterThan(20);
     expect(big.label / usual.label, file).toBeGreaterThan(1.25);
     expect(big.picture / usual.picture, file).toBeGreaterThan(1.2);
     if (diagram) expect(big.diagram / usual.diagram, file).toBeGreaterThan(1.2);
     await page.setViewportSize({ width: 1024, height: 768 });
-    expect((await measure(file, diagram)).rem).toBe(16);
-  }
-});
+    expect((await measure()).rem).toBe(16);
+  });
+}
 
 test('the Projector switch makes the text bigger, keeps the panel beside the picture, and is remembered on the next page', async ({ page }) => {
   const view = await openAndSelect(page, '06-lights-shadows-reflections');
