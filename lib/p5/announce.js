@@ -39,12 +39,16 @@ function pageVoice() {
 }
 
 /**
- * Has the student done anything on this page yet? Heard from the page's start
- * (a voice made on the first key must say what that key did), capturing (a
- * handler that stops an event does not hide it).
+ * Has the student done anything on this page yet? Heard from the first part
+ * of the voice on (made as the page's views are made, before any key: a voice
+ * made on the first key must say what that key did), capturing (a handler
+ * that stops an event does not hide it). Not at import: importing the kit
+ * touches no page.
  */
-let studentActed = typeof document === 'undefined';
-if (!studentActed) {
+let studentActed = typeof document === 'undefined', listening = false;
+function listenForTheStudent() {
+  if (studentActed || listening) return;
+  listening = true;
   const acted = () => {
     studentActed = true;
     for (const type of STUDENT_EVENTS) document.removeEventListener(type, acted, true);
@@ -79,6 +83,7 @@ function speak(v) {
  * view.onSelect(() => voice.say('d > r: the ray passes the sphere by.'));
  */
 export function createAnnouncer({ name = '', order = 0, speaksFor = '', delay = ANNOUNCE_DELAY_MS } = {}) {
+  listenForTheStudent();
   const last = element('p', { hidden: '', 'data-announce': name });
   const v = pageVoice();
   v.status.before(last); // on the page beside the voice, unless its part puts it in its own place
