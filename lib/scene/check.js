@@ -34,7 +34,13 @@ export function checkScene(scene) {
   }
   if (!Array.isArray(scene.objects)) throw new TypeError(`scene.objects must be a list of shapes, got ${show(scene.objects)}`);
   if (!Array.isArray(scene.lights)) throw new TypeError(`scene.lights must be a list of light sources, got ${show(scene.lights)}`);
-  for (let i = 0; i < scene.objects.length; i++) checkShape(scene.objects[i], i);
+  for (let i = 0; i < scene.objects.length; i++) {
+    try {
+      checkShape(scene.objects[i], i);
+    } catch (error) {
+      throw alsoAsShapes(error, i);
+    }
+  }
   checkLights(scene.lights);
 }
 /**
@@ -179,6 +185,18 @@ function checkSource(l) {
 }
 
 /** Throws `error` again with `prefix` in front of its message (as withPath does), keeping its kind. */
+/**
+ * A shape's mistake also by the path through `scene.shapes` (the same list as
+ * `scene.objects`, whose name the scene's JSON and the earlier messages use):
+ * "objects[2].radius must be … (scene.shapes[2].radius)".
+ */
+function alsoAsShapes(error, i) {
+  const path = new RegExp(`^objects\\[${i}\\]((?:\\.\\w+)*)`).exec(error?.message ?? '');
+  if (!path || !(error instanceof TypeError || error instanceof RangeError)) return error;
+  const Kind = error instanceof TypeError ? TypeError : RangeError;
+  return new Kind(`${error.message} (scene.shapes[${i}]${path[1]})`, { cause: error });
+}
+
 function named(error, prefix) {
   withPath(() => { throw error; }, prefix);
 }

@@ -68,6 +68,11 @@ export class Scene {
     return this;
   }
 
+  /** The scene's shapes, in order: `objects` by the name the tracers' messages use (`shapes[2].radius`). */
+  get shapes() {
+    return this.objects;
+  }
+
   /** Every sphere (every ball), in order: the inspector tests each of them by both routes. */
   get spheres() {
     return this.objects.filter((o) => ballOf(o) !== null);

@@ -159,3 +159,12 @@ describe('unknown options name the key and the closest known one', () => {
     expect(() => inspectPath(scene, cam, 1, 1, { sample: 70000 })).toThrow(/^sample must be a whole number from 0 to 65535 when samples is left out/);
   });
 });
+
+describe('a shape\'s field is named by both of the scene\'s lists of shapes', () => {
+  it.each(Object.keys(TRACERS))('%s: objects[2].radius is also scene.shapes[2].radius, the same shape', (name) => {
+    const scene = classScene();
+    expect(scene.shapes).toBe(scene.objects);
+    scene.shapes[2].radius = NaN;
+    expect(() => TRACERS[name](scene, camera())).toThrow(/^objects\[2\]\.radius must be a finite number, got NaN \(scene\.shapes\[2\]\.radius\)$/);
+  });
+});
