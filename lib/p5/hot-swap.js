@@ -35,14 +35,15 @@ const lasting = new Set();
  * The page as the sketch can change it: body, head and title, less what the
  * kit adds once per page and keeps (its stylesheet, the Projector switch,
  * the mistake panel, body[data-render]; the code editor, whose text the student changes;
- * the page's one voice for screen readers, its "Skip to the picture" link and the class
- * board's bar, made once and kept).
+ * the page's one voice for screen readers, its "Skip to the picture" link, the name it
+ * gives the page's <main> and the class board's bar, made once and kept).
  */
 function pageNow() {
   const markup = new XMLSerializer(); // reads the page as text, parses nothing
   const body = /** @type {HTMLElement} */ (document.body.cloneNode(true));
   body.removeAttribute('data-render');
   body.querySelectorAll('[data-error], [data-sketchbook-ghost], [data-projector], [data-code-panel], [data-code-frames], [data-announce="page"], [data-skip-to-picture], [data-class-bar]').forEach((e) => e.remove());
+  body.querySelectorAll('[data-sketchbook-named]').forEach((e) => { e.removeAttribute('aria-label'); e.removeAttribute('data-sketchbook-named'); });
   withoutHolds(body); // the sizes last-picture.js holds while the sketch is away
   const head = [...document.head.children]
     .filter((e) => !e.matches('link[data-sketchbook], style#p5-loading-style, style[data-vite-dev-id]'))

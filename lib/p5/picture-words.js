@@ -226,6 +226,8 @@ function addSkipLink(canvas) {
   document.body.prepend(link);
   queueMicrotask(() => { // once the view has put its picture on the page
     const main = canvas.closest('main');
-    if (main && !main.hasAttribute('aria-label') && !main.hasAttribute('aria-labelledby')) main.setAttribute('aria-label', 'The picture and its panels');
+    if (!main || main.hasAttribute('aria-label') || main.hasAttribute('aria-labelledby')) return;
+    main.setAttribute('aria-label', 'The picture and its panels');
+    main.dataset.sketchbookNamed = ''; // the kit's name, kept through a save (hot-swap.js leaves it out of its page check)
   });
 }
