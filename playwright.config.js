@@ -9,7 +9,7 @@ const BUILT_PORT = Number(process.env.PW_BUILT_PORT ?? PORT + 1);
 const executablePath = findBrowser() ?? undefined;
 // Specs that only read pages, run on the built site (the dev server's own ways, hot swap and
 // the mistakes panel, stay with the dev server).
-const BUILT_SPECS = ['**/layout.spec.js', '**/access.spec.js', '**/projector.spec.js', '**/gallery.spec.js'];
+const BUILT_SPECS = ['**/layout.spec.js', '**/access.spec.js', '**/projector.spec.js', '**/gallery.spec.js', '**/hostile-links.spec.js', '**/blind-walk.spec.js'];
 // npm run test:quick (RT_QUICK=1): one smoke page of each kind, on the dev server, no build: the
 // axe test of the gallery, a lesson, a homework, the web editor and the teacher's page; the API
 // reference (axe takes a minute on its long page) by its narrow-window test.
