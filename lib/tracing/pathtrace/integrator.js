@@ -154,8 +154,9 @@ function directLight(frame, m, entry) {
   const pdf = aim[L_PDF], cos = surface[N] * aim[0] + surface[N + 1] * aim[1] + surface[N + 2] * aim[2];
   if (!(pdf > 0) || !(cos > 0)) { if (entry) recordLight(entry, frame, -2, 0, 0); return; } // behind the surface: no light this way
   path[0] = from[0]; path[1] = from[1]; path[2] = from[2]; path[3] = aim[0]; path[4] = aim[1]; path[5] = aim[2];
-  const hit = nearestHit(frame), target = lights.table[aim[L_SLOT] * LIGHT + SHAPE_INDEX]; // the sky's shape index is −1: nothing hit
-  if (hit !== target) { if (entry) recordLight(entry, frame, hit, 0, 0); return; }
+  const target = lights.table[aim[L_SLOT] * LIGHT + SHAPE_INDEX]; // the sky's shape index is −1
+  const blocker = shadowBlocker(frame, target);
+  if (blocker >= 0) { if (entry) recordLight(entry, frame, nearestBlocker(frame, blocker), 0, 0); return; }
   const bsdfPdf = cos / Math.PI, weight = (pdf * pdf) / (pdf * pdf + bsdfPdf * bsdfPdf), k = (bsdfPdf * weight) / pdf;
   const glow = target * MATERIAL + EMISSION, sky = frame.sky, t = 0.5 * (aim[1] + 1);
   for (let c = 0; c < 3; c++) {
@@ -163,6 +164,69 @@ function directLight(frame, m, entry) {
     radiance[c] += throughput[c] * materials[m + COLOR + c] * light * k;
   }
   if (entry) recordLight(entry, frame, -1, weight, k);
+}
+
+/**
+ * The shadow ray along `path`: a shape other than the light `target` that it
+ * meets before the point drawn on the light (aim[L_DISTANCE]; Infinity for
+ * the sky), or −1. A question of yes or no, not of the nearest: it stops at the
+ * first blocker, the light itself is not tested, and the kinds most likely to
+ * stand in the way (boxes and balls) are asked before the walls (planes).
+ */
+function shadowBlocker(frame, target) {
+  shadow[0] = aim[L_DISTANCE] * (1 - 1e-9); shadow[1] = -1; // a hair short of the light: its own face is no blocker
+  const groups = frame.groups;
+  if (groups === null) apart(anyBlocker, frame, target);
+  else {
+    if (groups.boxes.length) apart(boxBlockers, frame, groups.boxes, target);
+    if (shadow[1] < 0 && groups.spheres.length) apart(sphereBlockers, frame, groups.spheres, target);
+    if (shadow[1] < 0 && groups.others.length) apart(otherBlockers, frame, groups.others, target);
+    if (shadow[1] < 0 && groups.planes.length) apart(planeBlockers, frame, groups.planes, target);
+  }
+  return shadow[1];
+}
+
+/** The shadow ray's reach (its t must stay under it) and the blocker found (−1: none yet). */
+const shadow = pathNumbers(2);
+
+function boxBlockers(frame, list, target) {
+  const shapes = frame.packed.shapes, tMin = frame.scene.epsilon, reach = shadow[0];
+  for (let n = 0; n < list.length; n++) {
+    const i = list[n];
+    if (i !== target && boxHit(shapes, i * SHAPE, path[0], path[1], path[2], path[3], path[4], path[5], tMin) < reach) { shadow[1] = i; return; }
+  }
+}
+function sphereBlockers(frame, list, target) {
+  const shapes = frame.packed.shapes, tMin = frame.scene.epsilon, reach = shadow[0];
+  for (let n = 0; n < list.length; n++) {
+    const i = list[n];
+    if (i !== target && sphereHit(shapes, i * SHAPE, path[0], path[1], path[2], path[3], path[4], path[5], tMin) < reach) { shadow[1] = i; return; }
+  }
+}
+function planeBlockers(frame, list, target) {
+  const shapes = frame.packed.shapes, tMin = frame.scene.epsilon, reach = shadow[0];
+  for (let n = 0; n < list.length; n++) {
+    const i = list[n];
+    if (i !== target && planeHit(shapes, i * SHAPE, path[0], path[1], path[2], path[3], path[4], path[5], tMin) < reach) { shadow[1] = i; return; }
+  }
+}
+function otherBlockers(frame, list, target) {
+  const packed = frame.packed, tMin = frame.scene.epsilon, reach = shadow[0];
+  for (let n = 0; n < list.length; n++) {
+    const i = list[n];
+    if (i !== target && packed.hit(packed.shapes, i * SHAPE, path[0], path[1], path[2], path[3], path[4], path[5], tMin) < reach) { shadow[1] = i; return; }
+  }
+}
+function anyBlocker(frame, target) {
+  const objects = frame.objects, tMin = frame.scene.epsilon, o = ray.origin, d = ray.direction, reach = shadow[0];
+  o.x = path[0]; o.y = path[1]; o.z = path[2]; d.x = path[3]; d.y = path[4]; d.z = path[5];
+  for (let i = 0; i < objects.length; i++) if (i !== target && objects[i].hit(ray, tMin) < reach) { shadow[1] = i; return; }
+}
+
+/** The inspector's blocker: the nearest shape along the shadow ray, when it is not the light (else the one found). */
+function nearestBlocker(frame, found) {
+  const nearestIndex = nearestHit(frame);
+  return nearestIndex >= 0 && nearestIndex !== frame.lights.table[aim[L_SLOT] * LIGHT + SHAPE_INDEX] ? nearestIndex : found;
 }
 
 /** Why a bounce drew no light sample (the inspector's). */

@@ -132,54 +132,54 @@ function sampleSphere(table, at, from, u, out) {
   towardPoint(out, from, target);
 }
 
-/** Scratch: a point drawn on a light, its normal, the area it was drawn over; a box's visible area. */
-const target = new Float64Array(7), visible = new Float64Array(1);
+/** Scratch: a point drawn on a light, its normal, the area it was drawn over; the area of each face of a box that faces the point (min x, max x, min y, …; 0: turned away), and their sum. */
+const target = new Float64Array(7), faces = new Float64Array(7), VISIBLE = 6;
 
 /** A box: one of the faces that face the point (all six from inside), picked by area, and a point uniform on it. */
 function sampleBox(table, at, from, u, out) {
-  visibleArea(table, at, from, visible);
-  if (!(visible[0] > 0)) return;
-  let pick = u[1] * visible[0], lastAxis = 0, lastHigh = 0;
-  for (let axis = 0; axis < 3; axis++) {
-    const b = (axis + 1) % 3, c = (axis + 2) % 3;
-    const area = (table[at + G + 3 + b] - table[at + G + b]) * (table[at + G + 3 + c] - table[at + G + c]);
-    for (let high = 0; high < 2; high++) {
-      if (!faceVisible(table, at, from, axis, high) || !(area > 0)) continue;
-      if (pick < area) { boxFacePoint(table, at, from, u, out, axis, high); return; }
-      pick -= area; lastAxis = axis; lastHigh = high;
-    }
+  facingAreas(table, at, from);
+  if (!(faces[VISIBLE] > 0)) return;
+  let pick = u[1] * faces[VISIBLE], last = 0;
+  for (let face = 0; face < 6; face++) {
+    const area = faces[face];
+    if (!(area > 0)) continue;
+    if (pick < area) { boxFacePoint(table, at, from, u, out, face); return; }
+    pick -= area; last = face;
   }
-  boxFacePoint(table, at, from, u, out, lastAxis, lastHigh); // rounding left a sliver past the last face
+  boxFacePoint(table, at, from, u, out, last); // rounding left a sliver past the last face
 }
 
-/** A point uniform on face `high` across `axis`, drawn over the visible area (in `visible[0]`), into `target`, and the direction to it. */
-function boxFacePoint(table, at, from, u, out, axis, high) {
-  const b = (axis + 1) % 3, c = (axis + 2) % 3;
+/** A point uniform on `face` (2 · axis + 1 for the max side), drawn over the facing area, into `target`, and the direction to it. */
+function boxFacePoint(table, at, from, u, out, face) {
+  const axis = face >> 1, high = face & 1, b = axis === 2 ? 0 : axis + 1, c = axis === 0 ? 2 : axis - 1;
   target[axis] = table[at + G + 3 * high + axis];
   target[b] = table[at + G + b] + u[2] * (table[at + G + 3 + b] - table[at + G + b]);
   target[c] = table[at + G + c] + u[3] * (table[at + G + 3 + c] - table[at + G + c]);
   target[3] = target[4] = target[5] = 0; target[3 + axis] = 1;
-  target[6] = visible[0];
+  target[6] = faces[VISIBLE];
   towardPoint(out, from, target);
 }
 
-/** Whether face `high` (0: min, 1: max) across `axis` faces the point (every face does from inside the box). */
-function faceVisible(table, at, from, axis, high) {
-  const p = from[axis], lo = table[at + G + axis], hi = table[at + G + 3 + axis];
-  if (high === 1 ? p > hi : p < lo) return true;
-  for (let k = 0; k < 3; k++) if (from[k] < table[at + G + k] || from[k] > table[at + G + 3 + k]) return false;
-  return true; // inside
-}
-
-/** The area of the box's faces that face the point, into `area[0]`. */
-function visibleArea(table, at, from, area) {
+/**
+ * The area of each face of the box that faces the point, into `faces` (0 for
+ * the others), and their sum into faces[VISIBLE]. Outside the box, the face of
+ * an axis that faces the point is the one on its side, if it is past it; from
+ * inside, all six.
+ */
+function facingAreas(table, at, from) {
+  const g = at + G;
+  let outside = false;
+  for (let k = 0; k < 3; k++) if (from[k] < table[g + k] || from[k] > table[g + 3 + k]) outside = true;
   let sum = 0;
   for (let axis = 0; axis < 3; axis++) {
-    const b = (axis + 1) % 3, c = (axis + 2) % 3;
-    const face = (table[at + G + 3 + b] - table[at + G + b]) * (table[at + G + 3 + c] - table[at + G + c]);
-    for (let high = 0; high < 2; high++) if (faceVisible(table, at, from, axis, high)) sum += face;
+    const b = axis === 2 ? 0 : axis + 1, c = axis === 0 ? 2 : axis - 1, p = from[axis];
+    const area = (table[g + 3 + b] - table[g + b]) * (table[g + 3 + c] - table[g + c]);
+    const low = !outside || p < table[g + axis], high = !outside || p > table[g + 3 + axis];
+    faces[2 * axis] = low ? area : 0; faces[2 * axis + 1] = high ? area : 0;
+    if (low) sum += area;
+    if (high) sum += area;
   }
-  area[0] = sum;
+  faces[VISIBLE] = sum;
 }
 
 /** The direction to the point `p[0 …]` on a light, of normal `p[3 …]`, drawn uniformly over the area `p[6]`: density distance² / (|cos| · area) in solid angle. */
@@ -233,8 +233,8 @@ export function lightPdf(lights, slot, ray, hit, out) {
     const hx = hit[0] - ray[0], hy = hit[1] - ray[1], hz = hit[2] - ray[2], distance2 = hx * hx + hy * hy + hz * hz;
     if (!(cos > 0)) return;
     if (kind === BOX_LIGHT) {
-      visibleArea(table, at, ray, visible);
-      pdf = distance2 / (cos * visible[0]);
+      facingAreas(table, at, ray);
+      pdf = distance2 / (cos * faces[VISIBLE]);
     } else {
       const wx = table[at + G] - ray[0], wy = table[at + G + 1] - ray[1], wz = table[at + G + 2] - ray[2], r = table[at + G + 3];
       const d2 = wx * wx + wy * wy + wz * wz;
