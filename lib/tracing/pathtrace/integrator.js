@@ -17,7 +17,7 @@
  */
 import { Ray } from '../../math/ray.js';
 import { Vec3 } from '../../math/vec3.js';
-import { scatter, MATERIAL, COLOR, EMISSION, P, N, D, INSIDE, SURFACE, DIRECTION, COS, WEIGHT, PDF, LOBE, BELOW, EVENT, DIFFUSE, METAL, ABSORBED, LOBE_NAMES } from './materials.js';
+import { scatter, metalDensity, MATERIAL, COLOR, EMISSION, FUZZ, AIMED_FUZZ, P, N, D, INSIDE, SURFACE, DIRECTION, COS, WEIGHT, PDF, LOBE, BELOW, EVENT, DIFFUSE, METAL, ABSORBED, LOBE_NAMES } from './materials.js';
 import { skyLight } from './sky.js';
 import { sampleLight, lightPdf, LIGHT, SHAPE_INDEX, L_SLOT, L_PDF, L_POINT, L_DISTANCE, LIGHT_SAMPLE } from './lights.js';
 import { shapeName } from '../../scene/scene.js';
@@ -96,12 +96,14 @@ export function tracePath(frame, x, y, s, record) {
     if (bounce >= maxBounces) break;
 
     scatter(materials, m, random, surface, event);
-    if (event[LOBE] === ABSORBED) { why = 'absorbed'; break; }
     mis[BSDF_PDF] = 0;
-    if (aiming && event[LOBE] === DIFFUSE) { // next-event estimation: one shadow ray toward a light, weighed against this bounce
-      apart(directLight, frame, m, record ? bounceRecord : null);
-      mis[BSDF_PDF] = event[COS] / Math.PI;
-    } else if (record && frame.lightSampling) bounceRecord.lightSkipped = skippedWhy(lights, event[LOBE]);
+    const lobe = event[LOBE], metal = lobe === METAL || lobe === ABSORBED; // (only a fuzzed metal ray is absorbed)
+    if (aiming && (lobe === DIFFUSE || (metal && materials[m + FUZZ] >= AIMED_FUZZ))) { // next-event estimation: one shadow ray toward a light, weighed against this bounce
+      apart(directLight, frame, m, record ? bounceRecord : null, metal ? 1 : 0); // (also when the metal's own ray is absorbed: the light it would have aimed at is counted on average)
+      if (lobe === DIFFUSE) mis[BSDF_PDF] = event[COS] / Math.PI;
+      else if (lobe === METAL) { apart(metalDensity, materials, m, surface, event, density); mis[BSDF_PDF] = density[0]; }
+    } else if (record && frame.lightSampling) bounceRecord.lightSkipped = skippedWhy(lights, lobe);
+    if (lobe === ABSORBED) { why = 'absorbed'; break; }
     for (let c = 0; c < 3; c++) throughput[c] *= event[WEIGHT + c];
     const brightest = Math.max(throughput[0], throughput[1], throughput[2]);
     if (brightest <= 0) { why = 'absorbed'; break; }
@@ -139,14 +141,16 @@ function weighEmission(frame, index) {
 }
 
 /**
- * Next-event estimation at a diffuse hit (the material at `m`): one light
- * picked by power, a direction toward it, one shadow ray; if the light is
- * the first thing the ray meets, its light × the diffuse BSDF (colour/π) × cos
- * / the sampler's density, weighed by the power heuristic against the density
- * the bounce would have drawn the same direction with (cos/π). Overwrites
+ * Next-event estimation at a diffuse or fuzzy metal hit (the material at
+ * `m`; `metal` 1 for the metal): one light picked by power, a direction
+ * toward it, one shadow ray; if nothing stands before the light, its light ×
+ * the BSDF × cos / the sampler's density, weighed by the power heuristic
+ * against the density the bounce would have drawn the same direction with.
+ * For both lobes BSDF × cos is the colour × that density: cos/π for the
+ * diffuse one, the fuzz ball's share for the metal (materials.js). Overwrites
  * `path` (the loop sets the next ray after). `entry` the inspector's bounce, or null.
  */
-function directLight(frame, m, entry) {
+function directLight(frame, m, entry, metal) {
   const lights = frame.lights, bias = frame.scene.bias, materials = frame.materials;
   from[0] = surface[P] + surface[N] * bias; from[1] = surface[P + 1] + surface[N + 1] * bias; from[2] = surface[P + 2] + surface[N + 2] * bias;
   frame.random.draw(lightU, 4);
@@ -157,7 +161,9 @@ function directLight(frame, m, entry) {
   const target = lights.table[aim[L_SLOT] * LIGHT + SHAPE_INDEX]; // the sky's shape index is −1
   const blocker = shadowBlocker(frame, target);
   if (blocker >= 0) { if (entry) recordLight(entry, frame, nearestBlocker(frame, blocker), 0, 0); return; }
-  const bsdfPdf = cos / Math.PI, weight = (pdf * pdf) / (pdf * pdf + bsdfPdf * bsdfPdf), k = (bsdfPdf * weight) / pdf;
+  if (metal === 1) metalDensity(materials, m, surface, aim, density);
+  const bsdfPdf = metal === 1 ? density[0] : cos / Math.PI; // f·cos is colour × this density for both lobes
+  const weight = (pdf * pdf) / (pdf * pdf + bsdfPdf * bsdfPdf), k = (bsdfPdf * weight) / pdf;
   const glow = target * MATERIAL + EMISSION, sky = frame.sky, t = 0.5 * (aim[1] + 1);
   for (let c = 0; c < 3; c++) {
     const light = target < 0 ? t * sky[c] + (1 - t) * sky[c + 3] : materials[glow + c];
@@ -232,7 +238,7 @@ function nearestBlocker(frame, found) {
 /** Why a bounce drew no light sample (the inspector's). */
 function skippedWhy(lights, lobe) {
   if (lights.count === 0) return 'no light to aim at (lights are emissive spheres and boxes, and a gradient sky)';
-  if (lobe === METAL) return 'metal: its light comes from the bounce alone';
+  if (lobe === METAL) return 'metal without fuzz (a mirror): one direction only, its light comes from the bounce alone';
   return 'glass: one direction only, its light comes from the bounce alone';
 }
 

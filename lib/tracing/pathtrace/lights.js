@@ -132,54 +132,74 @@ function sampleSphere(table, at, from, u, out) {
   towardPoint(out, from, target);
 }
 
-/** Scratch: a point drawn on a light, its normal, the area it was drawn over; the area of each face of a box that faces the point (min x, max x, min y, …; 0: turned away), and their sum. */
-const target = new Float64Array(7), faces = new Float64Array(7), VISIBLE = 6;
+/**
+ * Scratch: a point drawn on a light, its normal, the area it was drawn over;
+ * for a box, the area of each face that faces the point (min x, max x, min y,
+ * …; 0: turned away) and the chance of picking it.
+ */
+const target = new Float64Array(7), faces = new Float64Array(6), chances = new Float64Array(6);
 
-/** A box: one of the faces that face the point (all six from inside), picked by area, and a point uniform on it. */
+/**
+ * A box: one of the faces that face the point (all six from inside), picked
+ * by the solid angle its centre suggests (area × cos / distance²: a face seen
+ * edge-on, the lamp's top seen from the ceiling, is seldom worth a shadow
+ * ray), and a point uniform on it.
+ */
 function sampleBox(table, at, from, u, out) {
-  facingAreas(table, at, from);
-  if (!(faces[VISIBLE] > 0)) return;
-  let pick = u[1] * faces[VISIBLE], last = 0;
+  if (!facingFaces(table, at, from)) return;
+  let pick = u[1], last = 0;
   for (let face = 0; face < 6; face++) {
-    const area = faces[face];
-    if (!(area > 0)) continue;
-    if (pick < area) { boxFacePoint(table, at, from, u, out, face); return; }
-    pick -= area; last = face;
+    const chance = chances[face];
+    if (!(chance > 0)) continue;
+    if (pick < chance) { boxFacePoint(table, at, from, u, out, face); return; }
+    pick -= chance; last = face;
   }
   boxFacePoint(table, at, from, u, out, last); // rounding left a sliver past the last face
 }
 
-/** A point uniform on `face` (2 · axis + 1 for the max side), drawn over the facing area, into `target`, and the direction to it. */
+/** A point uniform on `face` (2 · axis + 1 for the max side), into `target` with the area it was drawn over (the face's / its chance), and the direction to it. */
 function boxFacePoint(table, at, from, u, out, face) {
   const axis = face >> 1, high = face & 1, b = axis === 2 ? 0 : axis + 1, c = axis === 0 ? 2 : axis - 1;
   target[axis] = table[at + G + 3 * high + axis];
   target[b] = table[at + G + b] + u[2] * (table[at + G + 3 + b] - table[at + G + b]);
   target[c] = table[at + G + c] + u[3] * (table[at + G + 3 + c] - table[at + G + c]);
   target[3] = target[4] = target[5] = 0; target[3 + axis] = 1;
-  target[6] = faces[VISIBLE];
+  target[6] = faces[face] / chances[face];
   towardPoint(out, from, target);
 }
 
 /**
- * The area of each face of the box that faces the point, into `faces` (0 for
- * the others), and their sum into faces[VISIBLE]. Outside the box, the face of
- * an axis that faces the point is the one on its side, if it is past it; from
- * inside, all six.
+ * The faces of the box that face the point, into `faces` (their areas, 0 for
+ * the others) and `chances` (the chance of picking each, ∝ area × cos /
+ * distance² at its centre); false when none can be picked. Outside the box,
+ * the face of an axis that faces the point is the one on its side, if the
+ * point is past it; from inside, all six.
  */
-function facingAreas(table, at, from) {
+function facingFaces(table, at, from) {
   const g = at + G;
   let outside = false;
   for (let k = 0; k < 3; k++) if (from[k] < table[g + k] || from[k] > table[g + 3 + k]) outside = true;
   let sum = 0;
-  for (let axis = 0; axis < 3; axis++) {
-    const b = axis === 2 ? 0 : axis + 1, c = axis === 0 ? 2 : axis - 1, p = from[axis];
+  for (let face = 0; face < 6; face++) {
+    const axis = face >> 1, high = face & 1, b = axis === 2 ? 0 : axis + 1, c = axis === 0 ? 2 : axis - 1;
+    const plane = table[g + 3 * high + axis], gap = from[axis] - plane;
     const area = (table[g + 3 + b] - table[g + b]) * (table[g + 3 + c] - table[g + c]);
-    const low = !outside || p < table[g + axis], high = !outside || p > table[g + 3 + axis];
-    faces[2 * axis] = low ? area : 0; faces[2 * axis + 1] = high ? area : 0;
-    if (low) sum += area;
-    if (high) sum += area;
+    const facing = !outside || (high === 1 ? gap > 0 : gap < 0);
+    const db = 0.5 * (table[g + b] + table[g + 3 + b]) - from[b], dc = 0.5 * (table[g + c] + table[g + 3 + c]) - from[c];
+    const d2 = gap * gap + db * db + dc * dc, chance = facing && area > 0 ? (area * Math.abs(gap)) / (d2 * Math.sqrt(d2)) : 0;
+    faces[face] = facing ? area : 0; chances[face] = chance > 0 && chance < Infinity ? chance : 0;
+    sum += chances[face];
   }
-  faces[VISIBLE] = sum;
+  if (!(sum > 0) || sum === Infinity) return false;
+  for (let face = 0; face < 6; face++) chances[face] /= sum;
+  return true;
+}
+
+/** Which face of the box at `at` holds the point `p[0 …]` whose normal is `p[3 …]` (2 · axis + 1 for the max side). */
+function faceOf(table, at, p) {
+  const ax = Math.abs(p[3]), ay = Math.abs(p[4]), az = Math.abs(p[5]);
+  const axis = ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2, g = at + G;
+  return 2 * axis + (Math.abs(p[axis] - table[g + 3 + axis]) < Math.abs(p[axis] - table[g + axis]) ? 1 : 0);
 }
 
 /** The direction to the point `p[0 …]` on a light, of normal `p[3 …]`, drawn uniformly over the area `p[6]`: density distance² / (|cos| · area) in solid angle. */
@@ -233,8 +253,8 @@ export function lightPdf(lights, slot, ray, hit, out) {
     const hx = hit[0] - ray[0], hy = hit[1] - ray[1], hz = hit[2] - ray[2], distance2 = hx * hx + hy * hy + hz * hz;
     if (!(cos > 0)) return;
     if (kind === BOX_LIGHT) {
-      facingAreas(table, at, ray);
-      pdf = distance2 / (cos * faces[VISIBLE]);
+      const face = faceOf(table, at, hit);
+      pdf = facingFaces(table, at, ray) && chances[face] > 0 ? (distance2 * chances[face]) / (cos * faces[face]) : 0;
     } else {
       const wx = table[at + G] - ray[0], wy = table[at + G + 1] - ray[1], wz = table[at + G + 2] - ray[2], r = table[at + G + 3];
       const d2 = wx * wx + wy * wy + wz * wz;
