@@ -231,6 +231,21 @@ describe('a fuzzy metal\'s density', () => {
     expect(density(Math.sqrt(1 - fuzz * fuzz) - 1e-6)).toBe(0);
   });
 
+  it('a lamp\'s blurred highlight on a brushed ball: the same with and without light sampling, less noisy, not counted twice', () => {
+    const scene = new Scene({ background: [0, 0, 0] })
+      .add(new Plane([0, -1.5, 0], [0, 1, 0], { color: [0.3, 0.3, 0.3] }))
+      .add(new Sphere([0, 0, -6], 1.5, { color: [0.9, 0.9, 0.9], reflection: 1, fuzz: 0.3, name: 'brushed' }))
+      .add(new Sphere([0, 4, -2], 0.4, { color: [0, 0, 0], emission: [30, 30, 30], name: 'lamp' }));
+    const camera = new Camera({ width: 8, height: 8, fov: 30 });
+    for (const [x, y] of [[3, 2], [4, 1]]) { // in the highlight
+      const on = inspectPath(scene, camera, x, y, { samples: 2048, maxBounces: 2 });
+      const off = inspectPath(scene, camera, x, y, { samples: 2048, maxBounces: 2, lightSampling: false, seed: 1 });
+      expect(on.bounces[0].lightSample.light).toBe('lamp');
+      expect(Math.abs(on.unclamped[0] - off.unclamped[0]), `pixel ${x},${y}`).toBeLessThanOrEqual(4 * Math.hypot(on.stderr[0], off.stderr[0]));
+      expect(on.stderr[0]).toBeLessThan(off.stderr[0]);
+    }
+  });
+
   it('matches where scatter\'s metal directions fall (cos to r, five caps)', () => {
     const random = new PathRandom().start(9, 0, 0, 0), event = new Float64Array(EVENT), draws = 40000, cosines = [];
     let metal = 0;
