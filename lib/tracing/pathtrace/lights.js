@@ -182,13 +182,14 @@ function facingFaces(table, at, from) {
   let sum = 0;
   for (let face = 0; face < 6; face++) {
     const axis = face >> 1, high = face & 1, b = axis === 2 ? 0 : axis + 1, c = axis === 0 ? 2 : axis - 1;
-    const plane = table[g + 3 * high + axis], gap = from[axis] - plane;
+    const gap = from[axis] - table[g + 3 * high + axis];
+    faces[face] = 0; chances[face] = 0;
+    if (outside && !(high === 1 ? gap > 0 : gap < 0)) continue; // turned away
     const area = (table[g + 3 + b] - table[g + b]) * (table[g + 3 + c] - table[g + c]);
-    const facing = !outside || (high === 1 ? gap > 0 : gap < 0);
     const db = 0.5 * (table[g + b] + table[g + 3 + b]) - from[b], dc = 0.5 * (table[g + c] + table[g + 3 + c]) - from[c];
-    const d2 = gap * gap + db * db + dc * dc, chance = facing && area > 0 ? (area * Math.abs(gap)) / (d2 * Math.sqrt(d2)) : 0;
-    faces[face] = facing ? area : 0; chances[face] = chance > 0 && chance < Infinity ? chance : 0;
-    sum += chances[face];
+    const d2 = gap * gap + db * db + dc * dc, chance = area > 0 ? (area * Math.abs(gap)) / (d2 * Math.sqrt(d2)) : 0;
+    faces[face] = area;
+    if (chance > 0 && chance < Infinity) { chances[face] = chance; sum += chance; }
   }
   if (!(sum > 0) || sum === Infinity) return false;
   for (let face = 0; face < 6; face++) chances[face] /= sum;
