@@ -10,6 +10,7 @@ import { sampleLight, lightPdf, lightTable, L_PDF, L_POINT, LIGHT_SAMPLE } from 
 import { packMaterials, scatter, metalDensity, SURFACE, EVENT, LOBE, METAL } from '../../lib/tracing/pathtrace/materials.js';
 import { readSky } from '../../lib/tracing/pathtrace/sky.js';
 import { PathRandom } from '../../lib/tracing/pathtrace/random.js';
+import { PathProgressiveRenderer } from '../../lib/tracing/pathtrace/progressive.js';
 import { cornellBox, cornellCamera } from '../shared/cornell-box.js';
 
 /** Each pixel's mean and variance per sample, channel by channel, over `samples` unclamped samples. */
@@ -298,6 +299,35 @@ describe('less noise', () => {
     expect(off.mean / on.mean).toBeGreaterThan(3);
     expect(off.median / on.median).toBeGreaterThan(8);
   }, 120_000);
+});
+
+describe('the noise a page shows', () => {
+  /** A progressive renderer's noise after `samples` passes. */
+  const noiseAfter = (scene, camera, path) => {
+    const tracer = new PathProgressiveRenderer({ scene, camera, path, now: () => 0 }); // a clock that never moves: a step traces until the frame is done
+    const seen = [tracer.noise];
+    while (!tracer.done) { tracer.step(); seen.push(tracer.noise); }
+    return seen;
+  };
+
+  it('is each pixel\'s standard error averaged (none before two samples, 0 for a sky alone), and lower with light sampling at the same samples', () => {
+    const camera = cornellCamera(16, 16);
+    const on = noiseAfter(cornellBox(8), camera, { samples: 12, seed: 3 }), off = noiseAfter(cornellBox(8), camera, { samples: 12, seed: 3, lightSampling: false });
+    expect(on[0]).toBeNull();
+    expect(on.at(-1)).toBeGreaterThan(0);
+    expect(on.at(-1)).toBeLessThan(0.6 * off.at(-1));
+    const scene = cornellBox(8), frame = preparePaths(scene, camera, readPathOptions({ samples: 12, seed: 3 }, scene, camera));
+    let total = 0; // the same number from the samples themselves: each pixel's brightness, its spread over √12
+    for (let y = 0; y < 16; y++) {
+      for (let x = 0; x < 16; x++) {
+        const values = Array.from({ length: 12 }, (_, s) => { tracePath(frame, x, y, s); return (radiance[0] + radiance[1] + radiance[2]) / 3; });
+        const mean = values.reduce((a, v) => a + v, 0) / 12;
+        total += Math.sqrt(values.reduce((a, v) => a + (v - mean) ** 2, 0) / 11 / 12);
+      }
+    }
+    expect(on.at(-1)).toBeCloseTo(total / 256, 9);
+    expect(noiseAfter(new Scene({ background: [0.4, 0.5, 0.6] }), camera, { samples: 3 }).at(-1)).toBe(0);
+  });
 });
 
 describe('inspectPath tells each diffuse bounce\'s light sample', () => {
