@@ -182,6 +182,7 @@ function lightSampleText(b) {
   if (!s) return b.lightSkipped ? [`none: ${b.lightSkipped}`, 'skipped'] : ['—', ''];
   const aim = `${shownName(s.light)}${s.point ? ` at ${formatVector(s.point)}` : ` toward ${formatVector(s.direction)}`}`;
   if (s.below) return [`${aim}: behind the surface, no light`, 'below'];
+  if (s.outsideBlur) return [`${aim}: outside the metal's blur, no light`, 'outside'];
   if (s.blocked !== null) return [`${aim}: blocked by ${shownName(s.blocked)}`, 'blocked'];
   return [`${aim}: seen, pdf ${formatNumber(s.pdf)}, MIS weight ${formatNumber(s.weight)}, added ${rgb(s.contribution)}`, 'seen'];
 }

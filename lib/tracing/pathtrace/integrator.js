@@ -157,12 +157,13 @@ function directLight(frame, m, entry, metal) {
   sampleLight(lights, from, lightU, aim);
   const pdf = aim[L_PDF], cos = surface[N] * aim[0] + surface[N + 1] * aim[1] + surface[N + 2] * aim[2];
   if (!(pdf > 0) || !(cos > 0)) { if (entry) recordLight(entry, frame, -2, 0, 0); return; } // behind the surface: no light this way
+  if (metal === 1) metalDensity(materials, m, surface, aim, density);
+  const bsdfPdf = metal === 1 ? density[0] : cos / Math.PI; // f·cos is colour × this density for both lobes
+  if (!(bsdfPdf > 0)) { if (entry) recordLight(entry, frame, -3, 0, 0); return; } // outside the metal's blur: no shadow ray worth tracing
   path[0] = from[0]; path[1] = from[1]; path[2] = from[2]; path[3] = aim[0]; path[4] = aim[1]; path[5] = aim[2];
   const target = lights.table[aim[L_SLOT] * LIGHT + SHAPE_INDEX]; // the sky's shape index is −1
   const blocker = shadowBlocker(frame, target);
   if (blocker >= 0) { if (entry) recordLight(entry, frame, nearestBlocker(frame, blocker), 0, 0); return; }
-  if (metal === 1) metalDensity(materials, m, surface, aim, density);
-  const bsdfPdf = metal === 1 ? density[0] : cos / Math.PI; // f·cos is colour × this density for both lobes
   const weight = (pdf * pdf) / (pdf * pdf + bsdfPdf * bsdfPdf), k = (bsdfPdf * weight) / pdf;
   const glow = target * MATERIAL + EMISSION, sky = frame.sky, t = 0.5 * (aim[1] + 1);
   for (let c = 0; c < 3; c++) {
@@ -405,7 +406,8 @@ function recordBounce(entry, survival) {
  * A diffuse bounce's light sample: the light, the point aimed at, the
  * direction, the blocker's name (`hit` ≥ 0) or null, the density (pick ×
  * solid angle), the MIS weight and the light it added (throughput × colour ×
- * light × `k`). `hit` −2: the direction lies behind the surface.
+ * light × `k`). `hit` −2: the direction lies behind the surface; −3: outside
+ * the fuzzy metal's blur (a direction its bounce never draws).
  */
 function recordLight(entry, frame, hit, weight, k) {
   const objects = frame.scene.objects, target = frame.lights.table[aim[L_SLOT] * LIGHT + SHAPE_INDEX];
@@ -420,6 +422,7 @@ function recordLight(entry, frame, hit, weight, k) {
     contribution: [0, 1, 2].map((c) => throughput[c] * frame.materials[frame.objects.indexOf(entry.object) * MATERIAL + COLOR + c] * light(c) * k),
   };
   if (hit === -2) entry.lightSample.below = true;
+  if (hit === -3) entry.lightSample.outsideBlur = true;
 }
 
 /** How the path ended: a bounce drawn at the last hit is told too (the roulette's zeroes its throughput); a path that left gathers the sky (times the throughput). */
