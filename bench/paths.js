@@ -99,22 +99,33 @@ function noise({ scene, camera }, options, samples) {
   return { imageMean: ofMean(all), unlit: ofMean(unlit), unlitShare: unlit.length / all.length };
 }
 
-/** Seconds per sample (per pixel) of pathTrace, the median of 3 frames after a warm-up. */
-function secondsPerSample({ scene, camera }, options) {
-  pathTrace(scene, camera, options);
-  const times = [];
-  for (let i = 0; i < 3; i++) {
-    const start = performance.now();
-    pathTrace(scene, camera, options);
-    times.push(performance.now() - start);
+/** CPU seconds of this thread's process spent in `work` (not the wall clock: other programs on the machine do not count). */
+function cpuSeconds(work) {
+  const start = process.cpuUsage();
+  work();
+  const { user, system } = process.cpuUsage(start);
+  return (user + system) / 1e6;
+}
+
+/**
+ * Seconds per sample (per pixel) of pathTrace for each of `optionsList`, frames
+ * taken in turn (one of each, then again: a busy spell falls on all alike),
+ * the median of 5 after a warm-up, in CPU time.
+ */
+function secondsPerSample({ scene, camera }, optionsList) {
+  const times = optionsList.map(() => []), paths = camera.width * camera.height;
+  for (const options of optionsList) pathTrace(scene, camera, options);
+  for (let round = 0; round < 5; round++) {
+    optionsList.forEach((options, k) => times[k].push(cpuSeconds(() => pathTrace(scene, camera, options)) / (paths * options.samples)));
   }
-  return median(times) / 1000 / (camera.width * camera.height * options.samples);
+  return times.map(median);
 }
 
 /** Light sampling on and off, in one run: samples/s, variance, efficiency, and the ratios. */
 export function compareLightSampling(label, room) {
-  const rows = [false, true].map((lightSampling) => {
-    const time = secondsPerSample(room, { samples: 2, lightSampling });
+  const times = secondsPerSample(room, [false, true].map((lightSampling) => ({ samples: 2, lightSampling })));
+  const rows = [false, true].map((lightSampling, k) => {
+    const time = times[k];
     const { imageMean, unlit, unlitShare } = noise(room, { lightSampling, seed: 11 }, 16);
     return { lightSampling, time, imageMean, unlit, unlitShare, efficiency: 1 / (time * imageMean) };
   });
@@ -135,7 +146,7 @@ export function runPathBench() {
   const scene = classScene();
   measure('the class scene under its sky, 4 samples', { scene, camera: new Camera({ width: 320, height: 240 }) }, { samples: 4 });
   measure('One weekend\'s final scene (sketch 17), 2 samples', oneWeekend(), { samples: 2, sky: { top: [0.5, 0.7, 1], bottom: [1, 1, 1] } });
-  console.log('\nLight sampling against bounces alone, one core, 160×120 (variance per sample from 16 samples a pixel; efficiency = 1 / (time per sample × variance)):');
+  console.log('\nLight sampling against bounces alone, one core, 160×120 (CPU time per sample, the median of 5 frames each, taken in turn; variance per sample from 16 samples a pixel; efficiency = 1 / (time per sample × variance)):');
   compareLightSampling('Cornell box (sketch 16)', { scene: cornellBox(8), camera: cornellCamera(160, 120) });
   compareLightSampling('the box with a small lamp (1/16 the area)', smallLampRoom(160, 120));
 }

@@ -3,7 +3,9 @@
  * pixel, bounce by bounce, from `inspectPath` (the renderer's own
  * integrator): where each bounce hit, facing which way, what the surface did,
  * the direction drawn and its probability density, the throughput after it
- * and the light it gathered; how the path ended; and the pixel's estimate,
+ * and the light it gathered (with its MIS weight), the light sample aimed
+ * from it (which light, the point, blocked or seen, its weight, or why none);
+ * how the path ended; and the pixel's estimate,
  * its mean and standard error, with a small chart of the running mean
  * converging inside its error band (mean ± 2 standard errors, narrowing as 1/√N).
  * Buttons step through the pixel's samples: each is another random path.
@@ -112,7 +114,7 @@ export class PathPanel {
     const rows = path.bounces.map((b, i) => bounceRow(b, i));
     const table = element('table', { class: 'rt-table rt-path-table' },
       element('caption', {}, `Sample ${path.sample} of pixel ${path.x},${path.y}: ${path.bounces.length} ${path.bounces.length === 1 ? 'hit' : 'hits'}`),
-      element('thead', {}, element('tr', {}, ...['#', 'surface', 'what it did', 'point', 'normal', 'new direction', 'pdf', 'throughput after', 'light gathered'].map((h) => element('th', { scope: 'col' }, h)))),
+      element('thead', {}, element('tr', {}, ...['#', 'surface', 'what it did', 'point', 'normal', 'new direction', 'pdf', 'throughput after', 'light gathered', 'light sample (shadow ray)'].map((h) => element('th', { scope: 'col' }, h)))),
       element('tbody', {}, ...rows));
     const ended = element('p', { 'data-field': 'end', 'data-value': path.end },
       `Then the path ${ENDS[path.end]}${path.end === 'sky' ? `: ${rgb(path.sky)}` : ''}. This sample's light: ${rgb(path.radiance)}.`);
@@ -166,7 +168,23 @@ function bounceRow(b, i) {
     cell('direction', formatVector(b.direction)),
     cell('pdf', pdf, String(b.pdf)),
     cell('throughput', b.throughput ? rgb(b.throughput) : '—', b.throughput?.join(' ') ?? ''),
-    cell('emitted', rgb(b.emitted), b.emitted.join(' ')));
+    cell('emitted', `${rgb(b.emitted)}${b.emissionWeight !== undefined && b.emissionWeight < 1 ? ` (MIS weight ${formatNumber(b.emissionWeight)})` : ''}`, b.emitted.join(' ')),
+    cell('light', ...lightSampleText(b)));
+}
+
+/**
+ * A bounce's light sample in words, and its verdict for `data-value`: the light
+ * aimed at and the point, then blocked (by what), behind the surface, or seen
+ * (its MIS weight and the light it added); or why none was drawn.
+ */
+function lightSampleText(b) {
+  const s = b.lightSample;
+  if (!s) return b.lightSkipped ? [`none: ${b.lightSkipped}`, 'skipped'] : ['—', ''];
+  const aim = `${shownName(s.light)}${s.point ? ` at ${formatVector(s.point)}` : ` toward ${formatVector(s.direction)}`}`;
+  if (s.below) return [`${aim}: behind the surface, no light`, 'below'];
+  if (s.outsideBlur) return [`${aim}: outside the metal's blur, no light`, 'outside'];
+  if (s.blocked !== null) return [`${aim}: blocked by ${shownName(s.blocked)}`, 'blocked'];
+  return [`${aim}: seen, pdf ${formatNumber(s.pdf)}, MIS weight ${formatNumber(s.weight)}, added ${rgb(s.contribution)}`, 'seen'];
 }
 
 /** Brightness of a colour (Rec. 709 weights): the chart's one line. */

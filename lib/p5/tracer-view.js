@@ -232,10 +232,10 @@ export class TracerView {
     if (!pathTraced(this.#renderer)) throw new TypeError('setPath: this view is not path traced (give createTracerView a path option)');
     return this.#change({ path });
   }
-  /** A path-traced view's samples so far and in all and its path options, `{ sample, samples, options }`; null for a view that is not path traced. */
+  /** A path-traced view's samples so far and in all, its path options and the noise left (each pixel's standard error, averaged; null when not measured), `{ sample, samples, options, noise }`; null for a view that is not path traced. */
   get pathState() {
     const r = this.#renderer;
-    return pathTraced(r) ? { sample: r.sample, samples: r.samples, options: { ...r.options } } : null;
+    return pathTraced(r) ? { sample: r.sample, samples: r.samples, options: { ...r.options }, noise: r.noise ?? null } : null;
   }
 
   /**

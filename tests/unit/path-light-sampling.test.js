@@ -7,9 +7,10 @@ import { Scene, Sphere, Plane, Box, Camera, pathTrace, inspectPath } from '../..
 import { readPathOptions, preparePaths } from '../../lib/tracing/pathtrace/path-trace.js';
 import { tracePath, radiance } from '../../lib/tracing/pathtrace/integrator.js';
 import { sampleLight, lightPdf, lightTable, L_PDF, L_POINT, LIGHT_SAMPLE } from '../../lib/tracing/pathtrace/lights.js';
-import { packMaterials } from '../../lib/tracing/pathtrace/materials.js';
+import { packMaterials, scatter, metalDensity, SURFACE, EVENT, LOBE, METAL } from '../../lib/tracing/pathtrace/materials.js';
 import { readSky } from '../../lib/tracing/pathtrace/sky.js';
 import { PathRandom } from '../../lib/tracing/pathtrace/random.js';
+import { PathProgressiveRenderer } from '../../lib/tracing/pathtrace/progressive.js';
 import { cornellBox, cornellCamera } from '../shared/cornell-box.js';
 
 /** Each pixel's mean and variance per sample, channel by channel, over `samples` unclamped samples. */
@@ -79,10 +80,20 @@ function gradientSky() {
     .add(new Box([0.5, -1, -8], [2, 0.5, -6.5], { color: [0.3, 0.5, 0.8] }));
 }
 
+/** A fuzzy metal ball and a mirror ball under a small bright lamp ball, a grey floor, a dark sky. */
+function metalsUnderLamp() {
+  return new Scene({ background: [0.02, 0.02, 0.03] })
+    .add(new Plane([0, -1, 0], [0, 1, 0], { color: [0.6, 0.6, 0.6], name: 'floor' }))
+    .add(new Sphere([-1.1, 0, -8], 1, { color: [0.9, 0.8, 0.7], reflection: 1, fuzz: 0.3, name: 'brushed' }))
+    .add(new Sphere([1.1, 0, -8], 1, { color: [0.8, 0.8, 0.9], reflection: 0.6, fuzz: 0.05, name: 'half mirror' }))
+    .add(new Sphere([0, 3.5, -7], 0.3, { color: [0, 0, 0], emission: [40, 40, 36], name: 'lamp' }));
+}
+
 describe('with and without light sampling, the same picture', () => {
   const cases = [
     ['the Cornell box', () => cornellBox(8), () => cornellCamera(8, 8), {}],
     ['a small bright lamp', smallLamp, () => cornellCamera(8, 8), {}],
+    ['fuzzy metal balls under a small lamp', metalsUnderLamp, () => new Camera({ width: 8, height: 8, fov: 30, position: [0, 1, 0], pitch: -10 }), {}],
     ['a glass ball under a lamp', glassUnderLamp, () => new Camera({ width: 8, height: 8, fov: 30, position: [0, 1, 0], pitch: -10 }), {}],
     ['a gradient sky', gradientSky, () => new Camera({ width: 8, height: 8, fov: 40, position: [0, 1, 0], pitch: -10 }), { sky: { top: [0.3, 0.5, 1], bottom: [1.2, 1, 0.8] } }],
   ];
@@ -198,6 +209,60 @@ describe('the light sampler', () => {
   });
 });
 
+describe('a fuzzy metal\'s density', () => {
+  // The metal draws the mirror direction r plus fuzz × a point in the unit ball; light sampling weighs a
+  // direction by the density of that draw, which depends on the angle to r alone.
+  const fuzz = 0.4, materials = packMaterials([new Sphere([0, 0, 0], 1, { color: [1, 1, 1], reflection: 1, fuzz })]);
+  const surface = new Float64Array(SURFACE), dir = new Float64Array(3), out = new Float64Array(1);
+  surface.set([0, 0, 0, 0, 1, 0, Math.SQRT1_2, -Math.SQRT1_2, 0]); // a ray coming down at 45°: r = (√½, √½, 0)
+  const density = (b) => { // the density of a direction at cos b to r
+    dir.set([b * Math.SQRT1_2 - Math.sqrt(1 - b * b) * Math.SQRT1_2, b * Math.SQRT1_2 + Math.sqrt(1 - b * b) * Math.SQRT1_2, 0]);
+    metalDensity(materials, 0, surface, dir, out);
+    return out[0];
+  };
+  /** The chance of a direction within cos ≥ c of r: 2π ∫ density db from c to 1 (midpoint rule). */
+  const capChance = (c, steps = 20000) => {
+    let sum = 0;
+    for (let i = 0; i < steps; i++) sum += density(c + ((i + 0.5) * (1 - c)) / steps);
+    return 2 * Math.PI * sum * (1 - c) / steps;
+  };
+
+  it('sums to one over all directions, and is 0 outside the cone the fuzz ball subtends', () => {
+    expect(capChance(-1, 200000)).toBeCloseTo(1, 4);
+    expect(density(Math.sqrt(1 - fuzz * fuzz) - 1e-6)).toBe(0);
+  });
+
+  it('a lamp\'s blurred highlight on a brushed ball: the same with and without light sampling, less noisy, not counted twice', () => {
+    const scene = new Scene({ background: [0, 0, 0] })
+      .add(new Plane([0, -1.5, 0], [0, 1, 0], { color: [0.3, 0.3, 0.3] }))
+      .add(new Sphere([0, 0, -6], 1.5, { color: [0.9, 0.9, 0.9], reflection: 1, fuzz: 0.3, name: 'brushed' }))
+      .add(new Sphere([0, 4, -2], 0.4, { color: [0, 0, 0], emission: [30, 30, 30], name: 'lamp' }));
+    const camera = new Camera({ width: 8, height: 8, fov: 30 });
+    for (const [x, y] of [[3, 2], [4, 1]]) { // in the highlight
+      const on = inspectPath(scene, camera, x, y, { samples: 2048, maxBounces: 2 });
+      const off = inspectPath(scene, camera, x, y, { samples: 2048, maxBounces: 2, lightSampling: false, seed: 1 });
+      expect(on.bounces[0].lightSample.light).toBe('lamp');
+      expect(Math.abs(on.unclamped[0] - off.unclamped[0]), `pixel ${x},${y}`).toBeLessThanOrEqual(4 * Math.hypot(on.stderr[0], off.stderr[0]));
+      expect(on.stderr[0]).toBeLessThan(off.stderr[0]);
+    }
+  });
+
+  it('matches where scatter\'s metal directions fall (cos to r, five caps)', () => {
+    const random = new PathRandom().start(9, 0, 0, 0), event = new Float64Array(EVENT), draws = 40000, cosines = [];
+    let metal = 0;
+    for (let i = 0; i < draws; i++) {
+      scatter(materials, 0, random, surface, event);
+      if (event[LOBE] === METAL) metal++;
+      cosines.push((event[0] + event[1]) * Math.SQRT1_2);
+    }
+    expect(metal).toBe(draws); // the cone lies wholly above the surface: none absorbed
+    for (const c of [0.95, 0.97, 0.98, 0.99, 0.995]) {
+      const expected = capChance(c), seen = cosines.filter((b) => b >= c).length / draws;
+      expect(Math.abs(seen - expected), `cap cos ≥ ${c}`).toBeLessThan(4 * Math.sqrt(expected * (1 - expected) / draws));
+    }
+  });
+});
+
 describe('no NaN, and the same picture, at the edges', () => {
   it('with no light at all, a light of no power, a tiny light, a light inside a closed box', () => {
     const camera = new Camera({ width: 6, height: 6, fov: 60, position: [0, 1, 0], pitch: -20 });
@@ -236,6 +301,35 @@ describe('less noise', () => {
   }, 120_000);
 });
 
+describe('the noise a page shows', () => {
+  /** A progressive renderer's noise after `samples` passes. */
+  const noiseAfter = (scene, camera, path) => {
+    const tracer = new PathProgressiveRenderer({ scene, camera, path, now: () => 0 }); // a clock that never moves: a step traces until the frame is done
+    const seen = [tracer.noise];
+    while (!tracer.done) { tracer.step(); seen.push(tracer.noise); }
+    return seen;
+  };
+
+  it('is each pixel\'s standard error averaged (none before two samples, 0 for a sky alone), and lower with light sampling at the same samples', () => {
+    const camera = cornellCamera(16, 16);
+    const on = noiseAfter(cornellBox(8), camera, { samples: 12, seed: 3 }), off = noiseAfter(cornellBox(8), camera, { samples: 12, seed: 3, lightSampling: false });
+    expect(on[0]).toBeNull();
+    expect(on.at(-1)).toBeGreaterThan(0);
+    expect(on.at(-1)).toBeLessThan(0.6 * off.at(-1));
+    const scene = cornellBox(8), frame = preparePaths(scene, camera, readPathOptions({ samples: 12, seed: 3 }, scene, camera));
+    let total = 0; // the same number from the samples themselves: each pixel's brightness, its spread over √12
+    for (let y = 0; y < 16; y++) {
+      for (let x = 0; x < 16; x++) {
+        const values = Array.from({ length: 12 }, (_, s) => { tracePath(frame, x, y, s); return (radiance[0] + radiance[1] + radiance[2]) / 3; });
+        const mean = values.reduce((a, v) => a + v, 0) / 12;
+        total += Math.sqrt(values.reduce((a, v) => a + (v - mean) ** 2, 0) / 11 / 12);
+      }
+    }
+    expect(on.at(-1)).toBeCloseTo(total / 256, 9);
+    expect(noiseAfter(new Scene({ background: [0.4, 0.5, 0.6] }), camera, { samples: 3 }).at(-1)).toBe(0);
+  });
+});
+
 describe('inspectPath tells each diffuse bounce\'s light sample', () => {
   const scene = new Scene({ background: [0.05, 0.05, 0.05] })
     .add(new Plane([0, -2, 0], [0, 1, 0], { color: [0.75, 0.75, 0.7], name: 'floor' }))
@@ -270,8 +364,14 @@ describe('inspectPath tells each diffuse bounce\'s light sample', () => {
     expect(lit).toBeGreaterThan(5);
     expect(blocked).toBeGreaterThan(0);
     const metal = paths.flatMap((p) => p.bounces).find((b) => b.lobe === 'metal');
-    expect(metal.lightSample).toBeUndefined();
-    expect(metal.lightSkipped).toMatch(/metal/);
+    expect(metal.lightSample.light).toBe('lamp'); // a fuzzy metal aims at the lights too
+    expect(metal.lightSkipped).toBeUndefined();
+    const mirrorScene = new Scene({ background: [0.05, 0.05, 0.05] }).add(scene.objects[3])
+      .add(new Sphere([0, 1, -8], 1.5, { color: [0.9, 0.9, 0.9], reflection: 1, name: 'mirror' }));
+    const mirror = inspectPath(mirrorScene, camera, 12, 9, { maxBounces: 2 }).bounces[0];
+    expect(mirror.lobe).toBe('metal');
+    expect(mirror.lightSample).toBeUndefined();
+    expect(mirror.lightSkipped).toMatch(/mirror/);
     const off = inspectPath(scene, camera, 12, 14, { sample: 0, lightSampling: false });
     expect(off.bounces.every((b) => b.lightSample === undefined && b.lightSkipped === undefined)).toBe(true);
     const none = inspectPath(new Scene({ background: [0.5, 0.5, 0.5] }).add(new Plane([0, -2, 0], [0, 1, 0])), camera, 12, 14);

@@ -28,9 +28,9 @@ const clamp01 = (v) => Math.min(1, Math.max(0, v));
  *   lightSample?, lightSkipped? }`;
  *   `emitted` the light the surface gives off as it reaches the eye (throughput × emission × emissionWeight, the MIS weight:
  *   below 1 when a diffuse bounce found a light that light sampling could also have drawn), `throughput` after the bounce,
- *   `lightSample` at a diffuse bounce with light sampling on: `{ light, point, direction, blocked, pdf, weight, contribution, below? }`
+ *   `lightSample` at a diffuse or fuzzy metal bounce with light sampling on: `{ light, point, direction, blocked, pdf, weight, contribution, below?, outsideBlur? }`
  *   (the light's name or 'sky', the point aimed at (null for the sky), the blocker's name or null, pick × solid-angle density,
- *   the MIS weight, the light it added), `lightSkipped` why a bounce drew none (no light, metal, glass),
+ *   the MIS weight, the light it added), `lightSkipped` why a bounce drew none (no light, a mirror, glass),
  *   `pdf` the density the direction was drawn with (for a mirror or glass, `delta`: the probability of that lobe),
  *   `survival` the roulette's q where it played; `end` 'sky', 'absorbed', 'roulette' or 'maxBounces';
  *   `mean` and `history` linear 0–1 (×255 is pathTrace's byte), `unclamped` the mean before clamping

@@ -17,7 +17,7 @@
  */
 import { Ray } from '../../math/ray.js';
 import { Vec3 } from '../../math/vec3.js';
-import { scatter, MATERIAL, COLOR, EMISSION, P, N, D, INSIDE, SURFACE, DIRECTION, COS, WEIGHT, PDF, LOBE, BELOW, EVENT, DIFFUSE, METAL, ABSORBED, LOBE_NAMES } from './materials.js';
+import { scatter, metalDensity, MATERIAL, COLOR, EMISSION, FUZZ, AIMED_FUZZ, P, N, D, INSIDE, SURFACE, DIRECTION, COS, WEIGHT, PDF, LOBE, BELOW, EVENT, DIFFUSE, METAL, ABSORBED, LOBE_NAMES } from './materials.js';
 import { skyLight } from './sky.js';
 import { sampleLight, lightPdf, LIGHT, SHAPE_INDEX, L_SLOT, L_PDF, L_POINT, L_DISTANCE, LIGHT_SAMPLE } from './lights.js';
 import { shapeName } from '../../scene/scene.js';
@@ -96,12 +96,14 @@ export function tracePath(frame, x, y, s, record) {
     if (bounce >= maxBounces) break;
 
     scatter(materials, m, random, surface, event);
-    if (event[LOBE] === ABSORBED) { why = 'absorbed'; break; }
     mis[BSDF_PDF] = 0;
-    if (aiming && event[LOBE] === DIFFUSE) { // next-event estimation: one shadow ray toward a light, weighed against this bounce
-      apart(directLight, frame, m, record ? bounceRecord : null);
-      mis[BSDF_PDF] = event[COS] / Math.PI;
-    } else if (record && frame.lightSampling) bounceRecord.lightSkipped = skippedWhy(lights, event[LOBE]);
+    const lobe = event[LOBE], metal = lobe === METAL || lobe === ABSORBED; // (only a fuzzed metal ray is absorbed)
+    if (aiming && (lobe === DIFFUSE || (metal && materials[m + FUZZ] >= AIMED_FUZZ))) { // next-event estimation: one shadow ray toward a light, weighed against this bounce
+      apart(directLight, frame, m, record ? bounceRecord : null, metal ? 1 : 0); // (also when the metal's own ray is absorbed: the light it would have aimed at is counted on average)
+      if (lobe === DIFFUSE) mis[BSDF_PDF] = event[COS] / Math.PI;
+      else if (lobe === METAL) { apart(metalDensity, materials, m, surface, event, density); mis[BSDF_PDF] = density[0]; }
+    } else if (record && frame.lightSampling) bounceRecord.lightSkipped = skippedWhy(lights, lobe);
+    if (lobe === ABSORBED) { why = 'absorbed'; break; }
     for (let c = 0; c < 3; c++) throughput[c] *= event[WEIGHT + c];
     const brightest = Math.max(throughput[0], throughput[1], throughput[2]);
     if (brightest <= 0) { why = 'absorbed'; break; }
@@ -139,24 +141,30 @@ function weighEmission(frame, index) {
 }
 
 /**
- * Next-event estimation at a diffuse hit (the material at `m`): one light
- * picked by power, a direction toward it, one shadow ray; if the light is
- * the first thing the ray meets, its light × the diffuse BSDF (colour/π) × cos
- * / the sampler's density, weighed by the power heuristic against the density
- * the bounce would have drawn the same direction with (cos/π). Overwrites
+ * Next-event estimation at a diffuse or fuzzy metal hit (the material at
+ * `m`; `metal` 1 for the metal): one light picked by power, a direction
+ * toward it, one shadow ray; if nothing stands before the light, its light ×
+ * the BSDF × cos / the sampler's density, weighed by the power heuristic
+ * against the density the bounce would have drawn the same direction with.
+ * For both lobes BSDF × cos is the colour × that density: cos/π for the
+ * diffuse one, the fuzz ball's share for the metal (materials.js). Overwrites
  * `path` (the loop sets the next ray after). `entry` the inspector's bounce, or null.
  */
-function directLight(frame, m, entry) {
+function directLight(frame, m, entry, metal) {
   const lights = frame.lights, bias = frame.scene.bias, materials = frame.materials;
   from[0] = surface[P] + surface[N] * bias; from[1] = surface[P + 1] + surface[N + 1] * bias; from[2] = surface[P + 2] + surface[N + 2] * bias;
   frame.random.draw(lightU, 4);
   sampleLight(lights, from, lightU, aim);
   const pdf = aim[L_PDF], cos = surface[N] * aim[0] + surface[N + 1] * aim[1] + surface[N + 2] * aim[2];
   if (!(pdf > 0) || !(cos > 0)) { if (entry) recordLight(entry, frame, -2, 0, 0); return; } // behind the surface: no light this way
+  if (metal === 1) metalDensity(materials, m, surface, aim, density);
+  const bsdfPdf = metal === 1 ? density[0] : cos / Math.PI; // f·cos is colour × this density for both lobes
+  if (!(bsdfPdf > 0)) { if (entry) recordLight(entry, frame, -3, 0, 0); return; } // outside the metal's blur: no shadow ray worth tracing
   path[0] = from[0]; path[1] = from[1]; path[2] = from[2]; path[3] = aim[0]; path[4] = aim[1]; path[5] = aim[2];
-  const hit = nearestHit(frame), target = lights.table[aim[L_SLOT] * LIGHT + SHAPE_INDEX]; // the sky's shape index is −1: nothing hit
-  if (hit !== target) { if (entry) recordLight(entry, frame, hit, 0, 0); return; }
-  const bsdfPdf = cos / Math.PI, weight = (pdf * pdf) / (pdf * pdf + bsdfPdf * bsdfPdf), k = (bsdfPdf * weight) / pdf;
+  const target = lights.table[aim[L_SLOT] * LIGHT + SHAPE_INDEX]; // the sky's shape index is −1
+  const blocker = shadowBlocker(frame, target);
+  if (blocker >= 0) { if (entry) recordLight(entry, frame, nearestBlocker(frame, blocker), 0, 0); return; }
+  const weight = (pdf * pdf) / (pdf * pdf + bsdfPdf * bsdfPdf), k = (bsdfPdf * weight) / pdf;
   const glow = target * MATERIAL + EMISSION, sky = frame.sky, t = 0.5 * (aim[1] + 1);
   for (let c = 0; c < 3; c++) {
     const light = target < 0 ? t * sky[c] + (1 - t) * sky[c + 3] : materials[glow + c];
@@ -165,10 +173,73 @@ function directLight(frame, m, entry) {
   if (entry) recordLight(entry, frame, -1, weight, k);
 }
 
+/**
+ * The shadow ray along `path`: a shape other than the light `target` that it
+ * meets before the point drawn on the light (aim[L_DISTANCE]; Infinity for
+ * the sky), or −1. A question of yes or no, not of the nearest: it stops at the
+ * first blocker, the light itself is not tested, and the kinds most likely to
+ * stand in the way (boxes and balls) are asked before the walls (planes).
+ */
+function shadowBlocker(frame, target) {
+  shadow[0] = aim[L_DISTANCE] * (1 - 1e-9); shadow[1] = -1; // a hair short of the light: its own face is no blocker
+  const groups = frame.groups;
+  if (groups === null) apart(anyBlocker, frame, target);
+  else {
+    if (groups.boxes.length) apart(boxBlockers, frame, groups.boxes, target);
+    if (shadow[1] < 0 && groups.spheres.length) apart(sphereBlockers, frame, groups.spheres, target);
+    if (shadow[1] < 0 && groups.others.length) apart(otherBlockers, frame, groups.others, target);
+    if (shadow[1] < 0 && groups.planes.length) apart(planeBlockers, frame, groups.planes, target);
+  }
+  return shadow[1];
+}
+
+/** The shadow ray's reach (its t must stay under it) and the blocker found (−1: none yet). */
+const shadow = pathNumbers(2);
+
+function boxBlockers(frame, list, target) {
+  const shapes = frame.packed.shapes, tMin = frame.scene.epsilon, reach = shadow[0];
+  for (let n = 0; n < list.length; n++) {
+    const i = list[n];
+    if (i !== target && boxHit(shapes, i * SHAPE, path[0], path[1], path[2], path[3], path[4], path[5], tMin) < reach) { shadow[1] = i; return; }
+  }
+}
+function sphereBlockers(frame, list, target) {
+  const shapes = frame.packed.shapes, tMin = frame.scene.epsilon, reach = shadow[0];
+  for (let n = 0; n < list.length; n++) {
+    const i = list[n];
+    if (i !== target && sphereHit(shapes, i * SHAPE, path[0], path[1], path[2], path[3], path[4], path[5], tMin) < reach) { shadow[1] = i; return; }
+  }
+}
+function planeBlockers(frame, list, target) {
+  const shapes = frame.packed.shapes, tMin = frame.scene.epsilon, reach = shadow[0];
+  for (let n = 0; n < list.length; n++) {
+    const i = list[n];
+    if (i !== target && planeHit(shapes, i * SHAPE, path[0], path[1], path[2], path[3], path[4], path[5], tMin) < reach) { shadow[1] = i; return; }
+  }
+}
+function otherBlockers(frame, list, target) {
+  const packed = frame.packed, tMin = frame.scene.epsilon, reach = shadow[0];
+  for (let n = 0; n < list.length; n++) {
+    const i = list[n];
+    if (i !== target && packed.hit(packed.shapes, i * SHAPE, path[0], path[1], path[2], path[3], path[4], path[5], tMin) < reach) { shadow[1] = i; return; }
+  }
+}
+function anyBlocker(frame, target) {
+  const objects = frame.objects, tMin = frame.scene.epsilon, o = ray.origin, d = ray.direction, reach = shadow[0];
+  o.x = path[0]; o.y = path[1]; o.z = path[2]; d.x = path[3]; d.y = path[4]; d.z = path[5];
+  for (let i = 0; i < objects.length; i++) if (i !== target && objects[i].hit(ray, tMin) < reach) { shadow[1] = i; return; }
+}
+
+/** The inspector's blocker: the nearest shape along the shadow ray, when it is not the light (else the one found). */
+function nearestBlocker(frame, found) {
+  const nearestIndex = nearestHit(frame);
+  return nearestIndex >= 0 && nearestIndex !== frame.lights.table[aim[L_SLOT] * LIGHT + SHAPE_INDEX] ? nearestIndex : found;
+}
+
 /** Why a bounce drew no light sample (the inspector's). */
 function skippedWhy(lights, lobe) {
   if (lights.count === 0) return 'no light to aim at (lights are emissive spheres and boxes, and a gradient sky)';
-  if (lobe === METAL) return 'metal: its light comes from the bounce alone';
+  if (lobe === METAL) return 'metal without fuzz (a mirror): one direction only, its light comes from the bounce alone';
   return 'glass: one direction only, its light comes from the bounce alone';
 }
 
@@ -335,7 +406,8 @@ function recordBounce(entry, survival) {
  * A diffuse bounce's light sample: the light, the point aimed at, the
  * direction, the blocker's name (`hit` ≥ 0) or null, the density (pick ×
  * solid angle), the MIS weight and the light it added (throughput × colour ×
- * light × `k`). `hit` −2: the direction lies behind the surface.
+ * light × `k`). `hit` −2: the direction lies behind the surface; −3: outside
+ * the fuzzy metal's blur (a direction its bounce never draws).
  */
 function recordLight(entry, frame, hit, weight, k) {
   const objects = frame.scene.objects, target = frame.lights.table[aim[L_SLOT] * LIGHT + SHAPE_INDEX];
@@ -350,6 +422,7 @@ function recordLight(entry, frame, hit, weight, k) {
     contribution: [0, 1, 2].map((c) => throughput[c] * frame.materials[frame.objects.indexOf(entry.object) * MATERIAL + COLOR + c] * light(c) * k),
   };
   if (hit === -2) entry.lightSample.below = true;
+  if (hit === -3) entry.lightSample.outsideBlur = true;
 }
 
 /** How the path ended: a bounce drawn at the last hit is told too (the roulette's zeroes its throughput); a path that left gathers the sky (times the throughput). */

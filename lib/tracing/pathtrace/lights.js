@@ -132,54 +132,75 @@ function sampleSphere(table, at, from, u, out) {
   towardPoint(out, from, target);
 }
 
-/** Scratch: a point drawn on a light, its normal, the area it was drawn over; a box's visible area. */
-const target = new Float64Array(7), visible = new Float64Array(1);
+/**
+ * Scratch: a point drawn on a light, its normal, the area it was drawn over;
+ * for a box, the area of each face that faces the point (min x, max x, min y,
+ * …; 0: turned away) and the chance of picking it.
+ */
+const target = new Float64Array(7), faces = new Float64Array(6), chances = new Float64Array(6);
 
-/** A box: one of the faces that face the point (all six from inside), picked by area, and a point uniform on it. */
+/**
+ * A box: one of the faces that face the point (all six from inside), picked
+ * by the solid angle its centre suggests (area × cos / distance²: a face seen
+ * edge-on, the lamp's top seen from the ceiling, is seldom worth a shadow
+ * ray), and a point uniform on it.
+ */
 function sampleBox(table, at, from, u, out) {
-  visibleArea(table, at, from, visible);
-  if (!(visible[0] > 0)) return;
-  let pick = u[1] * visible[0], lastAxis = 0, lastHigh = 0;
-  for (let axis = 0; axis < 3; axis++) {
-    const b = (axis + 1) % 3, c = (axis + 2) % 3;
-    const area = (table[at + G + 3 + b] - table[at + G + b]) * (table[at + G + 3 + c] - table[at + G + c]);
-    for (let high = 0; high < 2; high++) {
-      if (!faceVisible(table, at, from, axis, high) || !(area > 0)) continue;
-      if (pick < area) { boxFacePoint(table, at, from, u, out, axis, high); return; }
-      pick -= area; lastAxis = axis; lastHigh = high;
-    }
+  if (!facingFaces(table, at, from)) return;
+  let pick = u[1], last = 0;
+  for (let face = 0; face < 6; face++) {
+    const chance = chances[face];
+    if (!(chance > 0)) continue;
+    if (pick < chance) { boxFacePoint(table, at, from, u, out, face); return; }
+    pick -= chance; last = face;
   }
-  boxFacePoint(table, at, from, u, out, lastAxis, lastHigh); // rounding left a sliver past the last face
+  boxFacePoint(table, at, from, u, out, last); // rounding left a sliver past the last face
 }
 
-/** A point uniform on face `high` across `axis`, drawn over the visible area (in `visible[0]`), into `target`, and the direction to it. */
-function boxFacePoint(table, at, from, u, out, axis, high) {
-  const b = (axis + 1) % 3, c = (axis + 2) % 3;
+/** A point uniform on `face` (2 · axis + 1 for the max side), into `target` with the area it was drawn over (the face's / its chance), and the direction to it. */
+function boxFacePoint(table, at, from, u, out, face) {
+  const axis = face >> 1, high = face & 1, b = axis === 2 ? 0 : axis + 1, c = axis === 0 ? 2 : axis - 1;
   target[axis] = table[at + G + 3 * high + axis];
   target[b] = table[at + G + b] + u[2] * (table[at + G + 3 + b] - table[at + G + b]);
   target[c] = table[at + G + c] + u[3] * (table[at + G + 3 + c] - table[at + G + c]);
   target[3] = target[4] = target[5] = 0; target[3 + axis] = 1;
-  target[6] = visible[0];
+  target[6] = faces[face] / chances[face];
   towardPoint(out, from, target);
 }
 
-/** Whether face `high` (0: min, 1: max) across `axis` faces the point (every face does from inside the box). */
-function faceVisible(table, at, from, axis, high) {
-  const p = from[axis], lo = table[at + G + axis], hi = table[at + G + 3 + axis];
-  if (high === 1 ? p > hi : p < lo) return true;
-  for (let k = 0; k < 3; k++) if (from[k] < table[at + G + k] || from[k] > table[at + G + 3 + k]) return false;
-  return true; // inside
+/**
+ * The faces of the box that face the point, into `faces` (their areas, 0 for
+ * the others) and `chances` (the chance of picking each, ∝ area × cos /
+ * distance² at its centre); false when none can be picked. Outside the box,
+ * the face of an axis that faces the point is the one on its side, if the
+ * point is past it; from inside, all six.
+ */
+function facingFaces(table, at, from) {
+  const g = at + G;
+  let outside = false;
+  for (let k = 0; k < 3; k++) if (from[k] < table[g + k] || from[k] > table[g + 3 + k]) outside = true;
+  let sum = 0;
+  for (let face = 0; face < 6; face++) {
+    const axis = face >> 1, high = face & 1, b = axis === 2 ? 0 : axis + 1, c = axis === 0 ? 2 : axis - 1;
+    const gap = from[axis] - table[g + 3 * high + axis];
+    faces[face] = 0; chances[face] = 0;
+    if (outside && !(high === 1 ? gap > 0 : gap < 0)) continue; // turned away
+    const area = (table[g + 3 + b] - table[g + b]) * (table[g + 3 + c] - table[g + c]);
+    const db = 0.5 * (table[g + b] + table[g + 3 + b]) - from[b], dc = 0.5 * (table[g + c] + table[g + 3 + c]) - from[c];
+    const d2 = gap * gap + db * db + dc * dc, chance = area > 0 ? (area * Math.abs(gap)) / (d2 * Math.sqrt(d2)) : 0;
+    faces[face] = area;
+    if (chance > 0 && chance < Infinity) { chances[face] = chance; sum += chance; }
+  }
+  if (!(sum > 0) || sum === Infinity) return false;
+  for (let face = 0; face < 6; face++) chances[face] /= sum;
+  return true;
 }
 
-/** The area of the box's faces that face the point, into `area[0]`. */
-function visibleArea(table, at, from, area) {
-  let sum = 0;
-  for (let axis = 0; axis < 3; axis++) {
-    const b = (axis + 1) % 3, c = (axis + 2) % 3;
-    const face = (table[at + G + 3 + b] - table[at + G + b]) * (table[at + G + 3 + c] - table[at + G + c]);
-    for (let high = 0; high < 2; high++) if (faceVisible(table, at, from, axis, high)) sum += face;
-  }
-  area[0] = sum;
+/** Which face of the box at `at` holds the point `p[0 …]` whose normal is `p[3 …]` (2 · axis + 1 for the max side). */
+function faceOf(table, at, p) {
+  const ax = Math.abs(p[3]), ay = Math.abs(p[4]), az = Math.abs(p[5]);
+  const axis = ax >= ay && ax >= az ? 0 : ay >= az ? 1 : 2, g = at + G;
+  return 2 * axis + (Math.abs(p[axis] - table[g + 3 + axis]) < Math.abs(p[axis] - table[g + axis]) ? 1 : 0);
 }
 
 /** The direction to the point `p[0 …]` on a light, of normal `p[3 …]`, drawn uniformly over the area `p[6]`: density distance² / (|cos| · area) in solid angle. */
@@ -233,8 +254,8 @@ export function lightPdf(lights, slot, ray, hit, out) {
     const hx = hit[0] - ray[0], hy = hit[1] - ray[1], hz = hit[2] - ray[2], distance2 = hx * hx + hy * hy + hz * hz;
     if (!(cos > 0)) return;
     if (kind === BOX_LIGHT) {
-      visibleArea(table, at, ray, visible);
-      pdf = distance2 / (cos * visible[0]);
+      const face = faceOf(table, at, hit);
+      pdf = facingFaces(table, at, ray) && chances[face] > 0 ? (distance2 * chances[face]) / (cos * faces[face]) : 0;
     } else {
       const wx = table[at + G] - ray[0], wy = table[at + G + 1] - ray[1], wz = table[at + G + 2] - ray[2], r = table[at + G + 3];
       const d2 = wx * wx + wy * wy + wz * wz;

@@ -97,6 +97,29 @@ function metal(materials, m, surface, event) {
   event[LOBE] = x * Nx + y * Ny + z * Nz > 0 ? METAL : ABSORBED;
 }
 
+/** Fuzz below which a metal counts as a mirror (one direction only, no light aimed at): the density of a finer blur is past what doubles carry. */
+export const AIMED_FUZZ = 1e-3;
+
+/**
+ * The density (per solid angle) with which a metal of fuzz f, at the hit in
+ * `surface`, draws the unit direction `dir[0 …]`, into `out[0]`: the mirror
+ * direction r plus f × a point uniform in the unit ball is a point uniform in
+ * the ball of radius f around r, and a direction's share of it is the volume
+ * of the ball along that ray, ∫ t² dt from where the ray enters (t0) to where
+ * it leaves (t1), over the ball's volume: (t1³ − t0³) / (4π f³). A direction
+ * below the surface is drawn with this density too, but the path ends there.
+ */
+export function metalDensity(materials, m, surface, dir, out) {
+  const Nx = surface[N], Ny = surface[N + 1], Nz = surface[N + 2], dx = surface[D], dy = surface[D + 1], dz = surface[D + 2];
+  const twice = 2 * (dx * Nx + dy * Ny + dz * Nz), f = materials[m + FUZZ];
+  const b = (dx - twice * Nx) * dir[0] + (dy - twice * Ny) * dir[1] + (dz - twice * Nz) * dir[2]; // cos of the angle to r
+  const gap = f * f - (1 - b) * (1 + b); // f² − sin²: the ray meets the ball when positive
+  out[0] = 0;
+  if (!(gap > 0)) return;
+  const root = Math.sqrt(gap), t1 = b + root, t0 = Math.max(0, b - root);
+  if (t1 > 0) out[0] = (t1 * t1 * t1 - t0 * t0 * t0) / (4 * Math.PI * f * f * f);
+}
+
 /** Glass: Schlick's share F mirrored (untinted), 1 − F refracted by Snell's law (tinted); all mirrored on total internal reflection. */
 function glass(materials, m, surface, event) {
   const Nx = surface[N], Ny = surface[N + 1], Nz = surface[N + 2], dx = surface[D], dy = surface[D + 1], dz = surface[D + 2];

@@ -21,6 +21,8 @@ const CHANGES = ['scene', 'camera', 'path'];
 export class PathProgressiveRenderer {
   #frame = null;
   #sums = null;
+  /** Each pixel's sum of its samples' brightness (the mean of r, g, b) squared: the noise's other half. */
+  #squares = null;
   /** The pass (sample index) being traced, and its next row. */
   #sample = 0;
   #row = 0;
@@ -81,6 +83,8 @@ export class PathProgressiveRenderer {
     else this.buffer = new Uint8ClampedArray(pixels * 4);
     if (this.#sums?.length === pixels * 3) this.#sums.fill(0);
     else this.#sums = new Float64Array(pixels * 3);
+    if (this.#squares?.length === pixels) this.#squares.fill(0);
+    else this.#squares = new Float64Array(pixels);
     this.#sample = 0;
     this.#row = 0;
     this.#paths = 0;
@@ -96,6 +100,23 @@ export class PathProgressiveRenderer {
   get progress() { return (this.#sample * this.height + this.#row) / (this.#frame.samples * this.height); }
   /** Paths traced per second of tracing. */
   get raysPerSecond() { return this.#tracingMs > 0 ? (this.#paths * 1000) / this.#tracingMs : 0; }
+  /**
+   * The picture's noise so far: each pixel's standard error (the spread of its
+   * samples' brightness, the mean of r, g, b, over √samples), averaged over
+   * the pixels; null before two samples. Light sampling lowers it at the same
+   * number of samples.
+   */
+  get noise() {
+    const n = this.#sample, sums = this.#sums, squares = this.#squares;
+    if (n < 2) return null;
+    let total = 0;
+    for (let p = 0, i = 0; p < squares.length; p++, i += 3) {
+      const sum = (sums[i] + sums[i + 1] + sums[i + 2]) / 3, variance = Math.max(0, (squares[p] - (sum * sum) / n) / (n - 1));
+      total += Math.sqrt(variance / n);
+    }
+    return total / squares.length;
+  }
+
   /** The view's progress line: "Sample 37 of 256 · 1.2M paths/s". */
   get progressText() {
     return `Sample ${this.#sample} of ${this.#frame.samples} · ${formatRate(this.raysPerSecond)} paths/s`;
@@ -129,10 +150,12 @@ export class PathProgressiveRenderer {
 
   /** One more path for every pixel of row y. */
   #traceRow(y) {
-    const frame = this.#frame, sums = this.#sums, s = this.#sample, width = this.width;
-    for (let x = 0, i = y * width * 3; x < width; x++, i += 3) {
+    const frame = this.#frame, sums = this.#sums, squares = this.#squares, s = this.#sample, width = this.width;
+    for (let x = 0, i = y * width * 3, p = y * width; x < width; x++, i += 3, p++) {
       tracePath(frame, x, y, s);
       sums[i] += radiance[0]; sums[i + 1] += radiance[1]; sums[i + 2] += radiance[2];
+      const brightness = (radiance[0] + radiance[1] + radiance[2]) / 3;
+      squares[p] += brightness * brightness;
     }
     this.#paths += width;
   }
