@@ -14,12 +14,16 @@
  * the homework. The kit's own mistake panel is off in the frame (the page
  * shows them, at the editor's lines), and so are its task list and
  * self-check: the page keeps them, outside the frame.
+ *
+ * The page may send new values of the scene's or the camera's fields (a
+ * number scrubbed in the editor): the frame sets them in a copy of its
+ * view's scene, as JSON, and traces again, coarse to fine, with no new run.
  */
 import p5 from 'p5';
 import { pageViews } from '../lib/p5/page-state.js';
 import { errorMessage } from '../lib/p5/error-panel.js';
-import { sceneToJSON, cameraToJSON } from '../lib/scene/json.js';
-import { codePlace } from './frame-protocol.js';
+import { sceneToJSON, cameraToJSON, sceneFromJSON, cameraFromJSON } from '../lib/scene/json.js';
+import { codePlace, readValues } from './frame-protocol.js';
 
 export * from '../lib/index.js';
 export * from '../lib/p5/index.js';
@@ -70,9 +74,40 @@ export function startFrame({ sourceURL, selected }, tell) {
       if (view) {
         scene.follow(view);
         view.on('restart', () => scene.soon());
+        addEventListener('message', (event) => {
+          const changes = event.source === parent ? readValues(event.data) : null;
+          if (changes) setValues(view, changes, mistake);
+        });
       }
     };
   });
+}
+
+/**
+ * The page's new values in the view's scene and camera: rebuilt from their
+ * JSON with the fields set, checked as any scene (a bad value is a mistake
+ * naming its field, and the last good picture stays), then traced again.
+ */
+function setValues(view, changes, mistake) {
+  const data = { scene: sceneToJSON(view.scene), camera: cameraToJSON(view.camera) };
+  try {
+    for (const { path, value } of changes) setField(data, path, value);
+    const scene = changes.some((c) => c.path[0] === 'scene') ? sceneFromJSON(data.scene) : null;
+    const camera = changes.some((c) => c.path[0] === 'camera') ? cameraFromJSON(data.camera) : null;
+    if (scene) view.setScene(scene);
+    if (camera) view.setCamera(camera);
+  } catch (error) {
+    mistake(error, null);
+  }
+}
+
+/** Sets the field at `path` (['scene', 'objects', '0', 'radius']) in plain data; only a number that is there already. */
+function setField(data, path, value) {
+  let node = data;
+  for (const key of path.slice(0, -1)) node = node !== null && typeof node === 'object' && Object.hasOwn(node, key) ? node[key] : undefined;
+  const key = path.at(-1);
+  if (node === null || typeof node !== 'object' || typeof node[key] !== 'number') throw new RangeError(`${path.slice(1).join('.')} is not a number of the scene`);
+  node[key] = value;
 }
 
 /** How often at most the scene goes to the page while it keeps changing (an animation, a camera that orbits), in ms. */
