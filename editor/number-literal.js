@@ -4,7 +4,7 @@
  * a literal's text one step up or down: a step is one unit of its last
  * decimal place ("4" steps by 1, "0.25" by 0.01), the decimals kept.
  */
-import { syntaxTree } from '@codemirror/language';
+import { syntaxTree, ensureSyntaxTree } from '@codemirror/language';
 
 /** A decimal literal we can step: digits, an optional point and decimals (not 1e3, 0x1f, 10n or 1_000). */
 const DECIMAL = /^-?(\d+\.?\d*|\.\d+)$/;
@@ -17,7 +17,7 @@ const DECIMAL = /^-?(\d+\.?\d*|\.\d+)$/;
  * @returns {{ from: number, to: number, text: string }|null}
  */
 export function literalAt(state, pos) {
-  const tree = syntaxTree(state);
+  const tree = ensureSyntaxTree(state, pos + 1, 100) ?? syntaxTree(state); // parsed up to the caret, even on a busy machine
   for (const side of [-1, 1]) {
     const node = tree.resolveInner(pos, side);
     if (node.name !== 'Number') continue;
