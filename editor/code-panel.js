@@ -119,6 +119,7 @@ function framePage(file, markup) {
 
 /** Runs the editor's code in a new frame (stopping the page's own sketch the first time). */
 async function run(page) {
+  if (!page.editor) return page.say('The code is still loading: press Run again in a moment.');
   clearTimeout(page.timer);
   page.linkWaiting = false;
   const code = page.editor.code();

@@ -23,14 +23,14 @@ import { fieldsOfLiteral, valueInPlace, fieldWords } from './live-values.js';
 export function liveNumbers(host) {
   /** The code of the picture on show, and the scene and camera its frame last reported (plain data). */
   let shownCode = null, shownData = null, ranCode = null;
-  /** The literal whose fields are known: the code around it and the fields' paths. */
+  /** The literal whose fields are known: the code around it and the fields' paths (null: it is no field of the scene). */
   let binding = null;
   /** A literal's first step, running: the code around it, its two values, the scene before. */
   let probe = null;
 
   /** Sends the literal's value in `code` to the frame when only the bound literal differs from the code on show. */
   function sendInPlace(code) {
-    if (!binding || shownCode === null || valueInPlace(binding, shownCode) === null) return null;
+    if (!binding?.fields || shownCode === null || valueInPlace(binding, shownCode) === null) return null;
     const value = valueInPlace(binding, code);
     if (value === null || !host.send({ type: 'values', changes: binding.fields.map((path) => ({ path, value })) })) return null;
     shownCode = code;
@@ -57,7 +57,7 @@ export function liveNumbers(host) {
       const taught = probe !== null && shownCode === probe.code;
       if (taught) {
         const fields = data && fieldsOfLiteral(probe.before, data, probe.was, probe.now);
-        binding = fields ? { prefix: probe.prefix, suffix: probe.suffix, fields } : null;
+        binding = { prefix: probe.prefix, suffix: probe.suffix, fields }; // fields null: no field of the scene
         probe = null;
       }
       shownData = data;
@@ -72,6 +72,7 @@ export function liveNumbers(host) {
       const words = sendInPlace(code);
       if (words !== null) return { run: null, words };
       if (probe && valueInPlace(probe, code) !== null) return { run: null, words: null }; // its first step is running
+      if (scrub && binding?.fields === null && valueInPlace(binding, code) !== null) return { run: 'later', words: `${scrub.now}: your code runs again` };
       const prefix = code.slice(0, scrub?.from), suffix = shownCode?.slice(scrub?.to) ?? '';
       if (scrub && shownData && shownCode === `${prefix}${scrub.was}${suffix}` && code.endsWith(suffix)) {
         probe = { prefix, suffix, was: Number(scrub.was), now: Number(scrub.now), before: shownData, code };

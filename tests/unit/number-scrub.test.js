@@ -122,7 +122,7 @@ describe('liveNumbers: a scrubbed number goes to the frame as a value once its f
     live.ran(withRadius(5));
     live.setUp();
     live.scene(sceneMessage(report(10))); // the radius is computed from it
-    expect(live.changed(withRadius(6), { from: at, to: at + 1, was: '5', now: '6' })).toEqual({ run: 'now', words: null }); // learns again
+    expect(live.changed(withRadius(6), { from: at, to: at + 1, was: '5', now: '6' })).toEqual({ run: 'later', words: '6: your code runs again' });
     expect(sent).toEqual([]);
   });
 
