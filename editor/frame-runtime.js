@@ -22,7 +22,8 @@
 import p5 from 'p5';
 import { pageViews } from '../lib/p5/page-state.js';
 import { errorMessage } from '../lib/p5/error-panel.js';
-import { sceneToJSON, cameraToJSON, sceneFromJSON, cameraFromJSON } from '../lib/scene/json.js';
+import { sceneToJSON, cameraToJSON } from '../lib/scene/json.js';
+import { withValues } from './scene-values.js';
 import { codePlace, readValues } from './frame-protocol.js';
 
 export * from '../lib/index.js';
@@ -83,31 +84,15 @@ export function startFrame({ sourceURL, selected }, tell) {
   });
 }
 
-/**
- * The page's new values in the view's scene and camera: rebuilt from their
- * JSON with the fields set, checked as any scene (a bad value is a mistake
- * naming its field, and the last good picture stays), then traced again.
- */
+/** The page's new values in the view's scene and camera, traced again; a bad value is a mistake naming its field, and the last good picture stays. */
 function setValues(view, changes, mistake) {
-  const data = { scene: sceneToJSON(view.scene), camera: cameraToJSON(view.camera) };
   try {
-    for (const { path, value } of changes) setField(data, path, value);
-    const scene = changes.some((c) => c.path[0] === 'scene') ? sceneFromJSON(data.scene) : null;
-    const camera = changes.some((c) => c.path[0] === 'camera') ? cameraFromJSON(data.camera) : null;
+    const { scene, camera } = withValues(view.scene, view.camera, changes);
     if (scene) view.setScene(scene);
     if (camera) view.setCamera(camera);
   } catch (error) {
     mistake(error, null);
   }
-}
-
-/** Sets the field at `path` (['scene', 'objects', '0', 'radius']) in plain data; only a number that is there already. */
-function setField(data, path, value) {
-  let node = data;
-  for (const key of path.slice(0, -1)) node = node !== null && typeof node === 'object' && Object.hasOwn(node, key) ? node[key] : undefined;
-  const key = path.at(-1);
-  if (node === null || typeof node !== 'object' || typeof node[key] !== 'number') throw new RangeError(`${path.slice(1).join('.')} is not a number of the scene`);
-  node[key] = value;
 }
 
 /** How often at most the scene goes to the page while it keeps changing (an animation, a camera that orbits), in ms. */
