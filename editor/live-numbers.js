@@ -53,7 +53,7 @@ export function liveNumbers(host) {
     failed() { probe = null; },
     /** The frame's report of its scene; true when it taught the page a literal's fields (then the code is followed again). */
     scene(message) {
-      const data = message.scene === null ? null : { scene: JSON.parse(message.scene), camera: JSON.parse(message.camera) };
+      const data = readReport(message);
       const taught = probe !== null && shownCode === probe.code;
       if (taught) {
         const fields = data && fieldsOfLiteral(probe.before, data, probe.was, probe.now);
@@ -81,4 +81,14 @@ export function liveNumbers(host) {
       return { run: 'later', words: scrub ? `${scrub.now}: your code runs again` : null };
     },
   };
+}
+
+/** The frame's scene and camera as plain data; null when it sent none or text that is not JSON (the frame is not trusted). */
+function readReport({ scene, camera }) {
+  if (scene === null || camera === null) return null;
+  try {
+    return { scene: JSON.parse(scene), camera: JSON.parse(camera) };
+  } catch {
+    return null;
+  }
 }

@@ -6,7 +6,7 @@
 // sends changes the code.
 import { readFileSync } from 'node:fs';
 import { test, expect } from '@playwright/test';
-import { waitForDone, watchConsole } from './helpers.js';
+import { waitForDone, watchConsole, clickPixel } from './helpers.js';
 import { setCode, editorText, waitForRun, sketchFrame } from './code-editor.js';
 
 const PLAYGROUND = '/sketches/10-playground.html';
@@ -178,4 +178,21 @@ test('nothing the frame sends changes the code: forged values, edits and scenes 
   await page.waitForTimeout(1_500); // longer than any answer the page would make
   expect(await codeNow(page)).toBe(code);
   await expect(page.locator('[data-code-status]')).toHaveText('Your code ran (run 1).'); // nor did it run again
+});
+
+test('the inspector keeps its pixel while the radius is scrubbed, and its discriminant goes from positive to negative as the sphere shrinks off it', async ({ page }) => {
+  await openAndRun(page, PLAYGROUND);
+  await clickPixel(sketchFrame(page).locator('canvas[data-tracer]'), 44, 24); // 12 px right of the centre: on the sphere of radius 4
+  const discriminant = sketchFrame(page).locator('[data-inspector] [data-route="quadratic"][data-sphere="0"][data-field="discriminant"]');
+  await expect(discriminant).toHaveAttribute('data-value', /^\d/); // two hits
+  await numberIn(page, 'new Sphere(', 3).click(); // the radius, 4
+  await page.keyboard.press('Alt+ArrowDown');
+  await waitForRun(page, 2); // the first step runs the code: the selected pixel goes along
+  await expect(discriminant).toHaveAttribute('data-value', /^\d/); // radius 3: still on it
+  await markFrame(page);
+  await page.keyboard.press('Alt+ArrowDown');
+  await expect(page.locator('[data-code-status]')).toHaveText('radius 2');
+  await expect(discriminant).toHaveAttribute('data-value', /^-/); // the sphere slid off the pixel: no hit
+  await expect(markedFrame(page)).toHaveCount(1); // live, in the same frame
+  await expect(sketchFrame(page).locator('[data-inspector] [data-route="quadratic"][data-sphere="0"][data-field="meaning"]')).toHaveText('no hit');
 });

@@ -126,6 +126,16 @@ describe('liveNumbers: a scrubbed number goes to the frame as a value once its f
     expect(sent).toEqual([]);
   });
 
+  it('a report that is not JSON teaches nothing and throws nothing', () => {
+    const { live, sent } = started();
+    live.changed(withRadius(5), { from: at, to: at + 1, was: '4', now: '5' });
+    live.ran(withRadius(5));
+    live.setUp();
+    expect(live.scene({ type: 'scene', scene: '{"objects": [', camera: '{}' })).toBe(true);
+    expect(live.changed(withRadius(6), { from: at, to: at + 1, was: '5', now: '6' })).toEqual({ run: 'later', words: '6: your code runs again' });
+    expect(sent).toEqual([]);
+  });
+
   it('a forged message is no message: the page knows none that carries code', () => {
     for (const forged of [{ type: 'values', changes: [] }, { type: 'code', code: 'x' }, { type: 'edit', from: 0, to: 3, insert: 'evil' }]) {
       expect(readFrameMessage(forged)).toBeNull();
