@@ -174,6 +174,7 @@ function heard(page, message, current) {
     case 'render': document.body.dataset.render = message.state; break;
     case 'select': page.selected = message.x === null ? null : { x: message.x, y: message.y }; break;
     case 'stuck': // the frames are gone (frame-host.js): the picture too
+      page.live.gone();
       mistake(`Your code did not answer for ${message.seconds} s: is there a loop that never ends (while (true), a step that goes the wrong way)? It was stopped.`);
       page.say('Your code was stopped: fix the loop and it runs again.');
       document.body.dataset.render = 'error';

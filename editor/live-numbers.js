@@ -15,7 +15,7 @@ import { fieldsOfLiteral, valueInPlace, fieldWords } from './live-values.js';
 /**
  * @param {{ send: (message: object) => boolean }} host the frames (frame-host.js)
  * @returns {{
- *   ran: (code: string) => void, setUp: () => void, failed: () => void,
+ *   ran: (code: string) => void, setUp: () => void, failed: () => void, gone: () => void,
  *   scene: (message: { scene: string|null, camera: string|null }) => boolean,
  *   changed: (code: string, scrub?: { from: number, to: number, was: string, now: string }) => { run: 'now'|'later'|null, words: string|null }
  * }}
@@ -51,6 +51,10 @@ export function liveNumbers(host) {
     },
     /** The run stopped at a mistake before its picture: the literal's fields stay unknown. */
     failed() { probe = null; },
+    /** The frames are gone (stopped in a loop): no picture is on show, whatever code comes next runs. */
+    gone() {
+      shownCode = shownData = probe = null;
+    },
     /** The frame's report of its scene; true when it taught the page a literal's fields (then the code is followed again). */
     scene(message) {
       const data = readReport(message);

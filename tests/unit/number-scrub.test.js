@@ -126,6 +126,13 @@ describe('liveNumbers: a scrubbed number goes to the frame as a value once its f
     expect(sent).toEqual([]);
   });
 
+  it('once the frames are gone (a loop that never ends), the same code as before runs again', () => {
+    const { live } = started();
+    expect(live.changed(A, undefined)).toEqual({ run: null, words: null }); // the picture on show is this code's
+    live.gone();
+    expect(live.changed(A, undefined)).toEqual({ run: 'later', words: null });
+  });
+
   it('a report that is not JSON teaches nothing and throws nothing', () => {
     const { live, sent } = started();
     live.changed(withRadius(5), { from: at, to: at + 1, was: '4', now: '5' });
