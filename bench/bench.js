@@ -14,6 +14,7 @@
  * timed alternately with render() and compared byte for byte: it prints both
  * and the ratio (today's figures: docs/performance.md). Then bench/bvh.js:
  * the mesh BVH's per-ray cost at 1k and 100k triangles, and a frame of the bunny; then
+ * bench/scrub.js: a scrubbed number's first coarse picture of the class scene; then
  * bench/paths.js: path tracing's samples per second per core at 320×240, and bytes per sample;
  * and last bench/paired.js: render() of an older commit against the work tree's.
  *
@@ -243,6 +244,10 @@ console.log(`\nload average ${startLoad.toFixed(1)} at the start, ${loadavg()[0]
 // Meshes: the BVH's scaling (1k vs 100k triangles) and a frame of the bunny (bench/bvh.js).
 const { runBvhBench } = await import('./bvh.js');
 runBvhBench();
+
+// A scrubbed number's first coarse picture (bench/scrub.js).
+const { runScrubBench } = await import('./scrub.js');
+runScrubBench();
 
 // Path tracing: samples per second per core at 320×240 and the heap per sample (bench/paths.js).
 const { runPathBench } = await import('./paths.js');

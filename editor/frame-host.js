@@ -124,6 +124,14 @@ export class SketchFrames {
   /** Whether a frame is showing. */
   get showing() { return this.#current !== null; }
 
+  /** Sends the frame on show a message of the page's (new values: frame-protocol.js); false when none is showing. */
+  send(message) {
+    const frame = this.#current;
+    if (!frame?.contentWindow) return false;
+    frame.contentWindow.postMessage(message, '*');
+    return true;
+  }
+
   /**
    * Runs `code` in a new frame, the pixel `selected` selected once it is set up.
    * @param {string} code

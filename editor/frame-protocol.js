@@ -21,6 +21,12 @@
  *     { type: 'size', height }                   the frame's content height in CSS pixels (the page clamps it: frameHeight)
  *   page → frame
  *     { type: 'run', runtime, code, sourceURL, imports, selected }
+ *     { type: 'values', changes: [{ path, value }] }   new values of scene or camera fields, each found by the
+ *                                                page from its own parse of the code (editor/live-values.js):
+ *                                                the frame sets them and traces again, coarse to fine
+ *
+ * Nothing the frame says can change the editor's code: the page writes the
+ * code only from the student's keys and pointer, and from values it computed.
  */
 
 /** The longest message text a frame may send (a mistake's message), in characters. */
@@ -86,6 +92,29 @@ function readScene(m) {
   const order = ORDERS.includes(/** @type {string} */ (m.order)) ? m.order : 'coarse';
   const problem = m.scene === null ? text(m.problem, MAX_MESSAGE) ?? 'the scene could not be written as JSON' : null;
   return { type: 'scene', scene: m.scene, camera: m.camera, mode, order, problem };
+}
+
+/** The most fields one literal may write (a literal shared by a whole row of shapes). */
+const MAX_CHANGES = 256;
+const isKey = (k) => typeof k === 'string' && /^(scene|camera|[A-Za-z]{1,40}|\d{1,6})$/.test(k);
+
+/**
+ * A values message, checked in the frame: its changes, each a path of field
+ * names and indices and a finite number, or null.
+ * @param {unknown} data
+ * @returns {{ path: string[], value: number }[]|null}
+ */
+export function readValues(data) {
+  const m = /** @type {any} */ (data);
+  if (m === null || typeof m !== 'object' || m.type !== 'values' || !Array.isArray(m.changes) || m.changes.length > MAX_CHANGES) return null;
+  const changes = [];
+  for (const c of m.changes) {
+    const path = c?.path;
+    if (!Array.isArray(path) || path.length < 2 || path.length > 8 || !['scene', 'camera'].includes(path[0]) || !path.every(isKey)) return null;
+    if (typeof c.value !== 'number' || !Number.isFinite(c.value)) return null;
+    changes.push({ path: [...path], value: c.value });
+  }
+  return changes;
 }
 
 /**

@@ -14,12 +14,17 @@
  * the homework. The kit's own mistake panel is off in the frame (the page
  * shows them, at the editor's lines), and so are its task list and
  * self-check: the page keeps them, outside the frame.
+ *
+ * The page may send new values of the scene's or the camera's fields (a
+ * number scrubbed in the editor): the frame sets them in a copy of its
+ * view's scene, as JSON, and traces again, coarse to fine, with no new run.
  */
 import p5 from 'p5';
 import { pageViews } from '../lib/p5/page-state.js';
 import { errorMessage } from '../lib/p5/error-panel.js';
 import { sceneToJSON, cameraToJSON } from '../lib/scene/json.js';
-import { codePlace } from './frame-protocol.js';
+import { withValues } from './scene-values.js';
+import { codePlace, readValues } from './frame-protocol.js';
 
 export * from '../lib/index.js';
 export * from '../lib/p5/index.js';
@@ -70,9 +75,24 @@ export function startFrame({ sourceURL, selected }, tell) {
       if (view) {
         scene.follow(view);
         view.on('restart', () => scene.soon());
+        addEventListener('message', (event) => {
+          const changes = event.source === parent ? readValues(event.data) : null;
+          if (changes) setValues(view, changes, mistake);
+        });
       }
     };
   });
+}
+
+/** The page's new values in the view's scene and camera, traced again; a bad value is a mistake naming its field, and the last good picture stays. */
+function setValues(view, changes, mistake) {
+  try {
+    const { scene, camera } = withValues(view.scene, view.camera, changes);
+    if (scene) view.setScene(scene);
+    if (camera) view.setCamera(camera);
+  } catch (error) {
+    mistake(error, null);
+  }
 }
 
 /** How often at most the scene goes to the page while it keeps changing (an animation, a camera that orbits), in ms. */
