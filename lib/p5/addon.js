@@ -9,9 +9,9 @@
  * Each factory module exports `createX(p, options)`; this table is the one
  * place they become methods. A new factory is one more line here.
  */
-import { createTracerView } from './tracer-view.js';
+import { createTracerView } from './tracer/view.js';
 import { createSceneView } from './scene-view.js';
-import { createPhotonView } from './photon-view.js';
+import { createPhotonView } from './tracer/photon-view.js';
 import { createInspector } from './inspector.js';
 import { createAnswerForm } from './answer-form.js';
 import { createPixelMarks, createPixelHighlight } from './pixel-marks.js';

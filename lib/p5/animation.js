@@ -80,7 +80,7 @@ export function blit(canvas, buffer, width, height) {
  * the other options as for the SceneAnimation class below.
  * @param {import('p5').default} p the sketch
  * @param {object} options
- * @param {import('./tracer-view.js').TracerView} options.view where the frames are shown
+ * @param {import('./tracer/view.js').TracerView} options.view where the frames are shown
  * @returns {SceneAnimation}
  * @example
  * const view = p.createTracerView({ scene: classSceneAt(0), camera: new Camera({ width: 160, height: 120 }) });
@@ -111,7 +111,7 @@ export class SceneAnimation {
   #run = 0;
 
   /**
-   * @param {import('./tracer-view.js').TracerView} view where the frames are shown
+   * @param {import('./tracer/view.js').TracerView} view where the frames are shown
    * @param {object} options
    * @param {(t: number) => import('../scene/scene.js').Scene} options.sceneAt the scene t seconds in
    * @param {import('../math/camera.js').Camera} options.camera the camera of every frame

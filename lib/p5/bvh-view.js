@@ -33,7 +33,7 @@ export function createBvhView(_p, options) {
 export class BvhView {
   /**
    * @param {object} options
-   * @param {import('./tracer-view.js').TracerView} options.view the tracer view whose selected pixel's ray is walked
+   * @param {import('./tracer/view.js').TracerView} options.view the tracer view whose selected pixel's ray is walked
    * @param {import('../shapes/mesh.js').Mesh} options.mesh the mesh, as it is in the view's scene
    * @param {string|HTMLElement} [options.parent] where the panel goes (an id or an element; the page's end else)
    * @param {number} [options.size=320] the 3D view's width in CSS pixels (its height is ¾ of it)

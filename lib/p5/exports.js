@@ -6,10 +6,10 @@
  * entry that installs it (no circle of imports).
  */
 export { sketchbookAddon, FACTORIES } from './addon.js';
-export { TracerView } from './tracer-view.js';
-export { orbit } from './gpu-orbit.js'; // turn a view's camera about the point it looks at (as a drag on a GPU view does)
+export { TracerView } from './tracer/view.js';
+export { orbit } from './tracer/gpu-orbit.js'; // turn a view's camera about the point it looks at (as a drag on a GPU view does)
 export { SceneView } from './scene-view.js';
-export { PhotonView } from './photon-view.js';
+export { PhotonView } from './tracer/photon-view.js';
 export { Inspector, answerLine } from './inspector.js';
 export { formatAngle, formatLabel, fmt } from '../text/format.js';
 export { SceneAnimation } from './animation.js';

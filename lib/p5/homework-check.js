@@ -17,7 +17,7 @@ import { joinClassBoard } from './class-board.js';
 /**
  * @param {import('p5').default} p the sketch
  * @param {object} options
- * @param {import('./tracer-view.js').TracerView} options.view whose scene and camera are checked
+ * @param {import('./tracer/view.js').TracerView} options.view whose scene and camera are checked
  * @param {(scene: object, camera: object, options: { prefix: string }) => { passed: boolean, checks: object[] }} options.check e.g. checkTrafficSignal
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where the button and the result go; default the sketch's node
  * @param {string|null} [options.problem] a warning shown above the result (e.g. a bad ?solution= value), as plain text

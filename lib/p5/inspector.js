@@ -21,7 +21,7 @@ import { useStyle, element, resolveParent, copyText, shownName, nameTitle } from
 import { showInBox, downloadText } from './text-box.js';
 import { joinInSlices } from '../text/slices.js';
 import { pixelCSV, pixelCSVLines, rootsMeaning, routesAgree } from './pixel-csv.js';
-import { gpuDifference } from './engines.js';
+import { gpuDifference } from './tracer/engines.js';
 import { createAnnouncer } from './announce.js';
 import { answerLine, pixelAnnouncement } from './pixel-words.js';
 import { virtualRows, VIRTUAL_FROM } from './virtual-rows.js';
@@ -43,7 +43,7 @@ export const AREA_LIGHTS_SHOWN = 8;
  * `p.createInspector({ view })` in a sketch.
  * @param {import('p5').default} p the sketch (unused: the panel goes beside the view)
  * @param {object} options
- * @param {import('./tracer-view.js').TracerView} options.view
+ * @param {import('./tracer/view.js').TracerView} options.view
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] default: beside the view (its parent)
  * @param {string} [options.title] a heading above the panel's answer line (say whose angles it shows)
  * @returns {Inspector}

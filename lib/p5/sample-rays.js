@@ -21,7 +21,7 @@ const ZOOM = 144;
 /**
  * `p.createSampleRays({ view, parent? })`: follows the view's selected pixel.
  * @param {import('p5').default} _p the sketch (unused: the panel is plain DOM)
- * @param {{ view: import('./tracer-view.js').TracerView, parent?: HTMLElement|string }} options
+ * @param {{ view: import('./tracer/view.js').TracerView, parent?: HTMLElement|string }} options
  */
 export function createSampleRays(_p, options) {
   const { view, parent } = checkOptions(options, ['view', 'parent'], 'createSampleRays');

@@ -49,7 +49,7 @@ const OPTIONS = ['view', 'width', 'height', 'parent', 'label', 'planeDistance', 
  * Creates a 3D view of a tracer view's scene (call it from setup()).
  * @param {import('p5').default} p the sketch
  * @param {object} options
- * @param {import('./tracer-view.js').TracerView} options.view the tracer view it shows and selects in
+ * @param {import('./tracer/view.js').TracerView} options.view the tracer view it shows and selects in
  * @param {number} [options.width=480] canvas width, px
  * @param {number} [options.height=360] canvas height, px
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where to put it; default next to the tracer view

@@ -30,7 +30,7 @@ const INPUT_EVENTS = ['input', 'change', 'click', 'pointerup', 'keyup'];
  * @param {import('p5').default} p the sketch
  * @param {object} options
  * @param {string} options.page the lesson page, '00'–'14'
- * @param {import('./tracer-view.js').TracerView} options.view the picture whose selected pixel the tasks look at (or what stands for it: `scene`, `camera`, `onSelect`)
+ * @param {import('./tracer/view.js').TracerView} options.view the picture whose selected pixel the tasks look at (or what stands for it: `scene`, `camera`, `onSelect`)
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where the list goes; default right after the page's `<main>`
  * @param {object} [options.parts] the page's other parts the tasks look at: `photons`, `sceneView`, `animation`
  * @param {number} [options.hintAfterMs=60000] a task's hint shows after this long on the page,

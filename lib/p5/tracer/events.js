@@ -3,7 +3,7 @@
  * returns the function that removes it; `emit(name, …args)` calls them all.
  * The names are fixed, so a typo ('selected') throws instead of never firing.
  */
-import { show } from '../text/check.js';
+import { show } from '../../text/check.js';
 
 /**
  * @param {readonly string[]} names the events there are

@@ -4,8 +4,8 @@
  * failed. Both change only when their words do, so a frame that traced a few
  * more pixels touches nothing on the page.
  */
-import { element } from './dom.js';
-import { formatRate } from '../text/format.js';
+import { element } from '../dom.js';
+import { formatRate } from '../../text/format.js';
 
 /**
  * @returns {{ bar: HTMLElement, note: HTMLElement, show: (renderer: { done: boolean, progress: number, raysPerSecond: number, progressText?: string, problem?: ?string }) => void }}

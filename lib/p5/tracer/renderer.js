@@ -4,11 +4,11 @@
  * frames, large shaded ones on Web Workers. The checks of the options that
  * choose it live here too, so a bad one is refused before anything changes.
  */
-import { ORDERS } from '../tracing/frames.js';
-import { WorkerProgressiveRenderer } from '../tracing/workers/worker-frames.js';
-import { PathProgressiveRenderer } from '../tracing/pathtrace/progressive.js';
-import { modeShader } from '../tracing/modes.js';
-import { show } from '../text/check.js';
+import { ORDERS } from '../../tracing/frames.js';
+import { WorkerProgressiveRenderer } from '../../tracing/workers/worker-frames.js';
+import { PathProgressiveRenderer } from '../../tracing/pathtrace/progressive.js';
+import { modeShader } from '../../tracing/modes.js';
+import { show } from '../../text/check.js';
 
 /**
  * @param {{ scene: any, camera: any, mode: string, order?: string, renderMode?: string, path?: object, budgetMs: number, workers: any }} options

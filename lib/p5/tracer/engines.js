@@ -1,18 +1,18 @@
 /**
  * The tracer view's two engines: the CPU's progressive renderer (on Web
- * Workers for large frames) and the GPU's whole frames (lib/p5/gpu-renderer.js).
- * A path-traced view goes to the GPU's path tracer (lib/p5/gpu-path-renderer.js)
+ * Workers for large frames) and the GPU's whole frames (lib/p5/tracer/gpu-renderer.js).
+ * A path-traced view goes to the GPU's path tracer (lib/p5/tracer/gpu-path-renderer.js)
  * and back, with its path options. Switching keeps the scene, the camera and the order; when the GPU cannot
  * take the picture (no WebGL2, a lost context, a shape it cannot draw, a
  * visual mode other than the shaded picture, set before or after) the view
  * stays on, or goes back to, the CPU, and a line under the picture says why.
  */
-import { WorkerProgressiveRenderer } from '../tracing/workers/worker-frames.js';
+import { WorkerProgressiveRenderer } from '../../tracing/workers/worker-frames.js';
 import { GpuRenderer } from './gpu-renderer.js';
 import { GpuPathRenderer } from './gpu-path-renderer.js';
-import { PathProgressiveRenderer } from '../tracing/pathtrace/progressive.js';
-import { element } from './dom.js';
-import { show } from '../text/check.js';
+import { PathProgressiveRenderer } from '../../tracing/pathtrace/progressive.js';
+import { element } from '../dom.js';
+import { show } from '../../text/check.js';
 
 const ENGINES = ['cpu', 'gpu'];
 

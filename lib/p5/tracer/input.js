@@ -4,7 +4,7 @@
  * keys move the selection, Shift+arrow ten pixels at a time. Pixel
  * coordinates are the traced image's, whatever the canvas's on-screen size.
  */
-import { clamp } from '../math/numbers.js';
+import { clamp } from '../../math/numbers.js';
 
 /** Each arrow key's step, [dx, dy] in traced pixels (y grows downward). */
 const ARROWS = { ArrowLeft: [-1, 0], ArrowRight: [1, 0], ArrowUp: [0, -1], ArrowDown: [0, 1] };

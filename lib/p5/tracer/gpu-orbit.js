@@ -7,9 +7,9 @@
  * A move by keys or a drag is said once it rests, in the lesson's angles
  * (the camera's H and V), so that a student who cannot see it hears it.
  */
-import { Camera } from '../math/camera.js';
-import { formatAngle, formatNumber } from '../text/format.js';
-import { createAnnouncer } from './announce.js';
+import { Camera } from '../../math/camera.js';
+import { formatAngle, formatNumber } from '../../text/format.js';
+import { createAnnouncer } from '../announce.js';
 
 /** Degrees per screen pixel dragged, per arrow press; the share + and − move the camera by. */
 const DRAG = 0.4, TURN = 5, ZOOM = 0.9;

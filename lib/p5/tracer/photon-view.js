@@ -13,23 +13,23 @@
  * data-width, data-height); it holds the page in "rendering" while photons
  * are still on their way.
  */
-import { PhotonTracer } from '../tracing/photons.js';
-import { checkOptions, positiveInteger, show } from '../text/check.js';
-import { registerView } from './page-state.js';
-import { useStyle, element, resolveParent, sketchNode } from './dom.js';
-import { RAY_COLORS } from './scene-view.js';
-import { arrowMove } from './tracer-input.js';
-import { cappedScale, roomFor, watchRoom } from './tracer-layout.js';
-import { describeScene } from '../lesson/describe.js';
-import { reducedMotion } from './announce.js';
+import { PhotonTracer } from '../../tracing/photons.js';
+import { checkOptions, positiveInteger, show } from '../../text/check.js';
+import { registerView } from '../page-state.js';
+import { useStyle, element, resolveParent, sketchNode } from '../dom.js';
+import { RAY_COLORS } from '../scene-view.js';
+import { arrowMove } from './input.js';
+import { cappedScale, roomFor, watchRoom } from './layout.js';
+import { describeScene } from '../../lesson/describe.js';
+import { reducedMotion } from '../announce.js';
 
 const OPTIONS = ['scene', 'camera', 'seed', 'eyeRadius', 'photons', 'samplePaths', 'scale', 'parent', 'label', 'budgetMs', 'link', 'sceneView'];
 
 /**
  * @param {import('p5').default} p the sketch
  * @param {object} options
- * @param {import('../scene/scene.js').Scene} options.scene
- * @param {import('../math/camera.js').Camera} options.camera
+ * @param {import('../../scene/scene.js').Scene} options.scene
+ * @param {import('../../math/camera.js').Camera} options.camera
  * @param {number} [options.seed=1] the photons' random sequence: the same seed, the same picture
  * @param {number} [options.eyeRadius=2] the pupil's radius in scene units
  * @param {number} [options.photons=1000000] photons per run (the "more" button sends as many again)
@@ -38,8 +38,8 @@ const OPTIONS = ['scene', 'camera', 'seed', 'eyeRadius', 'photons', 'samplePaths
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where to put it; default the sketch's node
  * @param {string} [options.label] a caption above the picture
  * @param {number} [options.budgetMs=12] photon time per animation frame
- * @param {import('./tracer-view.js').TracerView} [options.link] a tracer view: a click here selects the same pixel there
- * @param {import('./scene-view.js').SceneView} [options.sceneView] a 3D view to show sample photon paths in
+ * @param {import('./view.js').TracerView} [options.link] a tracer view: a click here selects the same pixel there
+ * @param {import('../scene-view.js').SceneView} [options.sceneView] a 3D view to show sample photon paths in
  * @returns {PhotonView}
  */
 export function createPhotonView(p, options) {

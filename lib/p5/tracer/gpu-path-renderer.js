@@ -9,12 +9,12 @@
  * order whatever the passes, so a finished picture is pathTraceGPU's bytes.
  * Its `buffer` is read back only when asked (a saved PNG, a test).
  */
-import { GpuPathTracer } from '../gpu/path-engine.js';
-import { samplesPerPass } from '../gpu/path-trace-gpu.js';
-import { checkSceneAndCamera } from '../tracing/render.js';
-import { readPathOptions } from '../tracing/pathtrace/path-trace.js';
-import { checkOptions, show } from '../text/check.js';
-import { formatRate } from '../text/format.js';
+import { GpuPathTracer } from '../../gpu/path-engine.js';
+import { samplesPerPass } from '../../gpu/path-trace-gpu.js';
+import { checkSceneAndCamera } from '../../tracing/render.js';
+import { readPathOptions } from '../../tracing/pathtrace/path-trace.js';
+import { checkOptions, show } from '../../text/check.js';
+import { formatRate } from '../../text/format.js';
 
 /** A pass that came back within this long was short: the next one takes twice the samples. */
 const SHORT_PASS_MS = 33;

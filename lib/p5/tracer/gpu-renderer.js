@@ -8,11 +8,11 @@
  * back from the GPU only when asked (a click's inspector, a saved PNG), so
  * the frame loop waits for nothing.
  */
-import { GpuTracer } from '../gpu/engine.js';
-import { Scene } from '../scene/scene.js';
-import { Camera } from '../math/camera.js';
-import { show } from '../text/check.js';
-import { renderPixel } from '../tracing/render.js';
+import { GpuTracer } from '../../gpu/engine.js';
+import { Scene } from '../../scene/scene.js';
+import { Camera } from '../../math/camera.js';
+import { show } from '../../text/check.js';
+import { renderPixel } from '../../tracing/render.js';
 
 export class GpuRenderer {
   /** The engine's canvas and context are made here: an Error saying why when there is no WebGL2 or the scene cannot go to the GPU. */

@@ -4,12 +4,12 @@
  * cannot see the colours hears the discriminant, the roots, H or V, the
  * normal or the depth t of the pixel they select.
  */
-import { Ray } from '../math/ray.js';
-import { copy, scaleAndAdd, Vec3 } from '../math/vec3.js';
-import { sphereFocus } from '../tracing/modes.js';
-import { nearestHit } from '../tracing/trace.js';
-import { horizontalAngle, verticalAngle } from '../math/camera.js';
-import { formatNumber, formatVector, formatAngle } from '../text/format.js';
+import { Ray } from '../../math/ray.js';
+import { copy, scaleAndAdd, Vec3 } from '../../math/vec3.js';
+import { sphereFocus } from '../../tracing/modes.js';
+import { nearestHit } from '../../tracing/trace.js';
+import { horizontalAngle, verticalAngle } from '../../math/camera.js';
+import { formatNumber, formatVector, formatAngle } from '../../text/format.js';
 
 /** The grid of rays a map's summary looks at, at most this many a side. */
 const SUMMARY_SIDE = 64;

@@ -22,32 +22,32 @@
  * tracer-progress.js (the progress bar and the workers' note),
  * tracer-events.js (what it tells listeners: `view.on('select' | 'restart' | 'progress', fn)`).
  */
-import { modeShader, modeLegend } from '../tracing/modes.js';
-import { pixelCoordinate, checkOptions } from '../text/check.js';
-import { inspectPixel } from '../lesson/inspect.js';
-import { sceneHolds } from './scene-holds.js';
-import { registerView } from './page-state.js';
-import { useStyle, element, resolveParent, sketchNode } from './dom.js';
-import { addProjectorSwitch } from './projector.js';
-import { createLegendElement } from './diagrams/legend.js';
-import { drawOverlay } from './tracer-overlay.js';
-import { pixelAt, listenForPixels } from './tracer-input.js';
-import { pngDataURL, pngFilename, download, createSaveButton } from './tracer-export.js';
-import { checkScale, pictureScale, sizePicture, watchRoom } from './tracer-layout.js';
+import { modeShader, modeLegend } from '../../tracing/modes.js';
+import { pixelCoordinate, checkOptions } from '../../text/check.js';
+import { inspectPixel } from '../../lesson/inspect.js';
+import { sceneHolds } from '../scene-holds.js';
+import { registerView } from '../page-state.js';
+import { useStyle, element, resolveParent, sketchNode } from '../dom.js';
+import { addProjectorSwitch } from '../projector.js';
+import { createLegendElement } from '../diagrams/legend.js';
+import { drawOverlay } from './overlay.js';
+import { pixelAt, listenForPixels } from './input.js';
+import { pngDataURL, pngFilename, download, createSaveButton } from './export.js';
+import { checkScale, pictureScale, sizePicture, watchRoom } from './layout.js';
 import { createPictureWords } from './picture-words.js';
-import { reducedMotion } from './announce.js';
-import { createEvents } from './tracer-events.js';
-import { createTracerProgress } from './tracer-progress.js';
+import { reducedMotion } from '../announce.js';
+import { createEvents } from './events.js';
+import { createTracerProgress } from './progress.js';
 import { engineRenderer, showEngine, checkEngine } from './engines.js';
 import { listenForOrbit } from './gpu-orbit.js';
-import { viewRenderer, pathTraced, checkOrder, checkBudget } from './tracer-renderer.js';
+import { viewRenderer, pathTraced, checkOrder, checkBudget } from './renderer.js';
 
 /**
  * Creates a tracer view inside a p5 sketch (call it from setup()).
  * @param {import('p5').default} p the sketch (instance mode), used for its parent node and its lifetime
  * @param {object} options
- * @param {import('../scene/scene.js').Scene} options.scene
- * @param {import('../math/camera.js').Camera} options.camera its width × height is the traced resolution
+ * @param {import('../../scene/scene.js').Scene} options.scene
+ * @param {import('../../math/camera.js').Camera} options.camera its width × height is the traced resolution
  * @param {'auto'|number} [options.scale='auto'] on-screen pixels per traced pixel with 16 px text (more, in whole steps, when the page's text is larger); 'auto' = the largest whole number that fits
  * @param {boolean} [options.grid=false] draw the pixel grid (on an overlay, never into the picture)
  * @param {string} [options.mode='shaded'] visual mode: 'shaded', 'discriminant', 'roots', 'h', 'v', 'normals', 'depth'
@@ -92,7 +92,7 @@ const EVENTS = ['select', 'restart', 'progress'];
  * view.on('progress', ({ progress }) => console.log(`${Math.round(progress * 100)}%`));
  */
 export class TracerView {
-  /** @type {any} a WorkerProgressiveRenderer, or the GPU engine's (lib/p5/engines.js) */ #renderer; #page; #imageData = null; #raf = 0; #destroyed = false;
+  /** @type {any} a WorkerProgressiveRenderer, or the GPU engine's (lib/p5/tracer/engines.js) */ #renderer; #page; #imageData = null; #raf = 0; #destroyed = false;
   #scale; #grid; #mode; #selected = null; #events = createEvents(EVENTS);
   /** The selected pixel's inspectPixel record (null: none selected; undefined: not made yet for this selection and scene). */
   #record;
@@ -174,7 +174,7 @@ export class TracerView {
   set slowRaysPerSecond(n) { this.#renderer.slowRaysPerSecond = n; }
   get engine() { return this.#renderer.engine ?? 'cpu'; } // the engine tracing now, as the canvas's data-engine says
 
-  /** 'gpu': a whole frame every animation frame; 'cpu': progressive. Where the GPU cannot, the CPU, and a line says why (lib/p5/engines.js). */
+  /** 'gpu': a whole frame every animation frame; 'cpu': progressive. Where the GPU cannot, the CPU, and a line says why (lib/p5/tracer/engines.js). */
   setEngine(engine) {
     const { renderer, engine: now, why } = engineRenderer(checkEngine(engine), this.#renderer, { budgetMs: this.budgetMs, shader: modeShader(this.#mode), shaded: this.#mode === 'shaded' });
     if (renderer !== this.#renderer) { this.#renderer.terminate(); this.#renderer = renderer; }
@@ -426,7 +426,7 @@ export class TracerView {
     this.#words.stage(stage); // the application screen readers pass the keys to
 
     this.#progress = createTracerProgress();
-    this.workerNote = this.#progress.note; // lib/p5/engines.js puts the engine's note before it
+    this.workerNote = this.#progress.note; // lib/p5/tracer/engines.js puts the engine's note before it
     this.legendHost = element('div', { class: 'rt-legend-host' });
     const save = createSaveButton(() => this.downloadPNG());
 

@@ -4,7 +4,7 @@
  * every traced pixel the same size, so "pixel 10,12" is a square a class can
  * point at.
  */
-import { show } from '../text/check.js';
+import { show } from '../../text/check.js';
 
 /**
  * 'auto' scale: the picture fits its parent's width, 40rem, 70% of the

@@ -3,7 +3,7 @@
  * picture's canvas holds the traced image at its own resolution and nothing
  * else (the grid and the marks are on the overlay), so it is saved as it is.
  */
-import { element } from './dom.js';
+import { element } from '../dom.js';
 
 /** A canvas's picture as a PNG data URL. */
 export function pngDataURL(canvas) {

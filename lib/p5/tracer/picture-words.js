@@ -13,10 +13,10 @@
  * disclosure reads the traced picture row by row of pixels, in colour names,
  * saying when the rows change.
  */
-import { describeScene, pixelNames, pixelRows, nextPixelNamed, COLOR_NAMES } from '../lesson/describe.js';
-import { MODES } from '../tracing/modes.js';
-import { element } from './dom.js';
-import { createAnnouncer } from './announce.js';
+import { describeScene, pixelNames, pixelRows, nextPixelNamed, COLOR_NAMES } from '../../lesson/describe.js';
+import { MODES } from '../../tracing/modes.js';
+import { element } from '../dom.js';
+import { createAnnouncer } from '../announce.js';
 import { mapSummary, mapValue } from './map-words.js';
 
 /** A camera that moves every frame re-describes the scene at most this often. */
