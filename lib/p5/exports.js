@@ -10,7 +10,7 @@ export { TracerView } from './tracer/view.js';
 export { orbit } from './tracer/gpu-orbit.js'; // turn a view's camera about the point it looks at (as a drag on a GPU view does)
 export { SceneView } from './scene-view.js';
 export { PhotonView } from './tracer/photon-view.js';
-export { Inspector, answerLine } from './inspector.js';
+export { Inspector, answerLine } from './pixel/inspector.js';
 export { formatAngle, formatLabel, fmt } from '../text/format.js';
 export { SceneAnimation } from './animation.js';
 export { exampleInLink } from './example-picker.js';

@@ -22,7 +22,7 @@
 import p5 from 'p5';
 import { ballOf } from '../shapes/index.js';
 import { inspectPixel } from '../lesson/inspect.js';
-import { recordOf } from './pixel-record.js';
+import { recordOf } from './pixel/record.js';
 import { Vec3 } from '../math/vec3.js';
 import { show, checkOptions } from '../text/check.js';
 import { pixelCenter, sceneBounds, orbitCamera, projectToScreen } from '../lesson/rays3d.js';

@@ -13,7 +13,7 @@
  * The list reports tasks newly done with an `rt-task` event, `detail: { page, tasks }`
  * (the ids): on a page served by `npm run class` they go to the teacher's board.
  */
-import { recordOf } from './pixel-record.js';
+import { recordOf } from './pixel/record.js';
 import { lessonOf, LESSONS } from '../lesson/tasks.js';
 import { markDone, clearProgress, pageProgress, progressText } from '../lesson/progress.js';
 import { loadProgress, saveProgress } from './progress-store.js';

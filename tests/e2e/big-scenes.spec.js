@@ -10,7 +10,7 @@ import { Scene, Sphere, Plane, Cylinder, Mesh, AreaLight, PointLight, classScene
 import { MAX_SHADOW_RAYS, MAX_SCENE_TRIANGLES } from '../../lib/scene/work.js';
 import { sceneToJSON } from '../../lib/scene/json.js';
 import { encodeSceneLink } from '../../lib/p5/scene-link.js';
-import { SPHERE_ROWS } from '../../lib/p5/inspector.js';
+import { SPHERE_ROWS } from '../../lib/p5/pixel/inspector.js';
 import { FORM_ROWS } from '../../lib/p5/scene-form.js';
 import { MAX_SCENE_OBJECTS } from '../../lib/scene/codec.js';
 import { BOX_CHARS } from '../../lib/p5/text-box.js';

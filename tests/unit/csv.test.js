@@ -3,7 +3,7 @@
 // quoted so rows never split.
 import { describe, it, expect } from 'vitest';
 import { Scene, Sphere, Camera, inspectPixel } from '../../lib/index.js';
-import { pixelCSV, csvCell } from '../../lib/p5/inspector.js';
+import { pixelCSV, csvCell } from '../../lib/p5/pixel/inspector.js';
 
 /** A tiny CSV reader (RFC 4180): rows of cells. */
 function parseCSV(text) {

@@ -1,7 +1,7 @@
 // The path panel's 3D segments: a path from the eye, hit to hit, on toward the sky, coloured by the throughput it carries.
 import { describe, it, expect } from 'vitest';
 import { Scene, Sphere, Plane, Camera, inspectPath } from '../../lib/index.js';
-import { pathRays } from '../../lib/p5/path-panel.js';
+import { pathRays } from '../../lib/p5/pixel/path-panel.js';
 
 describe('pathRays', () => {
   it('one segment per bounce, from the eye, joined end to end, the last toward the sky when the path left', () => {

@@ -7,10 +7,10 @@
  * shadow rays reach it (the penumbra), and an edge where its rays hit
  * different things.
  */
-import { kindOf } from '../shapes/index.js';
-import { colorName } from '../math/color.js';
-import { formatAngle } from '../text/format.js';
-import { shownName } from './dom.js';
+import { kindOf } from '../../shapes/index.js';
+import { colorName } from '../../math/color.js';
+import { formatAngle } from '../../text/format.js';
+import { shownName } from '../dom.js';
 
 /**
  * The lesson's answer format for a pixel's own ray, one decimal: `Pixel: 10,12; H: -1.9; V: 3.2`.

@@ -3,9 +3,9 @@
  * CSV" and "Download CSV"): a header and one row per sphere, cells a
  * spreadsheet would run as formulas written as text.
  */
-import { toHex, colorName } from '../math/color.js';
-import { formatNumber, formatAngle } from '../text/format.js';
-import { PLAIN_NUMBER } from '../scene/values.js';
+import { toHex, colorName } from '../../math/color.js';
+import { formatNumber, formatAngle } from '../../text/format.js';
+import { PLAIN_NUMBER } from '../../scene/values.js';
 
 /** Relative tolerance within which the two intersection routes "agree". */
 export const AGREE_TOLERANCE = 1e-9;

@@ -6,10 +6,10 @@
  * (orthographic: boxes keep their true proportions). Arrow keys or the
  * buttons turn it; the slider chooses the depth.
  */
-import { element, useStyle } from './dom.js';
-import { createAnnouncer } from './announce.js';
-import { checkOptions, show } from '../text/check.js';
-import { Mesh } from '../shapes/mesh.js';
+import { element, useStyle } from '../dom.js';
+import { createAnnouncer } from '../announce.js';
+import { checkOptions, show } from '../../text/check.js';
+import { Mesh } from '../../shapes/mesh.js';
 
 const STEP = Math.PI / 12; // one key press or button: 15°
 const COLORS = { level: 'rgba(40, 90, 170, 0.55)', entered: '#d9480f', hit: '#c2255c', ray: '#212529', ground: '#868e96' };
@@ -33,8 +33,8 @@ export function createBvhView(_p, options) {
 export class BvhView {
   /**
    * @param {object} options
-   * @param {import('./tracer/view.js').TracerView} options.view the tracer view whose selected pixel's ray is walked
-   * @param {import('../shapes/mesh.js').Mesh} options.mesh the mesh, as it is in the view's scene
+   * @param {import('../tracer/view.js').TracerView} options.view the tracer view whose selected pixel's ray is walked
+   * @param {import('../../shapes/mesh.js').Mesh} options.mesh the mesh, as it is in the view's scene
    * @param {string|HTMLElement} [options.parent] where the panel goes (an id or an element; the page's end else)
    * @param {number} [options.size=320] the 3D view's width in CSS pixels (its height is ¾ of it)
    * @param {number} [options.depth=3] the depth whose boxes are shown at first (the root is depth 0)

@@ -4,7 +4,7 @@
  * scene however many panels follow the view), or, for a pixel the view has
  * not selected, one made here.
  */
-import { inspectPixel } from '../lesson/inspect.js';
+import { inspectPixel } from '../../lesson/inspect.js';
 
 /**
  * @param {{ scene: object, camera: object, selected?: { x: number, y: number }|null, record?: object|null }} view

@@ -6,7 +6,7 @@
  * the view, and each row says its place (aria-rowindex, the table its
  * aria-rowcount) for screen readers.
  */
-import { element } from './dom.js';
+import { element } from '../dom.js';
 
 /** Tables with more rows than this keep only the rows in view. */
 export const VIRTUAL_FROM = 2000;

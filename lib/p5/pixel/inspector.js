@@ -13,21 +13,21 @@
  * Every value sits in an element with data attributes (`data-field`, and `data-sphere`/`data-route`
  * or `data-light` where needed) and its full precision in `data-value`, so tests and worksheets can read it.
  */
-import { recordOf } from './pixel-record.js';
-import { toHex, colorName } from '../math/color.js';
-import { formatNumber, formatVector, formatAngle } from '../text/format.js';
-import { show, checkOptions } from '../text/check.js';
-import { useStyle, element, resolveParent, copyText, shownName, nameTitle } from './dom.js';
-import { showInBox, downloadText } from './text-box.js';
-import { joinInSlices } from '../text/slices.js';
-import { pixelCSV, pixelCSVLines, rootsMeaning, routesAgree } from './pixel-csv.js';
-import { gpuDifference } from './tracer/engines.js';
-import { createAnnouncer } from './announce.js';
-import { answerLine, pixelAnnouncement } from './pixel-words.js';
+import { recordOf } from './record.js';
+import { toHex, colorName } from '../../math/color.js';
+import { formatNumber, formatVector, formatAngle } from '../../text/format.js';
+import { show, checkOptions } from '../../text/check.js';
+import { useStyle, element, resolveParent, copyText, shownName, nameTitle } from '../dom.js';
+import { showInBox, downloadText } from '../text-box.js';
+import { joinInSlices } from '../../text/slices.js';
+import { pixelCSV, pixelCSVLines, rootsMeaning, routesAgree } from './csv.js';
+import { gpuDifference } from '../tracer/engines.js';
+import { createAnnouncer } from '../announce.js';
+import { answerLine, pixelAnnouncement } from './words.js';
 import { virtualRows, VIRTUAL_FROM } from './virtual-rows.js';
 
-export { pixelCSV, pixelCSVLines, csvCell, rootsMeaning, routesAgree, AGREE_TOLERANCE } from './pixel-csv.js';
-export { answerLine, pixelAnnouncement } from './pixel-words.js';
+export { pixelCSV, pixelCSVLines, csvCell, rootsMeaning, routesAgree, AGREE_TOLERANCE } from './csv.js';
+export { answerLine, pixelAnnouncement } from './words.js';
 
 /**
  * A scene with more spheres than this shows only the rows that matter (the
@@ -43,7 +43,7 @@ export const AREA_LIGHTS_SHOWN = 8;
  * `p.createInspector({ view })` in a sketch.
  * @param {import('p5').default} p the sketch (unused: the panel goes beside the view)
  * @param {object} options
- * @param {import('./tracer/view.js').TracerView} options.view
+ * @param {import('../tracer/view.js').TracerView} options.view
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] default: beside the view (its parent)
  * @param {string} [options.title] a heading above the panel's answer line (say whose angles it shows)
  * @returns {Inspector}
@@ -409,7 +409,7 @@ function noSpheres() {
 
 /**
  * A table in a box that scrolls sideways when narrow: the box takes focus (the arrow keys scroll it) and is named.
- * Its `count` rows are made by `rowAt(k)`; past VIRTUAL_FROM only those in view (lib/p5/virtual-rows.js).
+ * Its `count` rows are made by `rowAt(k)`; past VIRTUAL_FROM only those in view (lib/p5/pixel/virtual-rows.js).
  */
 function table(head, count, rowAt, name) {
   const body = element('tbody', {});

@@ -14,10 +14,10 @@
  * Every value sits in an element with `data-field` (and `data-bounce` for a
  * bounce's row), its full precision in `data-value`.
  */
-import { inspectPath } from '../tracing/pathtrace/inspect-path.js';
-import { formatNumber, formatVector } from '../text/format.js';
-import { show, checkOptions } from '../text/check.js';
-import { useStyle, element, resolveParent, sketchNode, shownName } from './dom.js';
+import { inspectPath } from '../../tracing/pathtrace/inspect-path.js';
+import { formatNumber, formatVector } from '../../text/format.js';
+import { show, checkOptions } from '../../text/check.js';
+import { useStyle, element, resolveParent, sketchNode, shownName } from '../dom.js';
 
 const OPTIONS = ['view', 'parent', 'onPath', 'sceneView'];
 const ENDS = {
@@ -32,10 +32,10 @@ const CHART_W = 280, CHART_H = 110;
 /**
  * @param {import('p5').default} p the sketch
  * @param {object} options
- * @param {import('./tracer/view.js').TracerView} options.view a path-traced tracer view (`createTracerView({ path })`)
+ * @param {import('../tracer/view.js').TracerView} options.view a path-traced tracer view (`createTracerView({ path })`)
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where it goes; default the sketch's node
  * @param {(record: object|null) => void} [options.onPath] told each path shown (inspectPath's record), null when none
- * @param {import('./scene-view.js').SceneView} [options.sceneView] a 3D view to draw the path in: a segment per bounce, coloured by its throughput
+ * @param {import('../scene-view.js').SceneView} [options.sceneView] a 3D view to draw the path in: a segment per bounce, coloured by its throughput
  * @returns {PathPanel}
  * @example
  * const view = p.createTracerView({ scene, camera, path: { samples: 64 } });

@@ -9,11 +9,11 @@
  *   const view = p.createTracerView({ scene, camera: new Camera({ width: 64, height: 48, samples: 4 }) });
  *   p.createSampleRays({ view });
  */
-import { recordOf } from './pixel-record.js';
-import { toHex, colorName } from '../math/color.js';
-import { formatAngle, formatNumber } from '../text/format.js';
-import { show, checkOptions } from '../text/check.js';
-import { element, useStyle, resolveParent } from './dom.js';
+import { recordOf } from './record.js';
+import { toHex, colorName } from '../../math/color.js';
+import { formatAngle, formatNumber } from '../../text/format.js';
+import { show, checkOptions } from '../../text/check.js';
+import { element, useStyle, resolveParent } from '../dom.js';
 
 /** Screen pixels of the drawn pixel's side. */
 const ZOOM = 144;
@@ -21,7 +21,7 @@ const ZOOM = 144;
 /**
  * `p.createSampleRays({ view, parent? })`: follows the view's selected pixel.
  * @param {import('p5').default} _p the sketch (unused: the panel is plain DOM)
- * @param {{ view: import('./tracer/view.js').TracerView, parent?: HTMLElement|string }} options
+ * @param {{ view: import('../tracer/view.js').TracerView, parent?: HTMLElement|string }} options
  */
 export function createSampleRays(_p, options) {
   const { view, parent } = checkOptions(options, ['view', 'parent'], 'createSampleRays');

@@ -10,8 +10,8 @@
  *   const pinkOnes = createPixelHighlight(p, view, { name: 'pink', label: 'Highlight every pink pixel', test: isPink, describe });
  *   p.draw = () => pinkOnes.draw();
  */
-import { element } from './dom.js';
-import { checkOptions } from '../text/check.js';
+import { element } from '../dom.js';
+import { checkOptions } from '../../text/check.js';
 
 /**
  * Every pixel `{ x, y }` of an RGBA buffer whose `[r, g, b]` (0–255) passes
@@ -65,7 +65,7 @@ export function createPixelMarks(p, options) {
  * per picture: again after the scene or the camera changes.
  * @param {import('p5').default} p the sketch: its canvas becomes the marks' overlay (see createPixelMarks)
  * @param {object} options
- * @param {import('./tracer/view.js').TracerView} options.view
+ * @param {import('../tracer/view.js').TracerView} options.view
  * @param {string} options.name names the parts: the box has `data-show-<name>`, the line
  *   `data-<name>-count` (set to the count), the overlay the class `<name>-marks`
  * @param {string} options.label the words beside the box
