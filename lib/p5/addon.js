@@ -10,7 +10,7 @@
  * place they become methods. A new factory is one more line here.
  */
 import { createTracerView } from './tracer/view.js';
-import { createSceneView } from './scene-view.js';
+import { createSceneView } from './scene-view/view.js';
 import { createPhotonView } from './tracer/photon-view.js';
 import { createInspector } from './pixel/inspector.js';
 import { createAnswerForm } from './answer-form.js';

@@ -8,7 +8,7 @@
 export { sketchbookAddon, FACTORIES } from './addon.js';
 export { TracerView } from './tracer/view.js';
 export { orbit } from './tracer/gpu-orbit.js'; // turn a view's camera about the point it looks at (as a drag on a GPU view does)
-export { SceneView } from './scene-view.js';
+export { SceneView } from './scene-view/view.js';
 export { PhotonView } from './tracer/photon-view.js';
 export { Inspector, answerLine } from './pixel/inspector.js';
 export { formatAngle, formatLabel, fmt } from '../text/format.js';

@@ -35,7 +35,7 @@ const CHART_W = 280, CHART_H = 110;
  * @param {import('../tracer/view.js').TracerView} options.view a path-traced tracer view (`createTracerView({ path })`)
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where it goes; default the sketch's node
  * @param {(record: object|null) => void} [options.onPath] told each path shown (inspectPath's record), null when none
- * @param {import('../scene-view.js').SceneView} [options.sceneView] a 3D view to draw the path in: a segment per bounce, coloured by its throughput
+ * @param {import('../scene-view/view.js').SceneView} [options.sceneView] a 3D view to draw the path in: a segment per bounce, coloured by its throughput
  * @returns {PathPanel}
  * @example
  * const view = p.createTracerView({ scene, camera, path: { samples: 64 } });

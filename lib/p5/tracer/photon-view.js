@@ -17,7 +17,7 @@ import { PhotonTracer } from '../../tracing/photons.js';
 import { checkOptions, positiveInteger, show } from '../../text/check.js';
 import { registerView } from '../page-state.js';
 import { useStyle, element, resolveParent, sketchNode } from '../dom.js';
-import { RAY_COLORS } from '../scene-view.js';
+import { RAY_COLORS } from '../scene-view/view.js';
 import { arrowMove } from './input.js';
 import { cappedScale, roomFor, watchRoom } from './layout.js';
 import { describeScene } from '../../lesson/describe.js';
@@ -39,7 +39,7 @@ const OPTIONS = ['scene', 'camera', 'seed', 'eyeRadius', 'photons', 'samplePaths
  * @param {string} [options.label] a caption above the picture
  * @param {number} [options.budgetMs=12] photon time per animation frame
  * @param {import('./view.js').TracerView} [options.link] a tracer view: a click here selects the same pixel there
- * @param {import('../scene-view.js').SceneView} [options.sceneView] a 3D view to show sample photon paths in
+ * @param {import('../scene-view/view.js').SceneView} [options.sceneView] a 3D view to show sample photon paths in
  * @returns {PhotonView}
  */
 export function createPhotonView(p, options) {

@@ -5,10 +5,10 @@
  * lines, each with its value). Placing a label is projecting its point with
  * the orbit camera; a point behind the view has no label.
  */
-import { intersectGeometric } from '../shapes/sphere.js';
-import { Vec3 } from '../math/vec3.js';
-import { geometricConstruction, projectToScreen } from '../lesson/rays3d.js';
-import { INK, NORMAL, CONSTRUCT, FONT } from './diagrams/style.js';
+import { intersectGeometric } from '../../shapes/sphere.js';
+import { Vec3 } from '../../math/vec3.js';
+import { geometricConstruction, projectToScreen } from '../../lesson/rays3d.js';
+import { INK, NORMAL, CONSTRUCT, FONT } from '../diagrams/style.js';
 
 /**
  * The geometric route of `record`'s ray for `sphere`: `{ rays, labels }`,

@@ -5,8 +5,8 @@
  * (keys h / v), and the story of a pixel Shoot sends flying. Lengths scale
  * with the scene's radius `r`: a missing ray goes 2.5 r out, a normal is short.
  */
-import { inspectPixel } from '../lesson/inspect.js';
-import { raySegments, sampleSegments, primarySegment } from '../lesson/rays3d.js';
+import { inspectPixel } from '../../lesson/inspect.js';
+import { raySegments, sampleSegments, primarySegment } from '../../lesson/rays3d.js';
 
 /**
  * The story of a pixel (its inspectPixel record) as segments: primary ray,

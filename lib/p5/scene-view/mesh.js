@@ -9,10 +9,10 @@
  * A list is `{ positions, colors, alpha }`: x, −y, z per vertex (p5's WEBGL y
  * points down) and r, g, b, a in 0–1, three vertices a triangle.
  */
-import { ballOf } from '../shapes/index.js';
-import { Vec3, sub, dot, normalize, cross } from '../math/vec3.js';
-import { HUGE_RADIUS } from '../lesson/rays3d.js';
-import { lightsOf } from '../lights/index.js';
+import { ballOf } from '../../shapes/index.js';
+import { Vec3, sub, dot, normalize, cross } from '../../math/vec3.js';
+import { HUGE_RADIUS } from '../../lesson/rays3d.js';
+import { lightsOf } from '../../lights/index.js';
 
 /** Emissive shapes and point lights: a warm glow. */
 export const GLOW = [1, 0.84, 0.3];
@@ -108,7 +108,7 @@ const _outlines = new WeakMap();
  * The loops of points the scene's lights draw of themselves in the 3D view,
  * beyond a glow per source: each light's `outlines()` (an area light's rim),
  * made again only when its `viewKey()` changes.
- * @returns {import('../math/vec3.js').Vec3[][]}
+ * @returns {import('../../math/vec3.js').Vec3[][]}
  */
 export function lightLoops(scene) {
   const loops = [];
@@ -139,7 +139,7 @@ export function sphereMesh(g, c, r, rgb, lit = true, rings = 16, segments = 28) 
 /** A box: two triangles a face, each face shaded by its normal. */
 export function boxMesh(g, min, max, rgb) {
   const P = (x, y, z) => new Vec3(x ? max.x : min.x, y ? max.y : min.y, z ? max.z : min.z);
-  /** @type {Array<[import('../math/vec3.js').Vec3, import('../math/vec3.js').Vec3[]]>} a face: its normal and its four corners */
+  /** @type {Array<[import('../../math/vec3.js').Vec3, import('../../math/vec3.js').Vec3[]]>} a face: its normal and its four corners */
   const faces = [
     [new Vec3(1, 0, 0), [P(1, 0, 0), P(1, 1, 0), P(1, 1, 1), P(1, 0, 1)]], [new Vec3(-1, 0, 0), [P(0, 0, 0), P(0, 0, 1), P(0, 1, 1), P(0, 1, 0)]],
     [new Vec3(0, 1, 0), [P(0, 1, 0), P(0, 1, 1), P(1, 1, 1), P(1, 1, 0)]], [new Vec3(0, -1, 0), [P(0, 0, 0), P(1, 0, 0), P(1, 0, 1), P(0, 0, 1)]],

@@ -5,10 +5,10 @@
  * The arrow keys and the buttons are scene-view-keys.js. The orbit's maths
  * (how far a drag turns, how near the wheel may come) is here, with no page.
  */
-import { clamp } from '../math/numbers.js';
-import { show, checkOptions } from '../text/check.js';
-import { screenRay, pickImagePlane } from '../lesson/rays3d.js';
-import { listenForOrbitKeys } from './scene-view-keys.js';
+import { clamp } from '../../math/numbers.js';
+import { show, checkOptions } from '../../text/check.js';
+import { screenRay, pickImagePlane } from '../../lesson/rays3d.js';
+import { listenForOrbitKeys } from './keys.js';
 
 /** Mouse travel (px) under which a press and release is a click, not a turn. */
 export const CLICK_SLOP = 4;

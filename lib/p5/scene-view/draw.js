@@ -5,10 +5,10 @@
  * WEBGL y points down).
  */
 import p5 from 'p5';
-import { Vec3, sub, dot } from '../math/vec3.js';
-import { imagePlane } from '../lesson/rays3d.js';
-import { buildMeshes, shapesKey, lightLoops } from './scene-view-mesh.js';
-import { INK, MUTED, RAY, NORMAL, LIT, SHADOW, CONSTRUCT } from './diagrams/style.js';
+import { Vec3, sub, dot } from '../../math/vec3.js';
+import { imagePlane } from '../../lesson/rays3d.js';
+import { buildMeshes, shapesKey, lightLoops } from './mesh.js';
+import { INK, MUTED, RAY, NORMAL, LIT, SHADOW, CONSTRUCT } from '../diagrams/style.js';
 
 /** Colours of the kinds of ray (shadow rays as in the 2D diagrams). */
 export const RAY_COLORS = { primary: RAY, normal: NORMAL, lit: LIT, shadow: SHADOW, away: MUTED, reflection: CONSTRUCT, refraction: '#0f8b8d', photon: '#e07b00', sample: '#7b3fbf', area: '#b7791f' };

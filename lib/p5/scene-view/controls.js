@@ -4,10 +4,10 @@
  * Reset view and the turn / zoom buttons (scene-view-keys.js). The buttons call
  * the view's own methods, passed in.
  */
-import { element } from './dom.js';
-import { createOrbitButtons } from './scene-view-keys.js';
-import { orbitChanged } from './scene-view-words.js';
-import { reducedMotion } from './announce.js';
+import { element } from '../dom.js';
+import { createOrbitButtons } from './keys.js';
+import { orbitChanged } from './words.js';
+import { reducedMotion } from '../announce.js';
 
 /** Speeds the shoot slider offers, rays per second. */
 export const SPEEDS = [1, 2, 4, 8, 15, 30, 60, 120];

@@ -20,20 +20,20 @@
  * (words at scene points), -input.js (pointer, orbit maths), -keys.js, -controls.js, -words.js.
  */
 import p5 from 'p5';
-import { ballOf } from '../shapes/index.js';
-import { inspectPixel } from '../lesson/inspect.js';
-import { recordOf } from './pixel/record.js';
-import { Vec3 } from '../math/vec3.js';
-import { show, checkOptions } from '../text/check.js';
-import { pixelCenter, sceneBounds, orbitCamera, projectToScreen } from '../lesson/rays3d.js';
-import { useStyle, resolveParent } from './dom.js';
-import { nearestAhead } from './scene-view-mesh.js';
-import { RAY_COLORS, StillGeometry, PlaneTexture, wireSphere, line3, drawSegment, drawImagePlane, drawFrustum, drawLightOutlines } from './scene-view-draw.js';
-import { Flight, legSeconds, checkSpeed } from './scene-view-flight.js';
-import { pixelStory, shotStory, fanRays } from './scene-view-rays.js';
-import { constructionOf, placeLabels, drawLabels } from './scene-view-labels.js';
-import { listenForInput, pixelUnder, checkOrbit, clampPitch, zoomDistance } from './scene-view-input.js';
-import { createControls, createFigure, dressCanvas, SPEEDS } from './scene-view-controls.js';
+import { ballOf } from '../../shapes/index.js';
+import { inspectPixel } from '../../lesson/inspect.js';
+import { recordOf } from '../pixel/record.js';
+import { Vec3 } from '../../math/vec3.js';
+import { show, checkOptions } from '../../text/check.js';
+import { pixelCenter, sceneBounds, orbitCamera, projectToScreen } from '../../lesson/rays3d.js';
+import { useStyle, resolveParent } from '../dom.js';
+import { nearestAhead } from './mesh.js';
+import { RAY_COLORS, StillGeometry, PlaneTexture, wireSphere, line3, drawSegment, drawImagePlane, drawFrustum, drawLightOutlines } from './draw.js';
+import { Flight, legSeconds, checkSpeed } from './flight.js';
+import { pixelStory, shotStory, fanRays } from './rays.js';
+import { constructionOf, placeLabels, drawLabels } from './labels.js';
+import { listenForInput, pixelUnder, checkOrbit, clampPitch, zoomDistance } from './input.js';
+import { createControls, createFigure, dressCanvas, SPEEDS } from './controls.js';
 
 export { RAY_COLORS };
 /** Vertical field of view of the 3D view's own camera, radians. */
@@ -49,7 +49,7 @@ const OPTIONS = ['view', 'width', 'height', 'parent', 'label', 'planeDistance', 
  * Creates a 3D view of a tracer view's scene (call it from setup()).
  * @param {import('p5').default} p the sketch
  * @param {object} options
- * @param {import('./tracer/view.js').TracerView} options.view the tracer view it shows and selects in
+ * @param {import('../tracer/view.js').TracerView} options.view the tracer view it shows and selects in
  * @param {number} [options.width=480] canvas width, px
  * @param {number} [options.height=360] canvas height, px
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where to put it; default next to the tracer view
@@ -58,7 +58,7 @@ const OPTIONS = ['view', 'width', 'height', 'parent', 'label', 'planeDistance', 
  * @param {boolean} [options.frustum=true] draw the view frustum
  * @param {{yaw?: number, pitch?: number, distance?: number}} [options.orbit] where to look from at first (degrees; distance in scene units)
  * @param {boolean} [options.controls=true] show the Reset button, the Shoot button and its speed slider
- * @param {import('../shapes/sphere.js').Sphere} [options.construction] a sphere: draw the geometric route (L, tca, d, thc, with their values) of the selected ray for it
+ * @param {import('../../shapes/sphere.js').Sphere} [options.construction] a sphere: draw the geometric route (L, tca, d, thc, with their values) of the selected ray for it
  * @param {number} [options.raysPerSecond=4] how fast Shoot sends rays (one of 1, 2, 4, 8, 15, 30, 60, 120)
  * @returns {SceneView}
  * @example

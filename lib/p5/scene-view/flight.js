@@ -5,9 +5,9 @@
  * the bounce, and so on), then fades. No p5 and no clock of its own: the
  * caller passes the time and draws what `flightFrame` says.
  */
-import { clamp } from '../math/numbers.js';
-import { Vec3 } from '../math/vec3.js';
-import { show } from '../text/check.js';
+import { clamp } from '../../math/numbers.js';
+import { Vec3 } from '../../math/vec3.js';
+import { show } from '../../text/check.js';
 
 /** Rays in flight at most: older ones go (they would only overlap). */
 export const MAX_FLYING = 60;

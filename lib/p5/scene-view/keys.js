@@ -3,8 +3,8 @@
  * keys turn it (Shift: further), + and − zoom it, Esc stops a Shoot; the same
  * moves as buttons beside it, for a pointer that cannot drag.
  */
-import { element } from './dom.js';
-import { orbitChanged } from './scene-view-words.js';
+import { element } from '../dom.js';
+import { orbitChanged } from './words.js';
 
 /** Degrees one arrow press turns the view (Shift: three times as far). */
 export const TURN_STEP = 10;
