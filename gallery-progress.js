@@ -6,7 +6,7 @@
  */
 import { LESSONS } from './lib/lesson/tasks.js';
 import { achievements, pageProgress, progressText, progressCode } from './lib/lesson/progress.js';
-import { loadProgress, saveProgress } from './lib/p5/progress-store.js';
+import { loadProgress, saveProgress } from './lib/p5/controls/progress-store.js';
 import { element, copyText } from './lib/p5/dom.js';
 
 /** Adds the progress to the cards of `list` (links to sketches/NN-…) and the progress section after it. */

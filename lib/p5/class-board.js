@@ -2,9 +2,9 @@
  * A student's page and the class board (`npm run class`): what the student
  * submits goes to the class server, which shows it on the teacher's board.
  *
- *   sketch 04's Check        an `rt-answer` event whose detail has `submitted` and `send` (lib/p5/answer-form.js)
- *   a task done              an `rt-task` event (lib/p5/task-list.js)
- *   a homework self-check    an `rt-check` event (lib/p5/homework-check.js)
+ *   sketch 04's Check        an `rt-answer` event whose detail has `submitted` and `send` (lib/p5/controls/answer-form.js)
+ *   a task done              an `rt-task` event (lib/p5/controls/task-list.js)
+ *   a homework self-check    an `rt-check` event (lib/p5/controls/homework-check.js)
  *   the lesson's poll        sendToClassBoard({ kind: 'poll', value }) (poll.js)
  *
  * Only a page the class server served sends anything: it carries

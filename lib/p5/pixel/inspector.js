@@ -18,7 +18,7 @@ import { toHex, colorName } from '../../math/color.js';
 import { formatNumber, formatVector, formatAngle } from '../../text/format.js';
 import { show, checkOptions } from '../../text/check.js';
 import { useStyle, element, resolveParent, copyText, shownName, nameTitle } from '../dom.js';
-import { showInBox, downloadText } from '../text-box.js';
+import { showInBox, downloadText } from '../controls/text-box.js';
 import { joinInSlices } from '../../text/slices.js';
 import { pixelCSV, pixelCSVLines, rootsMeaning, routesAgree } from './csv.js';
 import { gpuDifference } from '../tracer/engines.js';
@@ -133,7 +133,7 @@ export class Inspector {
   /**
    * Copies the CSV to the clipboard when the browser allows it; the text is
    * always in the panel's text box too, selected, ready for Ctrl+C (up to
-   * the box's limit, lib/p5/text-box.js; "Download CSV" saves it all).
+   * the box's limit, lib/p5/controls/text-box.js; "Download CSV" saves it all).
    * Built in slices (lib/text/slices.js): 10,000 rows are 1 MB of text.
    */
   async copyCSV() {

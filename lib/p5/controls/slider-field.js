@@ -9,9 +9,9 @@
  * The text box is read by readNumber, as every value box of the sketchbook
  * is; fieldMessage needs no page.
  */
-import { readNumber } from '../scene/values.js';
-import { withText } from './dom.js';
-import { checkOptions } from '../text/check.js';
+import { readNumber } from '../../scene/values.js';
+import { withText } from '../dom.js';
+import { checkOptions } from '../../text/check.js';
 
 /**
  * The line under a field with a bad value: its label, what is wrong, and that

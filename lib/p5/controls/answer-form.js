@@ -10,10 +10,10 @@
  *   form.show({ ok: true, message: 'Pink!', color, answer: 'Pixel: 10,12; H: 30; V: -82' });
  */
 import { valueBox } from './value-box.js';
-import { element, resolveParent, sketchNode, copyText } from './dom.js';
-import { checkOptions } from '../text/check.js';
-import { joinClassBoard } from './class-board.js';
-import { createAnnouncer } from './announce.js';
+import { element, resolveParent, sketchNode, copyText } from '../dom.js';
+import { checkOptions } from '../../text/check.js';
+import { joinClassBoard } from '../class-board.js';
+import { createAnnouncer } from '../announce.js';
 
 /**
  * Reads every box (each bad one shows its message): `{ name: value }`, or

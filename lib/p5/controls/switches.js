@@ -11,8 +11,8 @@
  * Each switch is returned as the p5.Element it is: `checked()`, `value()`.
  * Every text is set as text, never parsed as HTML.
  */
-import { element, withText } from './dom.js';
-import { checkOptions } from '../text/check.js';
+import { element, withText } from '../dom.js';
+import { checkOptions } from '../../text/check.js';
 
 /**
  * @param {import('p5').default} p the sketch (its DOM functions make the parts)

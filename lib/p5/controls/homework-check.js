@@ -9,15 +9,15 @@
  *
  *   p.createHomeworkCheck({ view, check: checkTrafficSignal, parent: 'check', problem });
  */
-import { element, resolveParent, sketchNode, useStyle } from './dom.js';
-import { createAnnouncer } from './announce.js';
-import { checkOptions } from '../text/check.js';
-import { joinClassBoard } from './class-board.js';
+import { element, resolveParent, sketchNode, useStyle } from '../dom.js';
+import { createAnnouncer } from '../announce.js';
+import { checkOptions } from '../../text/check.js';
+import { joinClassBoard } from '../class-board.js';
 
 /**
  * @param {import('p5').default} p the sketch
  * @param {object} options
- * @param {import('./tracer/view.js').TracerView} options.view whose scene and camera are checked
+ * @param {import('../tracer/view.js').TracerView} options.view whose scene and camera are checked
  * @param {(scene: object, camera: object, options: { prefix: string }) => { passed: boolean, checks: object[] }} options.check e.g. checkTrafficSignal
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where the button and the result go; default the sketch's node
  * @param {string|null} [options.problem] a warning shown above the result (e.g. a bad ?solution= value), as plain text

@@ -15,10 +15,10 @@
  * The pure parts (framesPerSecond, FrameCounter, statsLine, readWorkerCount,
  * sameBytes) need no page.
  */
-import { registerView } from './page-state.js';
-import { element } from './dom.js';
-import { ParallelRenderer } from '../tracing/workers/parallel.js';
-import { checkOptions } from '../text/check.js';
+import { registerView } from '../page-state.js';
+import { element } from '../dom.js';
+import { ParallelRenderer } from '../../tracing/workers/parallel.js';
+import { checkOptions } from '../../text/check.js';
 
 /** Frames under way on the workers at most: one shown while the next ones are traced. */
 export const PIPELINE = 2;
@@ -80,7 +80,7 @@ export function blit(canvas, buffer, width, height) {
  * the other options as for the SceneAnimation class below.
  * @param {import('p5').default} p the sketch
  * @param {object} options
- * @param {import('./tracer/view.js').TracerView} options.view where the frames are shown
+ * @param {import('../tracer/view.js').TracerView} options.view where the frames are shown
  * @returns {SceneAnimation}
  * @example
  * const view = p.createTracerView({ scene: classSceneAt(0), camera: new Camera({ width: 160, height: 120 }) });
@@ -111,10 +111,10 @@ export class SceneAnimation {
   #run = 0;
 
   /**
-   * @param {import('./tracer/view.js').TracerView} view where the frames are shown
+   * @param {import('../tracer/view.js').TracerView} view where the frames are shown
    * @param {object} options
-   * @param {(t: number) => import('../scene/scene.js').Scene} options.sceneAt the scene t seconds in
-   * @param {import('../math/camera.js').Camera} options.camera the camera of every frame
+   * @param {(t: number) => import('../../scene/scene.js').Scene} options.sceneAt the scene t seconds in
+   * @param {import('../../math/camera.js').Camera} options.camera the camera of every frame
    * @param {number} [options.workers=4] how many workers share a frame on 'workers'
    * @param {{ elt?: HTMLElement }|HTMLElement} [options.stats] gets the stats line and data-frame, data-fps, data-time
    * @param {(playing: boolean) => void} [options.onPlay] after Play / Pause

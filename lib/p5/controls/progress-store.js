@@ -4,8 +4,8 @@
  * that is off, full, empty, corrupt or foreign never raises an error: it
  * reads as nothing done, and the page works on without keeping anything.
  */
-import { LESSONS } from '../lesson/tasks.js';
-import { PROGRESS_KEY, parseProgress, serializeProgress } from '../lesson/progress.js';
+import { LESSONS } from '../../lesson/tasks.js';
+import { PROGRESS_KEY, parseProgress, serializeProgress } from '../../lesson/progress.js';
 
 /** The progress kept in this browser, `{ '01': ['select', …], … }`. */
 export function loadProgress(storage = globalThis.localStorage) {

@@ -13,14 +13,14 @@
  * The list reports tasks newly done with an `rt-task` event, `detail: { page, tasks }`
  * (the ids): on a page served by `npm run class` they go to the teacher's board.
  */
-import { recordOf } from './pixel/record.js';
-import { lessonOf, LESSONS } from '../lesson/tasks.js';
-import { markDone, clearProgress, pageProgress, progressText } from '../lesson/progress.js';
+import { recordOf } from '../pixel/record.js';
+import { lessonOf, LESSONS } from '../../lesson/tasks.js';
+import { markDone, clearProgress, pageProgress, progressText } from '../../lesson/progress.js';
 import { loadProgress, saveProgress } from './progress-store.js';
-import { checkOptions, show } from '../text/check.js';
-import { element, resolveParent, useStyle } from './dom.js';
-import { joinClassBoard } from './class-board.js';
-import { createAnnouncer } from './announce.js';
+import { checkOptions, show } from '../../text/check.js';
+import { element, resolveParent, useStyle } from '../dom.js';
+import { joinClassBoard } from '../class-board.js';
+import { createAnnouncer } from '../announce.js';
 
 const OPTIONS = ['page', 'view', 'parent', 'parts', 'hintAfterMs', 'hintAfterTries'];
 /** What the student does that may finish a task whose state it changes (a box, a switch, a drag in 3D). */
@@ -30,7 +30,7 @@ const INPUT_EVENTS = ['input', 'change', 'click', 'pointerup', 'keyup'];
  * @param {import('p5').default} p the sketch
  * @param {object} options
  * @param {string} options.page the lesson page, '00'–'14'
- * @param {import('./tracer/view.js').TracerView} options.view the picture whose selected pixel the tasks look at (or what stands for it: `scene`, `camera`, `onSelect`)
+ * @param {import('../tracer/view.js').TracerView} options.view the picture whose selected pixel the tasks look at (or what stands for it: `scene`, `camera`, `onSelect`)
  * @param {HTMLElement|string|{elt: HTMLElement}} [options.parent] where the list goes; default right after the page's `<main>`
  * @param {object} [options.parts] the page's other parts the tasks look at: `photons`, `sceneView`, `animation`
  * @param {number} [options.hintAfterMs=60000] a task's hint shows after this long on the page,

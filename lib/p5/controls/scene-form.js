@@ -11,13 +11,13 @@
  * Which boxes each kind of object gets, and the new JSON a box's value makes:
  * lib/scene/fields.js.
  */
-import { colorToHex } from '../math/color.js';
-import { readColor, colorText } from '../scene/values.js';
-import { tableColumns, fieldText, formTypes } from '../scene/fields.js';
-import { shapeClass } from '../shapes/index.js';
-import { SceneEdits } from '../scene/edits.js';
-import { show, checkOptions } from '../text/check.js';
-import { useStyle, element, shownName, nameTitle } from './dom.js';
+import { colorToHex } from '../../math/color.js';
+import { readColor, colorText } from '../../scene/values.js';
+import { tableColumns, fieldText, formTypes } from '../../scene/fields.js';
+import { shapeClass } from '../../shapes/index.js';
+import { SceneEdits } from '../../scene/edits.js';
+import { show, checkOptions } from '../../text/check.js';
+import { useStyle, element, shownName, nameTitle } from '../dom.js';
 import { valueBox } from './value-box.js';
 
 /** The point light's table (each shape's is its class's `form`). */
@@ -47,7 +47,7 @@ export const FORM_ROWS = 40;
  * @param {object} options
  * @param {object} options.json scene JSON (sceneToJSON)
  * @param {HTMLElement} options.parent
- * @param {(scene: import('../scene/scene.js').Scene, json: object) => void} options.onChange
+ * @param {(scene: import('../../scene/scene.js').Scene, json: object) => void} options.onChange
  * @example
  * p.createSceneForm({
  *   json: sceneToJSON(classScene()), parent: document.getElementById('values'),

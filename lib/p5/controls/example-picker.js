@@ -11,9 +11,9 @@
  *
  * exampleInLink needs no page.
  */
-import { element, resolveParent, sketchNode } from './dom.js';
+import { element, resolveParent, sketchNode } from '../dom.js';
 import { workerCountBox } from './animation.js';
-import { checkOptions, show } from '../text/check.js';
+import { checkOptions, show } from '../../text/check.js';
 
 /**
  * The example a link asks for with `?example=…`: when it names none of the

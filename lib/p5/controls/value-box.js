@@ -3,8 +3,8 @@
  * lib/scene/values.js (a number by default), for any form of the kit: the scene
  * form's cells, the answer form's boxes. Its look is in style.css (`.sf-…`).
  */
-import { readNumber } from '../scene/values.js';
-import { useStyle, element } from './dom.js';
+import { readNumber } from '../../scene/values.js';
+import { useStyle, element } from '../dom.js';
 
 /**
  * A labelled text box with a message beside it. `read()` returns the value
