@@ -15,8 +15,8 @@
  * file: a save of the file swaps it in place, as on every page, and sets the
  * editor's text too while the student has not changed it.
  */
-import { showMistake, clearMistakes } from '../lib/p5/error-panel.js';
-import { pageViews } from '../lib/p5/page-state.js';
+import { showMistake, clearMistakes } from '../lib/p5/page/error-panel.js';
+import { pageViews } from '../lib/p5/page/page-state.js';
 import { element, copyText } from '../lib/p5/dom.js';
 import { downloadText } from '../lib/p5/controls/text-box.js';
 import { createCodeEditor } from './code-editor.js';

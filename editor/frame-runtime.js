@@ -16,8 +16,8 @@
  * self-check: the page keeps them, outside the frame.
  */
 import p5 from 'p5';
-import { pageViews } from '../lib/p5/page-state.js';
-import { errorMessage } from '../lib/p5/error-panel.js';
+import { pageViews } from '../lib/p5/page/page-state.js';
+import { errorMessage } from '../lib/p5/page/error-panel.js';
 import { sceneToJSON, cameraToJSON } from '../lib/scene/json.js';
 import { codePlace } from './frame-protocol.js';
 

@@ -89,7 +89,7 @@ function noScene(problem) {
  * Opens the page's judge in `box` (the page's, outside the frame): a line
  * for a scene that cannot be read, the self-check of a homework page, the
  * page's tasks. `lines` are the class board's lines the page's own parts
- * had (lib/p5/class-board.js): they move here, and go on saying where each
+ * had (lib/p5/page/class-board.js): they move here, and go on saying where each
  * submission is.
  * @param {{ page: string, box: HTMLElement, lines?: { tasks?: Element|null, check?: Element|null } }} options
  * @returns {{ view: FrameView, heard: (message: { type: string }) => void, tasks: TaskList|null }}
@@ -119,7 +119,7 @@ export function openPageJudge({ page, box, lines = {} }) {
   return { view, heard, tasks };
 }
 
-/** The class board's lines of the page's own task list and self-check (lib/p5/class-board.js), to keep when they go. */
+/** The class board's lines of the page's own task list and self-check (lib/p5/page/class-board.js), to keep when they go. */
 export function boardLines() {
   return {
     tasks: document.querySelector('[data-tasks] > [data-class-sent]'),

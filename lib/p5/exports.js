@@ -14,10 +14,10 @@ export { Inspector, answerLine } from './pixel/inspector.js';
 export { formatAngle, formatLabel, fmt } from '../text/format.js';
 export { SceneAnimation } from './controls/animation.js';
 export { exampleInLink } from './controls/example-picker.js';
-export { pageRenderState } from './page-state.js';
+export { pageRenderState } from './page/page-state.js';
 // A scene in the page's link (#scene=…), page parts built from text (never parsed as HTML), text to the clipboard:
-export { readSceneLink, sceneLinkURL, linkNotice } from './scene-link.js';
+export { readSceneLink, sceneLinkURL, linkNotice } from './page/scene-link.js';
 export { element, copyText } from './dom.js';
 // A part of the page's one voice for screen readers: said with the pixel, once the keys rest.
-export { createAnnouncer } from './announce.js';
+export { createAnnouncer } from './page/announce.js';
 export { showInBox, downloadText } from './controls/text-box.js';

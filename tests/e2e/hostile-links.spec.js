@@ -9,7 +9,7 @@ import { EVERY_PAGE, PAGE_PARAMETERS } from './link-parameters.js';
 import { sceneToJSON } from '../../lib/scene/json.js';
 import { classScene } from '../../lib/scene/examples.js';
 import { encodeScene } from '../../lib/scene/codec.js';
-import { encodeSceneLink } from '../../lib/p5/scene-link.js';
+import { encodeSceneLink } from '../../lib/p5/page/scene-link.js';
 
 const PAGES = ['index.html', ...readdirSync('sketches').filter((f) => f.endsWith('.html')).map((f) => `sketches/${f}`)];
 const PAYLOADS = [
@@ -106,7 +106,7 @@ test('a 100,000-character name is cut on page 05 (the whole name in its title), 
   await radius.fill('2.5');
   await radius.press('Enter');
   await expect.poll(() => page.evaluate(() => location.hash)).not.toBe(before);
-  const names = await page.evaluate(async () => (await import('/lib/p5/scene-link.js')).readSceneLink(location.href).then((scene) => scene.objects.map((o) => o.name)));
+  const names = await page.evaluate(async () => (await import('/lib/p5/page/scene-link.js')).readSceneLink(location.href).then((scene) => scene.objects.map((o) => o.name)));
   expect(names).toContain(long);
   expect(errors).toEqual([]);
 });

@@ -20,7 +20,7 @@ const baseName = (path) => path.split('/').at(-1);
 const count = new Map();
 for (const f of files) count.set(baseName(f), (count.get(baseName(f)) ?? 0) + 1);
 
-/** The file names the doc writes in backticks ('vec3.js', 'shapes/packed.js', 'lib/p5/scene-link.js'). */
+/** The file names the doc writes in backticks ('vec3.js', 'shapes/packed.js', 'lib/p5/page/scene-link.js'). */
 const named = [...doc.matchAll(/`([\w./-]+\.(?:js|css))`/g)].map((m) => m[1]).filter((name) => !/\bNN-/.test(name)); // not a placeholder ('sketches/NN-name.js')
 const underLib = (name) => name.replace(/^lib\//, '');
 

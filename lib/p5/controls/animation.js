@@ -15,7 +15,7 @@
  * The pure parts (framesPerSecond, FrameCounter, statsLine, readWorkerCount,
  * sameBytes) need no page.
  */
-import { registerView } from '../page-state.js';
+import { registerView } from '../page/page-state.js';
 import { element } from '../dom.js';
 import { ParallelRenderer } from '../../tracing/workers/parallel.js';
 import { checkOptions } from '../../text/check.js';

@@ -12,8 +12,8 @@
 import { valueBox } from './value-box.js';
 import { element, resolveParent, sketchNode, copyText } from '../dom.js';
 import { checkOptions } from '../../text/check.js';
-import { joinClassBoard } from '../class-board.js';
-import { createAnnouncer } from '../announce.js';
+import { joinClassBoard } from '../page/class-board.js';
+import { createAnnouncer } from '../page/announce.js';
 
 /**
  * Reads every box (each bad one shows its message): `{ name: value }`, or
@@ -127,7 +127,7 @@ export function createAnswerForm(p, options) {
      * The verdict: ✔ or ✘, a swatch of `color` (CSS, e.g. '#ff5160'), the
      * message, `data` on the result's dataset, the answer line and a line of detail.
      * The form's element then sends an `rt-answer` event (bubbling) with `detail: { ok, answer, submitted, send }`:
-     * `submitted` when the student pressed Check, `send` what the class board gets of it (lib/p5/class-board.js).
+     * `submitted` when the student pressed Check, `send` what the class board gets of it (lib/p5/page/class-board.js).
      */
     show({ ok, message, color, data = {}, answer: line, detail: more, send }) {
       const swatch = color && element('span', { class: 'rt-swatch', style: `background: ${color}` });

@@ -10,9 +10,9 @@
  *   p.createHomeworkCheck({ view, check: checkTrafficSignal, parent: 'check', problem });
  */
 import { element, resolveParent, sketchNode, useStyle } from '../dom.js';
-import { createAnnouncer } from '../announce.js';
+import { createAnnouncer } from '../page/announce.js';
 import { checkOptions } from '../../text/check.js';
-import { joinClassBoard } from '../class-board.js';
+import { joinClassBoard } from '../page/class-board.js';
 
 /**
  * @param {import('p5').default} p the sketch

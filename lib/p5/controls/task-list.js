@@ -19,8 +19,8 @@ import { markDone, clearProgress, pageProgress, progressText } from '../../lesso
 import { loadProgress, saveProgress } from './progress-store.js';
 import { checkOptions, show } from '../../text/check.js';
 import { element, resolveParent, useStyle } from '../dom.js';
-import { joinClassBoard } from '../class-board.js';
-import { createAnnouncer } from '../announce.js';
+import { joinClassBoard } from '../page/class-board.js';
+import { createAnnouncer } from '../page/announce.js';
 
 const OPTIONS = ['page', 'view', 'parent', 'parts', 'hintAfterMs', 'hintAfterTries'];
 /** What the student does that may finish a task whose state it changes (a box, a switch, a drag in 3D). */

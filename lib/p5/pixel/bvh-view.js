@@ -7,7 +7,7 @@
  * buttons turn it; the slider chooses the depth.
  */
 import { element, useStyle } from '../dom.js';
-import { createAnnouncer } from '../announce.js';
+import { createAnnouncer } from '../page/announce.js';
 import { checkOptions, show } from '../../text/check.js';
 import { Mesh } from '../../shapes/mesh.js';
 

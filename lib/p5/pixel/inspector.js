@@ -22,7 +22,7 @@ import { showInBox, downloadText } from '../controls/text-box.js';
 import { joinInSlices } from '../../text/slices.js';
 import { pixelCSV, pixelCSVLines, rootsMeaning, routesAgree } from './csv.js';
 import { gpuDifference } from '../tracer/engines.js';
-import { createAnnouncer } from '../announce.js';
+import { createAnnouncer } from '../page/announce.js';
 import { answerLine, pixelAnnouncement } from './words.js';
 import { virtualRows, VIRTUAL_FROM } from './virtual-rows.js';
 

@@ -1,6 +1,6 @@
 /**
  * The selected pixel in words: its answer line and the one short sentence a
- * screen reader hears for it (lib/p5/announce.js says it once the arrow key
+ * screen reader hears for it (lib/p5/page/announce.js says it once the arrow key
  * rests). Besides the colour and what the ray hit, the sentence says what a
  * task may ask of the pixel and only a picture would show: a light it is cut
  * off from (a shadow, outside a spot's cone), how many of an area light's

@@ -7,7 +7,7 @@
 import { element } from '../dom.js';
 import { createOrbitButtons } from './keys.js';
 import { orbitChanged } from './words.js';
-import { reducedMotion } from '../announce.js';
+import { reducedMotion } from '../page/announce.js';
 
 /** Speeds the shoot slider offers, rays per second. */
 export const SPEEDS = [1, 2, 4, 8, 15, 30, 60, 120];

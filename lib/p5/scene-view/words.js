@@ -6,7 +6,7 @@
  * Yaw 0 looks from behind the eye the way the eye looks; yaw < 0 from its
  * right; pitch > 0 from above (lib/lesson/rays3d.js orbitCamera).
  */
-import { createAnnouncer } from '../announce.js';
+import { createAnnouncer } from '../page/announce.js';
 
 /** The keys of the 3D view, said in its name after where it looks from. */
 const KEYS = 'arrow keys turn it, + and − zoom, Esc stops Shoot';

@@ -9,7 +9,7 @@
  */
 import { Camera } from '../../math/camera.js';
 import { formatAngle, formatNumber } from '../../text/format.js';
-import { createAnnouncer } from '../announce.js';
+import { createAnnouncer } from '../page/announce.js';
 
 /** Degrees per screen pixel dragged, per arrow press; the share + and − move the camera by. */
 const DRAG = 0.4, TURN = 5, ZOOM = 0.9;

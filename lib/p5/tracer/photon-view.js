@@ -15,13 +15,13 @@
  */
 import { PhotonTracer } from '../../tracing/photons.js';
 import { checkOptions, positiveInteger, show } from '../../text/check.js';
-import { registerView } from '../page-state.js';
+import { registerView } from '../page/page-state.js';
 import { useStyle, element, resolveParent, sketchNode } from '../dom.js';
 import { RAY_COLORS } from '../scene-view/view.js';
 import { arrowMove } from './input.js';
 import { cappedScale, roomFor, watchRoom } from './layout.js';
 import { describeScene } from '../../lesson/describe.js';
-import { reducedMotion } from '../announce.js';
+import { reducedMotion } from '../page/announce.js';
 
 const OPTIONS = ['scene', 'camera', 'seed', 'eyeRadius', 'photons', 'samplePaths', 'scale', 'parent', 'label', 'budgetMs', 'link', 'sceneView'];
 

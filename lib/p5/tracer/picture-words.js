@@ -16,7 +16,7 @@
 import { describeScene, pixelNames, pixelRows, nextPixelNamed, COLOR_NAMES } from '../../lesson/describe.js';
 import { MODES } from '../../tracing/modes.js';
 import { element } from '../dom.js';
-import { createAnnouncer } from '../announce.js';
+import { createAnnouncer } from '../page/announce.js';
 import { mapSummary, mapValue } from './map-words.js';
 
 /** A camera that moves every frame re-describes the scene at most this often. */

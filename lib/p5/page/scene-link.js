@@ -14,7 +14,7 @@
  *   const scene = await readSceneLink(location.href);         // null when the link has none
  *   history.replaceState(null, '', await sceneLinkURL(location.href, json));
  */
-import { compactSceneBytes, decodeScene, sceneFromBytes, isBase64url, toBase64url, fromBase64url, pipeBytes } from '../scene/codec.js';
+import { compactSceneBytes, decodeScene, sceneFromBytes, isBase64url, toBase64url, fromBase64url, pipeBytes } from '../../scene/codec.js';
 
 /** Links longer than this may be cut by chats and e-mail. */
 export const LINK_WARN_LENGTH = 8_000;

@@ -17,7 +17,7 @@
  * page is not "done", the page says "error". A view that still finishes
  * afterwards sets "done" as usual, and one that restarts sets "rendering".
  */
-import { useStyle, element } from './dom.js';
+import { useStyle, element } from '../dom.js';
 
 /** Errors already shown, by message and place: a draw() error repeats every frame. */
 const shown = new Map();

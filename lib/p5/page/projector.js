@@ -3,7 +3,7 @@
  * (html.projector, see sketches/sketch.css), and with it bigger pictures and
  * diagrams, since their sizes are in rem. Remembered across pages.
  */
-import { element } from './dom.js';
+import { element } from '../dom.js';
 
 const KEY = 'raytracing-sketchbook:projector';
 

@@ -11,7 +11,7 @@
  * the student's first key had caused it. While a message waits to be said the
  * status carries `data-pending` (a walk by keys waits for the page's voice).
  */
-import { element } from './dom.js';
+import { element } from '../dom.js';
 
 /** What the student does: the page's voice speaks after the first of them. */
 const STUDENT_EVENTS = ['keydown', 'pointerdown', 'input', 'change'];

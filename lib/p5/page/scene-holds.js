@@ -6,8 +6,8 @@
  * changes nothing: the last good picture stays, nothing is thrown into the
  * sketch's draw() and nothing reaches the console.
  */
-import { Scene } from '../scene/scene.js';
-import { checkScene } from '../scene/check.js';
+import { Scene } from '../../scene/scene.js';
+import { checkScene } from '../../scene/check.js';
 
 /**
  * True when `scene` holds as it is now (lib/scene/check.js), or is no Scene

@@ -11,9 +11,9 @@
  *   … does not provide an export named 'Spehre'     → did you mean Sphere?
  */
 import p5 from 'p5';
-import * as library from '../index.js';
-import * as addon from './exports.js'; // the entry's names, not the entry: it installs the panel that loads this module
-import { closestName } from '../text/check.js';
+import * as library from '../../index.js';
+import * as addon from '../exports.js'; // the entry's names, not the entry: it installs the panel that loads this module
+import { closestName } from '../../text/check.js';
 
 /**
  * The hint for `message`, or null when no name is near enough.

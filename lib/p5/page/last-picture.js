@@ -15,7 +15,7 @@
  */
 import { onMistake } from './error-panel.js';
 import { isReload } from './keep-place.js';
-import { registerAddon } from './register.js';
+import { registerAddon } from '../register.js';
 
 const KEY = 'sketchbook:picture:';
 /** The copies over the page (in it or not, during a swap). */

@@ -23,7 +23,7 @@
  * not know (a new class, a lost secret) says hello again, and what waited in
  * its outbox goes after.
  */
-import { element, useStyle } from './dom.js';
+import { element, useStyle } from '../dom.js';
 
 const OUTBOX = 'rt-class-outbox';
 const LAPTOP = 'rt-class-laptop';

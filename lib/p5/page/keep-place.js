@@ -15,7 +15,7 @@
  * the old typed one. A page whose setup() failed (a mistake on the page)
  * keeps the place saved before it, for the reload that fixes it.
  */
-import { registerAddon } from './register.js';
+import { registerAddon } from '../register.js';
 import { pageViews } from './page-state.js';
 
 const KEY = 'sketchbook:place:';
