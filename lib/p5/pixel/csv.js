@@ -5,7 +5,9 @@
  */
 import { toHex, colorName } from '../../math/color.js';
 import { formatNumber, formatAngle } from '../../text/format.js';
-import { PLAIN_NUMBER } from '../../scene/values.js';
+import { csvCell } from '../../text/csv.js';
+
+export { csvCell }; // one CSV cell, as the class board's export writes them too
 
 /** Relative tolerance within which the two intersection routes "agree". */
 export const AGREE_TOLERANCE = 1e-9;
@@ -53,22 +55,4 @@ export function* pixelCSVLines(r) {
       routesAgree(q, g), ...after]);
   }
   if (r.tests.length === 0) yield line([...pixel, ...CSV_HEAD.slice(4, -4).map(() => ''), ...after]);
-}
-
-/**
- * What a cell may start with that a spreadsheet could run as a formula, or
- * skip on its way to one: = + - @ | a tab or CR, a space, a zero-width or
- * bidi mark, a full-width ＝＋－＠, or a quote (as in "=1 or '=1).
- */
-const FORMULA_START = /^[=+\-@|\t\r "'\u200B-\u200F\u202A-\u202E\u2060-\u2069\uFEFF＝＋－＠]/;
-
-/**
- * One CSV cell. Text a spreadsheet would run as a formula (FORMULA_START:
- * a name like =HYPERLINK(…) can) gets a leading ' so it shows as text; plain
- * numbers stay numbers. A cell with a quote, a comma, a CR or a LF is quoted.
- */
-export function csvCell(cell) {
-  let text = String(cell);
-  if (FORMULA_START.test(text) && !PLAIN_NUMBER.test(text)) text = `'${text}`;
-  return /[",\r\n]/.test(text) ? `"${text.replace(/"/g, '""')}"` : text;
 }
