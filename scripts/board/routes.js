@@ -38,7 +38,7 @@ export const BOARD_ROUTES = [
   { path: /^\/board\/clear$/, methods: ['POST'], why: 'Clear the board: the class archived, a new one started (403 without the key)' },
   { path: /^\/class\/(hello|send)$/, methods: ['POST'], why: 'a student\'s page: its name on the board, one submission (it reads nobody\'s answers)' },
   { path: /^\/scripts\/board\/page\/[\w-]+\.(js|css)$/, why: 'the board page\'s script and style (nothing of the class in them)' },
-  { path: /^\/poll\.(html|js)$/, why: 'the lesson\'s poll, a student\'s page' },
+  { path: /^\/(poll\.html|site\/poll\.js)$/, why: 'the lesson\'s poll, a student\'s page, and its script' },
 ];
 
 /** Where a student's page sends (the meta tag the class server puts in every page names it). */

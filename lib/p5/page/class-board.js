@@ -5,7 +5,7 @@
  *   sketch 04's Check        an `rt-answer` event whose detail has `submitted` and `send` (lib/p5/controls/answer-form.js)
  *   a task done              an `rt-task` event (lib/p5/controls/task-list.js)
  *   a homework self-check    an `rt-check` event (lib/p5/controls/homework-check.js)
- *   the lesson's poll        sendToClassBoard({ kind: 'poll', value }) (poll.js)
+ *   the lesson's poll        sendToClassBoard({ kind: 'poll', value }) (site/poll.js)
  *
  * Only a page the class server served sends anything: it carries
  * `<meta name="rt-class-board" content="/class/">` (scripts/board/plugin.js).

@@ -4,8 +4,8 @@
  * A code is checked, not trusted (lib/lesson/progress.js's readProgressCode): only the
  * kit's own task texts come out of it, and everything is shown as text.
  */
-import { LESSONS } from './lib/lesson/tasks.js';
-import { readProgressLine, pageProgress, progressText, achievements } from './lib/lesson/progress.js';
+import { LESSONS } from '../lib/lesson/tasks.js';
+import { readProgressLine, pageProgress, progressText, achievements } from '../lib/lesson/progress.js';
 
 /** More than this is not read: a class, not a file dump. */
 const MAX_LINES = 200;

@@ -4,10 +4,10 @@
  * section under the cards lists the achievements, the progress code to give
  * the teacher (teacher.html reads it) and "Start again" for every page.
  */
-import { LESSONS } from './lib/lesson/tasks.js';
-import { achievements, pageProgress, progressText, progressCode } from './lib/lesson/progress.js';
-import { loadProgress, saveProgress } from './lib/p5/controls/progress-store.js';
-import { element, copyText } from './lib/p5/dom.js';
+import { LESSONS } from '../lib/lesson/tasks.js';
+import { achievements, pageProgress, progressText, progressCode } from '../lib/lesson/progress.js';
+import { loadProgress, saveProgress } from '../lib/p5/controls/progress-store.js';
+import { element, copyText } from '../lib/p5/dom.js';
 
 /** Adds the progress to the cards of `list` (links to sketches/NN-…) and the progress section after it. */
 export function showProgress(list) {

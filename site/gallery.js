@@ -6,8 +6,8 @@
  */
 import { showProgress } from './gallery-progress.js';
 
-const pages = import.meta.glob('./sketches/*.html', { query: '?raw', import: 'default', eager: true });
-const thumbnails = import.meta.glob('./tests/e2e/__screenshots__/gallery.spec.js/*-view0.png', {
+const pages = import.meta.glob('../sketches/*.html', { query: '?raw', import: 'default', eager: true });
+const thumbnails = import.meta.glob('../tests/e2e/__screenshots__/gallery.spec.js/*-view0.png', {
   query: '?url', import: 'default', eager: true,
 });
 
@@ -29,7 +29,7 @@ function card(path, { title, line }) {
   const file = path.split('/').pop();
   const slug = file.replace(/\.html$/, '');
   const number = slug.match(/^\d+/)?.[0] ?? '';
-  const thumb = thumbnails[`./tests/e2e/__screenshots__/gallery.spec.js/${slug}-view0.png`];
+  const thumb = thumbnails[`../tests/e2e/__screenshots__/gallery.spec.js/${slug}-view0.png`];
 
   const link = document.createElement('a');
   link.href = `sketches/${file}`;

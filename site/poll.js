@@ -3,8 +3,8 @@
  * by `npm run class`, the answer goes to the teacher's class board, where
  * only the counts show; elsewhere it stays on the page.
  */
-import { joinClassBoard, sendToClassBoard } from './lib/p5/page/class-board.js';
-import { useStyle } from './lib/p5/dom.js';
+import { joinClassBoard, sendToClassBoard } from '../lib/p5/page/class-board.js';
+import { useStyle } from '../lib/p5/dom.js';
 
 const WORDS = { 1: 'negative', 2: 'neutral', 3: 'positive' };
 const form = /** @type {HTMLFormElement} */ (document.querySelector('[data-poll-form]'));
