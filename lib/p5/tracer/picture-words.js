@@ -47,20 +47,68 @@ export function createPictureWords(canvas, view) {
   const n = ++ids;
   const id = `rt-picture-description-${n}`;
   canvas.id ||= `rt-picture-${n}`;
-  // hidden: read as the picture's description, not a second time as the page's text
-  const description = element('p', { id, hidden: '', 'data-picture-description': '' });
+  const told = pictureDescription(canvas, view, id);
   canvas.setAttribute('role', 'img');
   canvas.setAttribute('aria-describedby', id);
-  const rows = element('ol', { class: 'rt-picture-rows', 'data-picture-rows': '' });
-  const rowsNote = element('p', { class: 'rt-note', 'data-picture-rows-note': '' });
-  const details = element('details', { class: 'rt-picture-text' }, element('summary', {}, 'Picture as text'), rowsNote, rows);
   const voice = createAnnouncer({ name: 'picture', order: 1 });
-  let last = -Infinity, timer = 0, names = null, typed = '', typedAt = 0, sought = '', shownRows = '', stageElement = null;
-  /** A colour key pressed while the picture was being traced, answered when it is done. */
-  let waiting = null;
-  let engineNow = 'cpu';
+  const rows = pictureRows(view, voice);
+  const colors = colorKeys(view, voice, rows.names);
+  let engineNow = 'cpu', stageElement = null;
   addSkipLink(canvas);
+  canvas.setAttribute('aria-label', told.name());
+  // the 3D view comes after the picture in setup(): the application's name says its key once there is one
+  canvas.addEventListener('focus', () => words.engine(engineNow));
 
+  // a map says what the pixel stands for, when the student is on it (the page's inspector says the pixel)
+  const unlisten = view.on('select', (s) => {
+    if (s && view.mode !== 'shaded' && document.activeElement === canvas) voice.say(mapValue(view.mode, view.scene, view.camera, s.x, s.y));
+  });
+  listenForKeys(canvas, colors);
+
+  const words = {
+    details: rows.details,
+    description: told.description,
+    /** The scene, camera or mode changed: describe it again (in the next task, or later when it changes every frame). */
+    changed() {
+      rows.changed();
+      told.later();
+    },
+    /** The picture is traced: the rows can be read, and the colours searched. */
+    done() {
+      rows.done();
+      colors.done();
+    },
+    /** Makes the picture's stage the application the keys go to (it holds the focusable picture). */
+    stage(stage) {
+      stageElement = stage;
+      stage.setAttribute('role', 'application');
+      stage.setAttribute('aria-roledescription', 'picture of pixels');
+      this.engine('cpu');
+    },
+    /** The engine tracing now: on the GPU the arrow keys turn the camera until a pixel is selected (gpu-orbit.js); the name says so. */
+    engine(engine) {
+      engineNow = engine;
+      stageElement?.setAttribute('aria-label', `${KEYS[engine] ?? KEYS.cpu}${sceneView3d() ? `; ${VIEW3D_KEY}: the 3D view` : ''}`);
+    },
+    destroy() {
+      told.destroy();
+      unlisten();
+      voice.destroy();
+    },
+  };
+  return words;
+}
+
+
+/**
+ * The picture's description, what its scene shows through its camera (a map:
+ * what the map shows), and its name; `later()` describes it again in a task of
+ * its own, at most every DESCRIBE_EVERY_MS.
+ */
+function pictureDescription(canvas, view, id) {
+  // hidden: read as the picture's description, not a second time as the page's text
+  const description = element('p', { id, hidden: '', 'data-picture-description': '' });
+  let last = -Infinity, timer = 0;
   const caption = () => canvas.closest('figure')?.querySelector('figcaption')?.textContent.trim() || 'Traced picture';
   const modeLabel = () => (view.mode === 'shaded' ? '' : MODES.find((m) => m.name === view.mode)?.label ?? view.mode);
   // a map by its own name (sketch 02's three pictures of one scene are told apart); the size is in the description
@@ -79,9 +127,29 @@ export function createPictureWords(canvas, view) {
     if (description.textContent !== text) description.textContent = text;
     canvas.setAttribute('aria-label', name());
   };
-  canvas.setAttribute('aria-label', name());
+  return {
+    description,
+    name,
+    later() {
+      if (timer) return;
+      // In a task of its own, never the edit's: it casts rays at every shape (lib/lesson/describe.js).
+      timer = setTimeout(describe, Math.max(0, last + DESCRIBE_EVERY_MS - performance.now()));
+    },
+    destroy: () => clearTimeout(timer),
+  };
+}
 
-  /** Each pixel's colour name, read once per traced picture (the search and the rows share it). */
+/**
+ * The "Picture as text" disclosure: the traced picture row by row of pixels,
+ * in colour names, read when it is opened and when the picture is done, saying
+ * when the rows changed. `names()` is each pixel's colour name, read once per
+ * traced picture (the colour keys search it too).
+ */
+function pictureRows(view, voice) {
+  const rows = element('ol', { class: 'rt-picture-rows', 'data-picture-rows': '' });
+  const rowsNote = element('p', { class: 'rt-note', 'data-picture-rows-note': '' });
+  const details = element('details', { class: 'rt-picture-text' }, element('summary', {}, 'Picture as text'), rowsNote, rows);
+  let names = null, shownRows = '';
   const pictureNames = () => (names ??= pixelNames(view.buffer, view.width, view.height));
   const readRows = () => {
     const every = Math.ceil(view.height / MAX_ROWS);
@@ -94,30 +162,32 @@ export function createPictureWords(canvas, view) {
     if (again) voice.say('Picture as text: the picture was traced again, its rows changed.');
   };
   details.addEventListener('toggle', () => { if (details.open) readRows(); });
-  // the 3D view comes after the picture in setup(): the application's name says its key once there is one
-  canvas.addEventListener('focus', () => words.engine(engineNow));
+  return {
+    details,
+    names: pictureNames,
+    changed() {
+      names = null;
+      if (details.open) rows.replaceChildren(element('li', {}, 'Tracing…'));
+    },
+    done() {
+      names = null;
+      if (details.open) readRows();
+    },
+  };
+}
 
-  // a map says what the pixel stands for, when the student is on it (the page's inspector says the pixel)
-  const unlisten = view.on('select', (s) => {
-    if (s && view.mode !== 'shaded' && document.activeElement === canvas) voice.say(mapValue(view.mode, view.scene, view.camera, s.x, s.y));
-  });
-  canvas.addEventListener('keydown', (event) => {
-    if (event.ctrlKey || event.metaKey || event.altKey) return;
-    if (event.key === VIEW3D_KEY && sceneView3d()) { // one key to the 3D view, not a dozen Tabs past the panels
-      event.preventDefault();
-      sceneView3d().focus();
-      return;
-    }
-    if (!/^[a-z]$/i.test(event.key)) return;
-    const next = colorKey(event.key.toLowerCase(), event.shiftKey);
-    if (next) event.preventDefault();
-  });
+/**
+ * The colour keys: a colour's first letters typed on the picture select the
+ * next pixel of that colour (`back`: the one before). While the picture is
+ * still being traced its coarse blocks are no colours to go by: the key is
+ * answered by `done()`, once the picture is.
+ */
+function colorKeys(view, voice, pictureNames) {
+  let typed = '', typedAt = 0, sought = '';
+  /** A colour key pressed while the picture was being traced, answered when it is done. */
+  let waiting = null;
 
-  /**
-   * A letter typed on the picture: the next pixel of the colour its letters begin; true when it was one.
-   * While the picture is still being traced its coarse blocks are no colours to go by: the key is
-   * answered once the picture is done.
-   */
+  /** A letter typed on the picture: true when it was a colour's. */
   function colorKey(letter, back) {
     const now = performance.now();
     typed = now - typedAt < TYPE_AHEAD_MS ? typed + letter : letter;
@@ -149,46 +219,30 @@ export function createPictureWords(canvas, view) {
     if (next) view.select(next.x, next.y); // the inspector (or the activity's verdict) says the pixel
   }
 
-  const words = {
-    details,
-    description,
-    /** The scene, camera or mode changed: describe it again (in the next task, or later when it changes every frame). */
-    changed() {
-      names = null;
-      if (details.open) rows.replaceChildren(element('li', {}, 'Tracing…'));
-      if (timer) return;
-      // In a task of its own, never the edit's: it casts rays at every shape (lib/lesson/describe.js).
-      timer = setTimeout(describe, Math.max(0, last + DESCRIBE_EVERY_MS - performance.now()));
-    },
-    /** The picture is traced: the rows can be read, and the colours searched. */
+  return {
+    key: colorKey,
     done() {
-      names = null;
-      if (details.open) readRows();
-      if (waiting) {
-        const { typed: letters, again, back } = waiting;
-        waiting = null;
-        findColor(letters, again, back);
-      }
-    },
-    /** Makes the picture's stage the application the keys go to (it holds the focusable picture). */
-    stage(stage) {
-      stageElement = stage;
-      stage.setAttribute('role', 'application');
-      stage.setAttribute('aria-roledescription', 'picture of pixels');
-      this.engine('cpu');
-    },
-    /** The engine tracing now: on the GPU the arrow keys turn the camera until a pixel is selected (gpu-orbit.js); the name says so. */
-    engine(engine) {
-      engineNow = engine;
-      stageElement?.setAttribute('aria-label', `${KEYS[engine] ?? KEYS.cpu}${sceneView3d() ? `; ${VIEW3D_KEY}: the 3D view` : ''}`);
-    },
-    destroy() {
-      clearTimeout(timer);
-      unlisten();
-      voice.destroy();
+      if (!waiting) return;
+      const { typed: letters, again, back } = waiting;
+      waiting = null;
+      findColor(letters, again, back);
     },
   };
-  return words;
+}
+
+/** The picture's own keys: 3 to the page's 3D view, a colour's letters to its pixels. */
+function listenForKeys(canvas, colors) {
+  canvas.addEventListener('keydown', (event) => {
+    if (event.ctrlKey || event.metaKey || event.altKey) return;
+    if (event.key === VIEW3D_KEY && sceneView3d()) { // one key to the 3D view, not a dozen Tabs past the panels
+      event.preventDefault();
+      sceneView3d().focus();
+      return;
+    }
+    if (!/^[a-z]$/i.test(event.key)) return;
+    const next = colors.key(event.key.toLowerCase(), event.shiftKey);
+    if (next) event.preventDefault();
+  });
 }
 
 /** The page's 3D view of the scene, if it has one. */
