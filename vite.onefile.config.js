@@ -102,7 +102,7 @@ export default defineConfig({
     },
     rollupOptions: {
       external: ['p5'],
-      // One file each: the panel's lazily loaded "did you mean" (lib/p5/mistake-hints.js) goes inside, not beside.
+      // One file each: the panel's lazily loaded "did you mean" (lib/p5/page/mistake-hints.js) goes inside, not beside.
       output: { globals: { p5: 'p5' }, codeSplitting: false },
       checks: { bundlerTimings: false }, // inlining the render worker is the work of this build, not a slow plugin
     },

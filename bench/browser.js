@@ -271,7 +271,7 @@ const RELOADS = '\nsetTimeout(() => {}, 0); // a timer: saves of this copy reloa
 /**
  * Sketch 10 (the playground) copied beside the bench page and opened in the
  * dev server; a pixel is selected; then the file is saved SAVES times (a
- * comment changes), as an editor does: swapped in place (lib/p5/hot-swap.js),
+ * comment changes), as an editor does: swapped in place (lib/p5/page/hot-swap.js),
  * or, for the copy `how` = 'reload' (a timer in it), by a reload of the page.
  * Each time: Node's clock when the file is written; in the page (an init
  * script), the clock when the dev server's message arrives on its socket and
@@ -349,7 +349,7 @@ function reportSaves(swapped, reloaded) {
   ], [36, 13, 7, 7, 15, 7, 7]);
   console.log(`   reloaded page's start to its first preview: median ${ms(median(reloaded.map((r) => r.preview - r.start)))}`);
   console.log(`   selected pixel kept: swap ${swapped.filter((r) => r.kept).length} of ${swapped.length}, reload ${reloaded.filter((r) => r.kept).length} of ${reloaded.length}`);
-  console.log('   (swap: the script swapped in place, lib/p5/hot-swap.js; reload: the same sketch with a timer in it, which the dev server does not swap;');
+  console.log('   (swap: the script swapped in place, lib/p5/page/hot-swap.js; reload: the same sketch with a timer in it, which the dev server does not swap;');
   console.log('    arriving: the dev server\'s message reaches the page; file written to arriving: its file watcher)');
 }
 

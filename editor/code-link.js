@@ -1,7 +1,7 @@
 /**
  * A sketch's code in a page's link, to share it: in the fragment (a server
  * never sees it, so no length limit of the server's), compressed as sketch
- * 05's scene links are (lib/p5/scene-link.js):
+ * 05's scene links are (lib/p5/page/scene-link.js):
  *
  *   #code=z.<base64url of the deflate-raw compressed UTF-8 text>
  *

@@ -20,10 +20,10 @@
  * follows without a new run (live-numbers.js); the page finds the number in
  * its own parse of the code, and nothing the frame says becomes code.
  */
-import { showMistake, clearMistakes } from '../lib/p5/error-panel.js';
-import { pageViews } from '../lib/p5/page-state.js';
+import { showMistake, clearMistakes } from '../lib/p5/page/error-panel.js';
+import { pageViews } from '../lib/p5/page/page-state.js';
 import { element, copyText } from '../lib/p5/dom.js';
-import { downloadText } from '../lib/p5/text-box.js';
+import { downloadText } from '../lib/p5/controls/text-box.js';
 import { createCodeEditor } from './code-editor.js';
 import './code-in-page.css';
 import { SketchFrames } from './frame-host.js';

@@ -20,8 +20,8 @@
  * view's scene, as JSON, and traces again, coarse to fine, with no new run.
  */
 import p5 from 'p5';
-import { pageViews } from '../lib/p5/page-state.js';
-import { errorMessage } from '../lib/p5/error-panel.js';
+import { pageViews } from '../lib/p5/page/page-state.js';
+import { errorMessage } from '../lib/p5/page/error-panel.js';
 import { sceneToJSON, cameraToJSON } from '../lib/scene/json.js';
 import { withValues } from './scene-values.js';
 import { codePlace, readValues } from './frame-protocol.js';

@@ -5,7 +5,7 @@
  * (frame-protocol.js). The page reads that JSON again with the library's
  * checked reader (lib/scene/json.js, within the limits of a scene from a
  * link), and with the scene it read it ticks the page's tasks
- * (lib/p5/task-list.js) and runs the homework's self-check
+ * (lib/p5/controls/task-list.js) and runs the homework's self-check
  * (lib/lesson/homework.js) itself. Both live here, in the page under the
  * frame, for the whole visit: every Run keeps them, their progress is kept
  * in the page's own storage, and their `rt-task` and `rt-check` events reach
@@ -16,8 +16,8 @@ import { sceneFromJSON, cameraFromJSON } from '../lib/scene/json.js';
 import { MAX_SCENE_OBJECTS } from '../lib/scene/codec.js';
 import { lessonOf } from '../lib/lesson/tasks.js';
 import { HOMEWORK_CHECKS } from '../lib/lesson/homework.js';
-import { TaskList } from '../lib/p5/task-list.js';
-import { homeworkCheck } from '../lib/p5/homework-check.js';
+import { TaskList } from '../lib/p5/controls/task-list.js';
+import { homeworkCheck } from '../lib/p5/controls/homework-check.js';
 import { element } from '../lib/p5/dom.js';
 
 /**
@@ -89,7 +89,7 @@ function noScene(problem) {
  * Opens the page's judge in `box` (the page's, outside the frame): a line
  * for a scene that cannot be read, the self-check of a homework page, the
  * page's tasks. `lines` are the class board's lines the page's own parts
- * had (lib/p5/class-board.js): they move here, and go on saying where each
+ * had (lib/p5/page/class-board.js): they move here, and go on saying where each
  * submission is.
  * @param {{ page: string, box: HTMLElement, lines?: { tasks?: Element|null, check?: Element|null } }} options
  * @returns {{ view: FrameView, heard: (message: { type: string }) => void, tasks: TaskList|null }}
@@ -119,7 +119,7 @@ export function openPageJudge({ page, box, lines = {} }) {
   return { view, heard, tasks };
 }
 
-/** The class board's lines of the page's own task list and self-check (lib/p5/class-board.js), to keep when they go. */
+/** The class board's lines of the page's own task list and self-check (lib/p5/page/class-board.js), to keep when they go. */
 export function boardLines() {
   return {
     tasks: document.querySelector('[data-tasks] > [data-class-sent]'),

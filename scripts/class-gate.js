@@ -29,9 +29,10 @@ import { posix, join } from 'node:path';
  */
 export const STUDENT_ROUTES = [
   { path: /^\/$/, why: 'the gallery' },
-  { path: /^\/(?![^/]*\.config\.)[\w.-]+\.(html|js|mjs|css|zip)$/, why: 'the pages at the root (gallery, web editor, teacher\'s progress codes), their scripts and styles, the one-file build and its zip, sketch-runtime.js (p5 and the kit for the editor\'s frame); not the tools\' config files' },
+  { path: /^\/(?![^/]*\.config\.)[\w.-]+\.(html|js|mjs|css|zip)$/, why: 'the pages at the root (gallery, web editor, teacher\'s progress codes), their styles, the one-file build and its zip, sketch-runtime.js (p5 and the kit for the editor\'s frame); not the tools\' config files' },
   { path: /^\/sketches\/[\w.-]+$/, why: 'the sketches: pages, scripts, styles (the solutions are refused after, by what file they are)' },
   { path: /^\/lib\/[\w./-]+$/, why: 'the library\'s modules and workers' },
+  { path: /^\/site\/[\w.-]+$/, why: 'the site\'s own page scripts: the gallery\'s, the teacher\'s progress codes, the poll' },
   { path: /^\/editor\/[\w.-]+$/, why: 'code in the page: the editor (CodeMirror\'s modules come from node_modules), its style, and the sandboxed frame\'s host' },
   { path: /^\/sketch-code\/\d\d-[a-z0-9-]+\.js$/, why: 'each sketch\'s own file as text, the editor\'s starter (the plugin reads sketches/ only, never a solution)' },
   { path: /^\/node_modules\/[\w.@/+-]+$/, why: 'p5 and the other packages, pre-bundled or as modules' },

@@ -15,8 +15,8 @@ import { join } from 'node:path';
 
 const OUT = 'node_modules/.cache/built-site';
 const STAMP = join(OUT, '.built');
-const SOURCES = ['lib', 'sketches', 'scripts', 'editor', 'examples', 'index.html', 'web-editor.html', 'teacher.html', 'poll.html',
-  'gallery.js', 'gallery.css', 'gallery-progress.js', 'teacher.js', 'poll.js', 'vite.config.js', 'package.json'];
+const SOURCES = ['lib', 'sketches', 'scripts', 'editor', 'site', 'examples', 'index.html', 'web-editor.html', 'teacher.html', 'poll.html',
+  'gallery.css', 'vite.config.js', 'package.json'];
 const port = process.argv[process.argv.indexOf('--port') + 1];
 if (!/^\d+$/.test(port ?? '')) {
   console.error('serve-built: give the port, as --port 5200');

@@ -27,7 +27,7 @@
  *
  * swapSketchesInPlace: a save of a page's own script swaps it in place (no
  * reload, so the first preview comes within 100 ms): the script is served
- * with Vite's HMR hooks, which hand the swap to lib/p5/hot-swap.js. Only a
+ * with Vite's HMR hooks, which hand the swap to lib/p5/page/hot-swap.js. Only a
  * script that imports nothing but p5 and the kit's lib/, and that calls
  * nothing outside p5 it cannot undo (timers, workers, the camera…: see
  * OUTSIDE_P5), is served so; a save of any other
@@ -78,11 +78,11 @@ export function syntaxErrorsWhereTheyAre() {
  * first, hears the error and loads the panel by itself to show it (the
  * module and line the browser names; the nearest export the module has).
  * Once the kit's panel is installed, it leaves every error to it. It also
- * marks the page as the dev server's (lib/p5/last-picture.js: a page that
+ * marks the page as the dev server's (lib/p5/page/last-picture.js: a page that
  * a save reloads keeps its last good picture for after the reload).
  */
 function failedModuleScript(root) {
-  const panel = '/' + relative(root, resolve(import.meta.dirname, '../lib/p5/error-panel.js')).split('\\').join('/');
+  const panel = '/' + relative(root, resolve(import.meta.dirname, '../lib/p5/page/error-panel.js')).split('\\').join('/');
   return `window.__sketchbookDevServer = true;
 addEventListener('error', function (event) {
   if (window.__sketchbookErrorPanel || !(event.error instanceof SyntaxError || event.target instanceof HTMLScriptElement)) return;
@@ -93,7 +93,7 @@ addEventListener('error', function (event) {
 
 /**
  * A page's script with a syntax error (or an import the kit cannot give) is
- * served as a module that shows the mistake on that page alone, in the kit's own panel (lib/p5/error-panel.js),
+ * served as a module that shows the mistake on that page alone, in the kit's own panel (lib/p5/page/error-panel.js),
  * and in the console: Vite's overlay would appear on every page open on the
  * server, each student's included.
  */
@@ -101,7 +101,7 @@ function mistakeModule(root, file, code, pos, text, suggestion = null) {
   const before = code.slice(0, pos).split('\n');
   const line = before.length, column = before.at(-1).length + 1;
   const where = { file: relative(root, file).split('\\').join('/'), line, column, source: code.split('\n')[line - 1], exact: true, ...(suggestion && { suggestion }) };
-  const panel = '/' + relative(root, resolve(import.meta.dirname, '../lib/p5/error-panel.js')).split('\\').join('/');
+  const panel = '/' + relative(root, resolve(import.meta.dirname, '../lib/p5/page/error-panel.js')).split('\\').join('/');
   return [
     `import { showMistake } from ${JSON.stringify(panel)};`,
     `console.error(${JSON.stringify(`${text}${suggestion ? ` (${suggestion})` : ''} (${where.file}:${line}:${column})`)});`,
@@ -154,7 +154,7 @@ function pagesOf(modules, root) {
  * Names that reach outside p5 in a way a swap could not undo: a timer would
  * go on calling the old sketch, a worker or the camera would go on running.
  * A script that holds any of them reloads its page on a save. (Listeners
- * are watched on the page instead, by lib/p5/hot-swap.js: one on an element
+ * are watched on the page instead, by lib/p5/page/hot-swap.js: one on an element
  * the swap removes goes with it.)
  */
 const OUTSIDE_P5 = new Set([
@@ -199,7 +199,7 @@ export function swapHooks(root, file, code) {
     if (!path.startsWith(lib + '/')) return null; // the sketch's own module: its saves reload the page
   }
   if (reachesOutsideP5(program)) return null;
-  const swap = '/' + relative(root, resolve(lib, 'p5/hot-swap.js')).split('\\').join('/');
+  const swap = '/' + relative(root, resolve(lib, 'p5/page/hot-swap.js')).split('\\').join('/');
   return `if (import.meta.hot) { import.meta.hot.accept(__sketchbookSwap.swappedIn); import.meta.hot.dispose(__sketchbookSwap.swapOut); } ${code}\nimport * as __sketchbookSwap from ${JSON.stringify(swap)};\n`;
 }
 

@@ -13,7 +13,7 @@
 import p5 from 'p5';
 import { Camera, Scene, Sphere, PointLight } from '../lib/index.js';
 import { createAnnouncer } from '../lib/p5/index.js'; // and the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
-import { mapValue } from '../lib/p5/map-words.js';
+import { mapValue } from '../lib/p5/tracer/map-words.js';
 
 // The sphere (the worksheet's: centre (0, 0, −20), radius 4) and the screen.
 const SPHERE = { x: 0, y: 0, z: -20, r: 4 };

@@ -4,7 +4,7 @@
  *
  *   { id, text, hint, done(event, memory) → boolean }
  *
- * where `event` is what just happened on the page (lib/p5/task-list.js makes them):
+ * where `event` is what just happened on the page (lib/p5/controls/task-list.js makes them):
  *   { type: 'select', record, scene, camera, … }  the student selected a pixel:
  *                                                 `record` is its inspectPixel record
  *   { type: 'state', scene, camera, … }           something changed (a box, a switch,

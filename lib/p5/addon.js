@@ -9,22 +9,22 @@
  * Each factory module exports `createX(p, options)`; this table is the one
  * place they become methods. A new factory is one more line here.
  */
-import { createTracerView } from './tracer-view.js';
-import { createSceneView } from './scene-view.js';
-import { createPhotonView } from './photon-view.js';
-import { createInspector } from './inspector.js';
-import { createAnswerForm } from './answer-form.js';
-import { createPixelMarks, createPixelHighlight } from './pixel-marks.js';
-import { createSliderField } from './slider-field.js';
-import { createSwitches } from './switches.js';
-import { createExamplePicker } from './example-picker.js';
-import { createAnimation } from './animation.js';
-import { createSceneForm } from './scene-form.js';
-import { createHomeworkCheck } from './homework-check.js';
-import { createTaskList } from './task-list.js';
-import { createSampleRays } from './sample-rays.js';
-import { createBvhView } from './bvh-view.js';
-import { createPathPanel } from './path-panel.js';
+import { createTracerView } from './tracer/view.js';
+import { createSceneView } from './scene-view/view.js';
+import { createPhotonView } from './tracer/photon-view.js';
+import { createInspector } from './pixel/inspector.js';
+import { createAnswerForm } from './controls/answer-form.js';
+import { createPixelMarks, createPixelHighlight } from './pixel/marks.js';
+import { createSliderField } from './controls/slider-field.js';
+import { createSwitches } from './controls/switches.js';
+import { createExamplePicker } from './controls/example-picker.js';
+import { createAnimation } from './controls/animation.js';
+import { createSceneForm } from './controls/scene-form.js';
+import { createHomeworkCheck } from './controls/homework-check.js';
+import { createTaskList } from './controls/task-list.js';
+import { createSampleRays } from './pixel/sample-rays.js';
+import { createBvhView } from './pixel/bvh-view.js';
+import { createPathPanel } from './pixel/path-panel.js';
 import { drawSideView, drawTopView } from './diagrams/plane-views.js';
 import { drawGeometricConstruction } from './diagrams/construction.js';
 import { drawParabola } from './diagrams/parabola.js';

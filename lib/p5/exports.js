@@ -6,18 +6,18 @@
  * entry that installs it (no circle of imports).
  */
 export { sketchbookAddon, FACTORIES } from './addon.js';
-export { TracerView } from './tracer-view.js';
-export { orbit } from './gpu-orbit.js'; // turn a view's camera about the point it looks at (as a drag on a GPU view does)
-export { SceneView } from './scene-view.js';
-export { PhotonView } from './photon-view.js';
-export { Inspector, answerLine } from './inspector.js';
+export { TracerView } from './tracer/view.js';
+export { orbit } from './tracer/gpu-orbit.js'; // turn a view's camera about the point it looks at (as a drag on a GPU view does)
+export { SceneView } from './scene-view/view.js';
+export { PhotonView } from './tracer/photon-view.js';
+export { Inspector, answerLine } from './pixel/inspector.js';
 export { formatAngle, formatLabel, fmt } from '../text/format.js';
-export { SceneAnimation } from './animation.js';
-export { exampleInLink } from './example-picker.js';
-export { pageRenderState } from './page-state.js';
+export { SceneAnimation } from './controls/animation.js';
+export { exampleInLink } from './controls/example-picker.js';
+export { pageRenderState } from './page/page-state.js';
 // A scene in the page's link (#scene=…), page parts built from text (never parsed as HTML), text to the clipboard:
-export { readSceneLink, sceneLinkURL, linkNotice } from './scene-link.js';
+export { readSceneLink, sceneLinkURL, linkNotice } from './page/scene-link.js';
 export { element, copyText } from './dom.js';
 // A part of the page's one voice for screen readers: said with the pixel, once the keys rest.
-export { createAnnouncer } from './announce.js';
-export { showInBox, downloadText } from './text-box.js';
+export { createAnnouncer } from './page/announce.js';
+export { showInBox, downloadText } from './controls/text-box.js';

@@ -11,7 +11,7 @@
  */
 import { sketchbookAddon } from './addon.js';
 import { registerAddon } from './register.js';
-import './live-coding.js'; // mistakes shown on the page (data-error); a save's reload keeps the page's place
+import './page/live-coding.js'; // mistakes shown on the page (data-error); a save's reload keeps the page's place
 
 registerAddon(sketchbookAddon); // p5.registerAddon on 2.x; on 1.x, p5.prototype and registerMethod
 

@@ -6,7 +6,7 @@
  *   const text = encodeScene(sceneToJSON(scene));   // 'eyJvYmplY3RzIjpb…'
  *   const copy = decodeScene(text);                  // a Scene, or a TypeError/RangeError saying what is wrong
  *
- * lib/p5/scene-link.js puts the compressed form of the same bytes in a page's link.
+ * lib/p5/page/scene-link.js puts the compressed form of the same bytes in a page's link.
  */
 import { Scene } from './scene.js';
 import { Sphere } from '../shapes/sphere.js';

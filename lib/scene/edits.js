@@ -1,6 +1,6 @@
 /**
  * A scene and its JSON kept in step one change at a time, for the scene form
- * (lib/p5/scene-form.js). A new value is checked on its own object, with
+ * (lib/p5/controls/scene-form.js). A new value is checked on its own object, with
  * sceneFromJSON's checks and messages (objectFromJSON), and the new Scene
  * reuses every other shape and light as built before: checking and building
  * 1,000 spheres again for each typed value or "Add sphere" held the page's

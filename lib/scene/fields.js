@@ -3,7 +3,7 @@
  * (sphere, point light, plane, box; a shape lists its own, its static `form`)
  * the fields of its JSON (see json.js) in table order, each with its label and the rule its number must meet; the
  * text a box shows for one; and a copy of scene JSON with one value changed.
- * lib/p5/scene-form.js builds its tables from these.
+ * lib/p5/controls/scene-form.js builds its tables from these.
  */
 import { colorText } from './values.js';
 import { show } from '../text/check.js';

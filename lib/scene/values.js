@@ -6,14 +6,9 @@
  */
 import { toColor, colorToHex } from '../math/color.js';
 import { show } from '../text/check.js';
+import { PLAIN_NUMBER } from '../text/format.js';
 
-/**
- * A plain number as typed: 12, -3.5, .5, 1e-3. The dot and its digits come
- * as one optional group, so no two repeats compete for the same digits and
- * a test takes time in proportion to the text (`\d+\.?\d*` took 3 s on
- * 60,000 digits then a letter).
- */
-export const PLAIN_NUMBER = /^[+-]?(?:\d+(?:\.\d*)?|\.\d+)(?:e[+-]?\d+)?$/i;
+export { PLAIN_NUMBER }; // a plain number as typed, the same test as CSV cells use (lib/text/format.js)
 
 /** 2,5: a decimal comma (or, in a whole-number box, two numbers in one box). */
 const DECIMAL_COMMA = /^[+-]?\d+,\d+$/;

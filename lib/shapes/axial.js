@@ -160,7 +160,7 @@ export class AxialShape {
     this.material = checked.material;
   }
 
-  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
+  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view/mesh.js). */
   viewKey() {
     const c = this.center;
     return `${c.x},${c.y},${c.z},${this.radius},${this.height},${this.capped}`;
@@ -171,7 +171,7 @@ export class AxialShape {
     return axialBounds(this.center, this.radius, this.height);
   }
 
-  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view-mesh.js). */
+  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view/mesh.js). */
   drawIn3D(kit, into, rgb) {
     kit.triangles(into, axialTriangles(this.center, this.radius, this.topRadius, this.height, this.capped), rgb);
   }

@@ -104,7 +104,7 @@ export class Box {
     return new Vec3((min.x + max.x) / 2, (min.y + max.y) / 2, (min.z + max.z) / 2);
   }
 
-  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view.js). */
+  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view/view.js). */
   drawIn3D(kit, into, rgb) {
     kit.box(into, this.min, this.max, rgb);
   }
@@ -118,7 +118,7 @@ export class Box {
   static get type() { return 'box'; }
   /** The class's name in the code that builds it (lib/scene/json.js, sceneToCode). */
   static get codeName() { return 'Box'; }
-  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
+  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view/mesh.js). */
   viewKey() { const a = this.min, b = this.max; return `${a.x},${a.y},${a.z},${b.x},${b.y},${b.z}`; }
   /** Built again from its JSON, the same to the bit (lib/scene/edits.js need not build it twice). */
   static get roundTrips() { return true; }

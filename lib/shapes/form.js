@@ -1,7 +1,7 @@
 /**
  * The scene form's boxes as each shape lists its own (its static `form`:
  * `{ title, what, columns }`, read by lib/scene/fields.js and
- * lib/p5/scene-form.js). A column: `path` into the object's JSON, `label` for
+ * lib/p5/controls/scene-form.js). A column: `path` into the object's JSON, `label` for
  * messages, `head` for the column, `kind` 'number' or 'color', and `rule` for readNumber.
  */
 

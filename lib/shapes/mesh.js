@@ -167,7 +167,7 @@ export class Mesh {
     return this.zeroAreaCells.length ? [...rows, ['zero-area triangles left out', this.zeroAreaCells.length]] : rows;
   }
 
-  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view-mesh.js). */
+  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view/mesh.js). */
   drawIn3D(kit, into, rgb) {
     kit.triangles(into, meshTriangles(this.vertices, this.indices), rgb);
   }
@@ -181,7 +181,7 @@ export class Mesh {
   static get type() { return 'mesh'; }
   /** The class's name in the code that builds it (lib/scene/json.js, sceneToCode). */
   static get codeName() { return 'Mesh'; }
-  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
+  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view/mesh.js). */
   viewKey() { return meshKey(this); }
 
   /** Its JSON fields. */

@@ -69,7 +69,7 @@ export class Plane {
     return this.point;
   }
 
-  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view.js). */
+  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view/view.js). */
   drawIn3D(kit, into, rgb) {
     kit.ground(into, this.point, this.normal, 0, rgb);
   }
@@ -83,7 +83,7 @@ export class Plane {
   static get type() { return 'plane'; }
   /** The class's name in the code that builds it (lib/scene/json.js, sceneToCode). */
   static get codeName() { return 'Plane'; }
-  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
+  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view/mesh.js). */
   viewKey() { const p = this.point, n = this.normal; return `${p.x},${p.y},${p.z},${n.x},${n.y},${n.z}`; }
 
   /** Its JSON fields, in the order the constructor takes them. */

@@ -89,7 +89,7 @@ export class Sphere {
     return this.center;
   }
 
-  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view.js). */
+  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view/view.js). */
   drawIn3D(kit, into, rgb) {
     kit.ball(into, this.center, this.radius, rgb, !this.material.isEmissive);
   }
@@ -103,7 +103,7 @@ export class Sphere {
   static get type() { return 'sphere'; }
   /** The class's name in the code that builds it (lib/scene/json.js, sceneToCode). */
   static get codeName() { return 'Sphere'; }
-  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
+  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view/mesh.js). */
   viewKey() { const c = this.center; return `${c.x},${c.y},${c.z},${this.radius}`; }
   /** Built again from its JSON, the same to the bit (lib/scene/edits.js need not build it twice). */
   static get roundTrips() { return true; }

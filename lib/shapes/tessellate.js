@@ -2,7 +2,7 @@
  * Triangles for the 3D view of the shapes that are not balls, boxes or
  * planes: `[ax, ay, az, bx, by, bz, cx, cy, cz, …]`, three corners a
  * triangle, counterclockwise seen from outside. The view shades each triangle
- * by its own normal (lib/p5/scene-view-mesh.js, kit.triangles).
+ * by its own normal (lib/p5/scene-view/mesh.js, kit.triangles).
  */
 
 /** Sides around the axis of a cylinder or cone in the 3D view. */

@@ -95,7 +95,7 @@ export class Triangle {
     return [['det', record.determinant], ['u', record.u], ['v', record.v], ['t', record.t]];
   }
 
-  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view-mesh.js). */
+  /** Draws itself into a 3D view's mesh with the view's own tools (lib/p5/scene-view/mesh.js). */
   drawIn3D(kit, into, rgb) {
     const { a, b, c } = this;
     kit.triangles(into, [a.x, a.y, a.z, b.x, b.y, b.z, c.x, c.y, c.z], rgb);
@@ -110,7 +110,7 @@ export class Triangle {
   static get type() { return 'triangle'; }
   /** The class's name in the code that builds it (lib/scene/json.js, sceneToCode). */
   static get codeName() { return 'Triangle'; }
-  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view-mesh.js). */
+  /** What its drawing in the 3D view depends on (the view's mesh cache, lib/p5/scene-view/mesh.js). */
   viewKey() { return [this.a, this.b, this.c].map((p) => `${p.x},${p.y},${p.z}`).join(','); }
 
   /** Its JSON fields, in the order the constructor takes them. */

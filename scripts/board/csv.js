@@ -3,7 +3,7 @@
  * Cells as the kit writes CSV everywhere (csvCell): a nickname that starts
  * like a formula is text in a spreadsheet.
  */
-import { csvCell } from '../../lib/p5/pixel-csv.js';
+import { csvCell } from '../../lib/text/csv.js';
 import { nameOf } from './store.js';
 import { POLL } from './checks.js';
 

@@ -4,7 +4,7 @@
  * (./routes.js) right after the class gate (which lets in BOARD_ROUTES
  * only: vite.config.js), and marks every page it serves with
  * `<meta name="rt-class-board">`, the sign for a student's page
- * (lib/p5/class-board.js) that it may send: without it (the static site,
+ * (lib/p5/page/class-board.js) that it may send: without it (the static site,
  * `npm start`) a page sends nothing.
  *
  * Where better-sqlite3 could not be built (no compiler, no prebuilt binary),

@@ -38,7 +38,7 @@ export const BOARD_ROUTES = [
   { path: /^\/board\/clear$/, methods: ['POST'], why: 'Clear the board: the class archived, a new one started (403 without the key)' },
   { path: /^\/class\/(hello|send)$/, methods: ['POST'], why: 'a student\'s page: its name on the board, one submission (it reads nobody\'s answers)' },
   { path: /^\/scripts\/board\/page\/[\w-]+\.(js|css)$/, why: 'the board page\'s script and style (nothing of the class in them)' },
-  { path: /^\/poll\.(html|js)$/, why: 'the lesson\'s poll, a student\'s page' },
+  { path: /^\/(poll\.html|site\/poll\.js)$/, why: 'the lesson\'s poll, a student\'s page, and its script' },
 ];
 
 /** Where a student's page sends (the meta tag the class server puts in every page names it). */
@@ -56,7 +56,7 @@ const HEARTBEAT_MS = 15_000;
 const KINDS = ['answer', 'task', 'check', 'poll'];
 /** A body over the limit is read to its end (and dropped) up to this, so that the page hears 413, not a reset connection. */
 const DISCARD_MAX_BYTES = 64 * 1024 * 1024;
-/** The headers a student's page names its laptop and proves it with (lib/p5/class-board.js). */
+/** The headers a student's page names its laptop and proves it with (lib/p5/page/class-board.js). */
 export const LAPTOP_HEADER = 'x-rt-laptop';
 export const SECRET_HEADER = 'x-rt-laptop-secret';
 const PUSH_AFTER_MS = 250; // a burst of submits makes one push, at most this late

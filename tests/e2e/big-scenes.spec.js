@@ -9,11 +9,11 @@ import { watchConsole, waitForDone, clickPixel } from './helpers.js';
 import { Scene, Sphere, Plane, Cylinder, Mesh, AreaLight, PointLight, classScene } from '../../lib/index.js';
 import { MAX_SHADOW_RAYS, MAX_SCENE_TRIANGLES } from '../../lib/scene/work.js';
 import { sceneToJSON } from '../../lib/scene/json.js';
-import { encodeSceneLink } from '../../lib/p5/scene-link.js';
-import { SPHERE_ROWS } from '../../lib/p5/inspector.js';
-import { FORM_ROWS } from '../../lib/p5/scene-form.js';
+import { encodeSceneLink } from '../../lib/p5/page/scene-link.js';
+import { SPHERE_ROWS } from '../../lib/p5/pixel/inspector.js';
+import { FORM_ROWS } from '../../lib/p5/controls/scene-form.js';
 import { MAX_SCENE_OBJECTS } from '../../lib/scene/codec.js';
-import { BOX_CHARS } from '../../lib/p5/text-box.js';
+import { BOX_CHARS } from '../../lib/p5/controls/text-box.js';
 
 const SPHERES = 1000;
 // ms, the median step. Not the speed goal (50 ms: measured and reported in the

@@ -9,7 +9,7 @@ import { EVERY_PAGE, PAGE_PARAMETERS } from './link-parameters.js';
 import { sceneToJSON } from '../../lib/scene/json.js';
 import { classScene } from '../../lib/scene/examples.js';
 import { encodeScene } from '../../lib/scene/codec.js';
-import { encodeSceneLink, readSceneLink } from '../../lib/p5/scene-link.js';
+import { encodeSceneLink, readSceneLink } from '../../lib/p5/page/scene-link.js';
 
 const PAGES = ['index.html', ...readdirSync('sketches').filter((f) => f.endsWith('.html')).map((f) => `sketches/${f}`)];
 const PAYLOADS = [

@@ -89,7 +89,7 @@ export function liveSketch(slug, source, { main = '', folder = 'tests/e2e/pages'
 
 /**
  * Saves `text` as the sketch and waits for the page to take it: a swap in
- * place (lib/p5/hot-swap.js counts them in window.__sketchbookSwaps) or a
+ * place (lib/p5/page/hot-swap.js counts them in window.__sketchbookSwaps) or a
  * reload. An editor's save can reach the file watcher as two changes, so a
  * second update may follow the first; it returns once none came for
  * `quietMs`. Returns how the page took the save: 'swap' or 'reload'.

@@ -72,7 +72,7 @@ const MISTAKES = [
     message: 'ReferenceError: WIDHT is not defined',
     suggestion: 'did you mean WIDTH?', // the sketch's own, before p5's width
   },
-  // Did you mean …: the nearest name of the kit or p5 (lib/p5/mistake-hints.js).
+  // Did you mean …: the nearest name of the kit or p5 (lib/p5/page/mistake-hints.js).
   {
     name: 'a misspelt kit method on p',
     source: sketchSource().replace('p.createTracerView(', 'p.createTracerVeiw('),

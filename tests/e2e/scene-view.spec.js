@@ -1,4 +1,4 @@
-// The 3D scene view (lib/p5/scene-view.js): linked both ways with its tracer
+// The 3D scene view (lib/p5/scene-view/view.js): linked both ways with its tracer
 // view, turned by dragging, and its picture at fixed orbits for a selected
 // pixel, with and without shadows and mirrors.
 import { test, expect } from '@playwright/test';

@@ -6,7 +6,7 @@ import { watchConsole, waitForDone } from './helpers.js';
 import { Scene, Sphere, classScene } from '../../lib/index.js';
 import { sceneToJSON } from '../../lib/scene/json.js';
 import { encodeScene } from '../../lib/scene/codec.js';
-import { encodeSceneLink, LINK_WARN_LENGTH } from '../../lib/p5/scene-link.js';
+import { encodeSceneLink, LINK_WARN_LENGTH } from '../../lib/p5/page/scene-link.js';
 
 const BOXES = '/sketches/05-value-boxes.html';
 const radius = 'objects[1].radius';

@@ -267,7 +267,7 @@ test.describe('05 · Value boxes', () => {
     await enter(page, radius, '6');
     await waitForDone(page);
     expect(await picture(page)).not.toEqual(before);
-    await expect(page).toHaveURL(/#scene=z\.[A-Za-z0-9_-]+$/); // compressed, in the fragment (lib/p5/scene-link.js)
+    await expect(page).toHaveURL(/#scene=z\.[A-Za-z0-9_-]+$/); // compressed, in the fragment (lib/p5/page/scene-link.js)
     await expect(page.locator(`[data-message-for="${radius}"]`)).toBeEmpty();
   });
 

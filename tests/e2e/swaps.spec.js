@@ -1,5 +1,5 @@
 /**
- * Saves swapped in place (lib/p5/hot-swap.js): no reload, and nothing of the
+ * Saves swapped in place (lib/p5/page/hot-swap.js): no reload, and nothing of the
  * old sketch left behind: no second canvas, no listener, worker, timer or
  * animation frame of the old version still running. What cannot be swapped
  * safely reloads its page, as before.

@@ -5,8 +5,8 @@ import { test, expect } from '@playwright/test';
 import { expectQuietConsole, waitForDone, clickPixel } from './helpers.js';
 import { Scene, Plane, Cylinder, AreaLight, PointLight } from '../../lib/index.js';
 import { sceneToJSON } from '../../lib/scene/json.js';
-import { encodeSceneLink } from '../../lib/p5/scene-link.js';
-import { AREA_LIGHTS_SHOWN } from '../../lib/p5/inspector.js';
+import { encodeSceneLink } from '../../lib/p5/page/scene-link.js';
+import { AREA_LIGHTS_SHOWN } from '../../lib/p5/pixel/inspector.js';
 
 expectQuietConsole(test);
 

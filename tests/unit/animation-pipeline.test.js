@@ -1,7 +1,7 @@
 // The animation on workers, pipelined: while draw() shows frame n the workers trace frame n+1,
 // at most PIPELINE frames under way, and what is shown is render()'s picture of its moment.
 import { describe, it, expect, vi, afterEach } from 'vitest';
-import { SceneAnimation, PIPELINE } from '../../lib/p5/animation.js';
+import { SceneAnimation, PIPELINE } from '../../lib/p5/controls/animation.js';
 import { workerHandler } from '../../lib/tracing/workers/split.js';
 import { render, Camera, classSceneAt } from '../../lib/index.js';
 

@@ -1,6 +1,6 @@
 // The animation's pure parts: the FPS counter, the stats line, the worker-count box's reading, comparing frames.
 import { describe, it, expect } from 'vitest';
-import { framesPerSecond, FrameCounter, statsLine, readWorkerCount, sameBytes } from '../../lib/p5/animation.js';
+import { framesPerSecond, FrameCounter, statsLine, readWorkerCount, sameBytes } from '../../lib/p5/controls/animation.js';
 
 describe('framesPerSecond', () => {
   it('is 0 with fewer than two frames', () => {

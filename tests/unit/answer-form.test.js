@@ -1,6 +1,6 @@
 // The answer form's reading of its boxes: every box read (so each bad one says why), all values or none.
 import { describe, it, expect } from 'vitest';
-import { readBoxes } from '../../lib/p5/answer-form.js';
+import { readBoxes } from '../../lib/p5/controls/answer-form.js';
 
 const box = (value) => ({ reads: 0, read() { this.reads++; return value; } });
 

@@ -1,8 +1,9 @@
-// docs/ARCHITECTURE.md is the map of lib/: every file under lib/ is named in
-// it, and every lib/ file it names is there. A file is named by its path under
-// lib/ (`shapes/sphere.js`, `p5/scene-view.js`, or with `lib/` in front), or
-// by its bare name in backticks when no other file of lib/ has that name. And
-// no file of lib/ grows past 450 lines.
+// docs/ARCHITECTURE.md is the map of lib/, editor/, site/ and scripts/: every
+// file there has its own line, `- \`path\`: what it is`, in the section of its
+// own folder (a heading naming the folder in backticks, `lib/p5/pixel/`), the
+// path written with its folder (`p5/pixel/record.js` under lib/, or whole:
+// `lib/p5/pixel/record.js`, `editor/code-panel.js`); and every file the doc
+// names is there. And no file of lib/ grows past 450 lines.
 import { it, expect } from 'vitest';
 import { readFileSync, readdirSync, existsSync } from 'node:fs';
 import { relative, join } from 'node:path';
@@ -11,37 +12,57 @@ import { fileURLToPath } from 'node:url';
 const ROOT = new URL('../../', import.meta.url);
 const doc = readFileSync(new URL('docs/ARCHITECTURE.md', ROOT), 'utf8');
 
-/** Every file under lib/, as its path under lib/ ('p5/diagrams/draw.js'). */
-const LIB = fileURLToPath(new URL('lib/', ROOT));
-const files = readdirSync(LIB, { recursive: true, withFileTypes: true })
-  .filter((entry) => entry.isFile())
-  .map((entry) => relative(LIB, join(entry.parentPath ?? entry.path, entry.name)).split('\\').join('/'));
+/** Every file under a folder of the project, as its path from the root ('lib/p5/diagrams/draw.js'). */
+function filesUnder(folder) {
+  const dir = fileURLToPath(new URL(`${folder}/`, ROOT));
+  return readdirSync(dir, { recursive: true, withFileTypes: true })
+    .filter((entry) => entry.isFile())
+    .map((entry) => `${folder}/${relative(dir, join(entry.parentPath ?? entry.path, entry.name)).split('\\').join('/')}`);
+}
+const MAPPED = ['lib', 'editor', 'site', 'scripts'];
+const files = MAPPED.flatMap(filesUnder);
+const libFiles = files.filter((f) => f.startsWith('lib/')).map((f) => f.slice('lib/'.length));
+const folderOf = (path) => path.slice(0, path.lastIndexOf('/') + 1);
 const baseName = (path) => path.split('/').at(-1);
-const count = new Map();
-for (const f of files) count.set(baseName(f), (count.get(baseName(f)) ?? 0) + 1);
 
-/** The file names the doc writes in backticks ('vec3.js', 'shapes/packed.js', 'lib/p5/scene-link.js'). */
-const named = [...doc.matchAll(/`([\w./-]+\.(?:js|css))`/g)].map((m) => m[1]).filter((name) => !/\bNN-/.test(name)); // not a placeholder ('sketches/NN-name.js')
-const underLib = (name) => name.replace(/^lib\//, '');
+/** A path as the doc writes it, from the root: lib/'s own files may leave out 'lib/' ('shapes/sphere.js'). */
+const fromRoot = (name) => (MAPPED.some((folder) => name.startsWith(`${folder}/`)) ? name : `lib/${name}`);
 
-it('names every file under lib/', () => {
-  const names = new Set(named.map(underLib));
-  const missing = files.filter((f) => {
-    if (names.has(f)) return false;
-    // a path under a folder the doc writes whole ('diagrams/plane-views.js' for lib/p5/diagrams/plane-views.js)
-    if ([...names].some((n) => n.includes('/') && f.endsWith(`/${n}`))) return false;
-    return !(count.get(baseName(f)) === 1 && names.has(baseName(f)));
-  });
-  expect(missing, 'files under lib/ that docs/ARCHITECTURE.md does not name').toEqual([]);
+/** The map's lines: each `- \`path\`: …` with the folder of the section it stands in. */
+function mapLines() {
+  const lines = [];
+  let section = null;
+  for (const line of doc.split('\n')) {
+    const heading = line.match(/^##+ `([\w./-]+\/)`/);
+    if (line.startsWith('## ')) section = heading ? heading[1] : null;
+    const entry = line.match(/^- `([\w./-]+\.\w+)`: \S/);
+    if (entry) lines.push({ path: fromRoot(entry[1]), section });
+  }
+  return lines;
+}
+const lines = mapLines();
+
+it('gives every file of lib/, editor/, site/ and scripts/ its own line, named with its folder', () => {
+  const named = new Set(lines.map((l) => l.path));
+  expect(files.filter((f) => !named.has(f)), 'files docs/ARCHITECTURE.md does not name on a line of its own').toEqual([]);
+  const twice = lines.map((l) => l.path).filter((path, i, all) => all.indexOf(path) !== i);
+  expect(twice, 'files named on two lines of the map').toEqual([]);
 });
 
-it('names no file of lib/ that is gone', () => {
+it('puts each file\'s line in the section of its own folder', () => {
+  const misplaced = lines.filter((l) => l.section !== folderOf(l.path)).map((l) => `${l.path} under ${l.section ?? 'no folder\'s heading'}`);
+  expect(misplaced, 'lines of the map in another folder\'s section').toEqual([]);
+});
+
+/** The file names the doc writes in backticks ('vec3.js', 'shapes/packed.js', 'lib/p5/page/scene-link.js'). */
+const named = [...doc.matchAll(/`([\w./-]+\.(?:js|css|html))`/g)].map((m) => m[1])
+  .filter((name) => !/\bNN-/.test(name) && !/^[\w-]+\.html$/.test(name)); // not a placeholder ('sketches/NN-name.js'), nor a page at the root
+
+it('names no file that is gone', () => {
   const gone = named.filter((name) => {
-    const path = underLib(name);
-    if (name.startsWith('lib/') || !/^(tests|scripts|sketches|bench|docs|editor)\//.test(name)) {
-      return !files.includes(path) && !files.some((f) => f.endsWith(`/${path}`)) && !(name.indexOf('/') < 0 && count.has(name));
-    }
-    return !existsSync(new URL(name, ROOT)); // a file outside lib/: it is there too
+    if (!name.includes('/')) return !files.some((f) => baseName(f) === name); // a bare name in the prose: some file has it
+    if (/^(tests|sketches|bench|docs)\//.test(name)) return !existsSync(new URL(name, ROOT));
+    return !files.includes(fromRoot(name));
   });
   expect(gone, 'files docs/ARCHITECTURE.md names that are not there').toEqual([]);
 });
@@ -50,8 +71,8 @@ it('names no file of lib/ that is gone', () => {
 const MAX_LINES = 450;
 
 it(`keeps every file of lib/ to ${MAX_LINES} lines at most`, () => {
-  const long = files.filter((f) => f.endsWith('.js'))
-    .map((f) => [f, readFileSync(join(LIB, f), 'utf8').split('\n').length - 1])
+  const long = libFiles.filter((f) => f.endsWith('.js'))
+    .map((f) => [f, readFileSync(new URL(`lib/${f}`, ROOT), 'utf8').split('\n').length - 1])
     .filter(([, lines]) => lines > MAX_LINES);
   expect(long, 'files of lib/ over the limit, with their lines').toEqual([]);
 });

@@ -239,7 +239,7 @@ describe('the routes', () => {
 
   it('names every route it answers for the class gate, each with its reason, POST only where a page sends', () => {
     const gate = (method, path) => isStudentRoute(method, path, BOARD_ROUTES);
-    for (const path of ['/board', '/board/state', '/board/events', '/board/class.csv', '/scripts/board/page/board.js', '/scripts/board/page/board.css', '/poll.html', '/poll.js']) {
+    for (const path of ['/board', '/board/state', '/board/events', '/board/class.csv', '/scripts/board/page/board.js', '/scripts/board/page/board.css', '/poll.html', '/site/poll.js']) {
       expect([path, gate('GET', path), gate('POST', path)]).toEqual([path, true, false]);
     }
     for (const path of ['/board/clear', '/class/send', '/class/hello']) expect([path, gate('POST', path), gate('GET', path)]).toEqual([path, true, false]);

@@ -80,7 +80,7 @@ describe('the class server, started as npm run class starts it', () => {
   });
 
   it('serves what the students\' pages need', async () => {
-    for (const path of ['/', '/index.html', '/sketches/04-find-the-pink-pixel.html', '/sketches/04-find-the-pink-pixel.js', '/lib/index.js', '/gallery.js', '/@vite/client', '/api/',
+    for (const path of ['/', '/index.html', '/sketches/04-find-the-pink-pixel.html', '/sketches/04-find-the-pink-pixel.js', '/lib/index.js', '/site/gallery.js', '/@vite/client', '/api/',
       '/editor/code-in-page.js', '/editor/code-in-page.css', '/sketch-code/08-homework-traffic-signal.js']) {
       const answer = await ask(port, path);
       expect([path, answer.status]).toEqual([path, 200]);
@@ -90,7 +90,7 @@ describe('the class server, started as npm run class starts it', () => {
   it('lets the class board\'s routes through, each with its own methods, and nothing else of scripts/', async () => {
     const passes = async (path, options) => (await ask(port, path, options)).headers['x-refused-by'] === undefined;
     // Through the gate to the board (which wants its key, or refuses a bad submission): the gate refuses none.
-    for (const path of ['/board', '/board?key=nope', '/board/state', '/board/events', '/board/class.csv', '/poll.html', '/poll.js', '/scripts/board/page/board.js', '/scripts/board/page/board.css']) {
+    for (const path of ['/board', '/board?key=nope', '/board/state', '/board/events', '/board/class.csv', '/poll.html', '/site/poll.js', '/scripts/board/page/board.js', '/scripts/board/page/board.css']) {
       expect([path, await passes(path)]).toEqual([path, true]);
     }
     for (const path of ['/board/clear', '/class/send', '/class/hello']) expect([path, await passes(path, { method: 'POST', json: {} })]).toEqual([path, true]);

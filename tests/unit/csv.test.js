@@ -3,7 +3,8 @@
 // quoted so rows never split.
 import { describe, it, expect } from 'vitest';
 import { Scene, Sphere, Camera, inspectPixel } from '../../lib/index.js';
-import { pixelCSV, csvCell } from '../../lib/p5/inspector.js';
+import { pixelCSV, csvCell as inspectorsCell } from '../../lib/p5/pixel/inspector.js';
+import { csvCell } from '../../lib/text/csv.js';
 
 /** A tiny CSV reader (RFC 4180): rows of cells. */
 function parseCSV(text) {
@@ -41,6 +42,10 @@ describe('csvCell', () => {
     expect(csvCell('a,b')).toBe('"a,b"');
     expect(csvCell('a\nb')).toBe('"a\nb"');
     expect(csvCell('a\rb')).toBe('"a\rb"');
+  });
+
+  it('is one function: the inspector hands on lib/text/csv.js\'s, as the class board imports it', () => {
+    expect(inspectorsCell).toBe(csvCell);
   });
 });
 

@@ -1,5 +1,5 @@
 import { describe, it, expect } from 'vitest';
-import { sketchFrame, errorMessage } from '../../lib/p5/error-panel.js';
+import { sketchFrame, errorMessage } from '../../lib/p5/page/error-panel.js';
 
 const ORIGIN = 'http://localhost:5173';
 

@@ -1,6 +1,6 @@
 // Which example a link asks for (?example=…), and what a bad one is told.
 import { describe, it, expect } from 'vitest';
-import { exampleInLink } from '../../lib/p5/example-picker.js';
+import { exampleInLink } from '../../lib/p5/controls/example-picker.js';
 
 const EXAMPLES = { still: {}, animated: { thread: 'main' }, workers: { thread: 'workers' } };
 

@@ -14,7 +14,7 @@ function sources(dir) {
     return statSync(path).isDirectory() ? sources(path) : path.endsWith('.js') ? [path] : [];
   });
 }
-const FILES = [...sources('lib'), ...sources('sketches'), 'gallery.js'].map((path) => ({ path, text: readFileSync(path, 'utf8') }));
+const FILES = [...sources('lib'), ...sources('sketches'), 'site/gallery.js'].map((path) => ({ path, text: readFileSync(path, 'utf8') }));
 
 /** Lines of code (comments out) matching `pattern`, as "file:line: text". */
 function find(pattern) {

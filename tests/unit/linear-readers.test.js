@@ -15,7 +15,7 @@ import { LESSONS } from '../../lib/lesson/tasks.js';
 import { readNumber, readColor } from '../../lib/scene/values.js';
 import { answerLineBoxes } from '../../lib/lesson/activity.js';
 import { solutionParameter } from '../../lib/lesson/homework.js';
-import { exampleInLink } from '../../lib/p5/example-picker.js';
+import { exampleInLink } from '../../lib/p5/controls/example-picker.js';
 
 const LINEAR = 400; // × for 100 × the text: linear is ~100, quadratic ~10,000
 const pad = (n, s) => s.repeat(Math.max(1, Math.floor(n / s.length)));

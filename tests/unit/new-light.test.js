@@ -18,7 +18,7 @@ import { registerLight } from '../../lib/lights/index.js';
 import { LIGHT, POSITION, LIGHT_EMISSION, ATTENUATION, IS_SPOT } from '../../lib/lights/packed.js';
 import { lightColor, lightIntensity, lightName, definedOnly } from '../../lib/lights/checks.js';
 import { vector } from '../../lib/shapes/json.js';
-import { buildMeshes, shapesKey, lightLoops } from '../../lib/p5/scene-view-mesh.js';
+import { buildMeshes, shapesKey, lightLoops } from '../../lib/p5/scene-view/mesh.js';
 import { toVec3, Vec3 } from '../../lib/math/vec3.js';
 import { checkOptions } from '../../lib/text/check.js';
 

@@ -1,7 +1,7 @@
 // The path panel's 3D segments: a path from the eye, hit to hit, on toward the sky, coloured by the throughput it carries.
 import { describe, it, expect } from 'vitest';
 import { Scene, Sphere, Plane, Camera, inspectPath } from '../../lib/index.js';
-import { pathRays } from '../../lib/p5/path-panel.js';
+import { pathRays } from '../../lib/p5/pixel/path-panel.js';
 
 describe('pathRays', () => {
   it('one segment per bounce, from the eye, joined end to end, the last toward the sky when the path left', () => {
@@ -25,10 +25,10 @@ describe('pathRays', () => {
 });
 
 describe('a path-traced view and the GPU engine', () => {
-  // The GPU path traces too (lib/p5/gpu-path-renderer.js, tested in Chromium by tests/e2e/gpu-paths.spec.js);
+  // The GPU path traces too (lib/p5/tracer/gpu-path-renderer.js, tested in Chromium by tests/e2e/gpu-paths.spec.js);
   // here in Node there is no WebGL2, so the view stays on the CPU and says why.
   it('without WebGL2 stays on the CPU, path tracing, and says why', async () => {
-    const { engineRenderer } = await import('../../lib/p5/engines.js');
+    const { engineRenderer } = await import('../../lib/p5/tracer/engines.js');
     const { PathProgressiveRenderer } = await import('../../lib/tracing/pathtrace/progressive.js');
     const scene = new Scene({ background: [0.5, 0.5, 0.5] }).add(new Sphere([0, 0, -8], 1));
     const paths = new PathProgressiveRenderer({ scene, camera: new Camera({ width: 8, height: 6 }), path: { samples: 2 } });

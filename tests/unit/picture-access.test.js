@@ -3,8 +3,8 @@
 // looks from.
 import { describe, it, expect } from 'vitest';
 import { pixelNames, pixelRows, nextPixelNamed, COLOR_NAMES } from '../../lib/lesson/describe.js';
-import { mapSummary, mapValue } from '../../lib/p5/map-words.js';
-import { orbitWords } from '../../lib/p5/scene-view-words.js';
+import { mapSummary, mapValue } from '../../lib/p5/tracer/map-words.js';
+import { orbitWords } from '../../lib/p5/scene-view/words.js';
 import { Camera, Scene, Sphere, PointLight, classScene, render, inspectPixel, colorName } from '../../lib/index.js';
 
 /** A 4 × 2 picture: row 0 white, white, pink, pink; row 1 pink, white, white, white. */

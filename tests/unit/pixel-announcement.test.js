@@ -2,7 +2,7 @@
 // its own name, else its kind and its number counted from 1 ("sphere 1"), never the index from 0.
 import { describe, it, expect } from 'vitest';
 import { Scene, Sphere, Plane, PointLight, AreaLight, SpotLight, Camera, classScene, inspectPixel } from '../../lib/index.js';
-import { pixelAnnouncement } from '../../lib/p5/inspector.js';
+import { pixelAnnouncement } from '../../lib/p5/pixel/inspector.js';
 
 const camera = new Camera({ width: 32, height: 24 });
 

@@ -1,6 +1,6 @@
 // Finding the pixels to mark in a traced picture.
 import { describe, it, expect } from 'vitest';
-import { findPixels } from '../../lib/p5/pixel-marks.js';
+import { findPixels } from '../../lib/p5/pixel/marks.js';
 import { classScene, render, Camera, colorName } from '../../lib/index.js';
 
 describe('findPixels', () => {

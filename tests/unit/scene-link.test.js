@@ -8,7 +8,7 @@ import { encodeScene } from '../../lib/scene/codec.js';
 import {
   encodeSceneLink, decodeSceneLink, readSceneLink, sceneLinkURL, sceneTextInLink, linkNotice,
   LINK_WARN_LENGTH, LINK_MAX_LENGTH, MAX_SCENE_BYTES,
-} from '../../lib/p5/scene-link.js';
+} from '../../lib/p5/page/scene-link.js';
 
 const PAGE = 'http://localhost/sketches/05-value-boxes.html';
 

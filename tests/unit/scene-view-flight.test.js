@@ -1,8 +1,8 @@
-// Shoot's flight (lib/p5/scene-view-flight.js): which traced pixels fly, how
+// Shoot's flight (lib/p5/scene-view/flight.js): which traced pixels fly, how
 // far each segment has grown at a given time, and when a ray has arrived.
 import { describe, it, expect } from 'vitest';
 import { Vec3 } from '../../lib/math/vec3.js';
-import { legSeconds, startOf, tracedSince, flightFrame, launch, Flight, checkSpeed, MAX_FLYING, FLY_LAST } from '../../lib/p5/scene-view-flight.js';
+import { legSeconds, startOf, tracedSince, flightFrame, launch, Flight, checkSpeed, MAX_FLYING, FLY_LAST } from '../../lib/p5/scene-view/flight.js';
 
 /** A pixel's story: a primary ray to a hit, its normal, a shadow ray blocked half-way, a bounce. */
 const story = () => [

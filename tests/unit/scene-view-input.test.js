@@ -1,10 +1,10 @@
-// The 3D view by pointer (lib/p5/scene-view-input.js): the orbit's maths, and
+// The 3D view by pointer (lib/p5/scene-view/input.js): the orbit's maths, and
 // what a press, a drag, a click, the wheel and h / v do to the view.
 import { describe, it, expect } from 'vitest';
 import { Vec3 } from '../../lib/math/vec3.js';
 import { Camera } from '../../lib/math/camera.js';
 import { orbitCamera, pixelCenter, projectToScreen } from '../../lib/lesson/rays3d.js';
-import { dragOrbit, isDrag, zoomDistance, wheelFactor, clampPitch, fanKey, checkOrbit, listenForInput, pixelUnder, CLICK_SLOP } from '../../lib/p5/scene-view-input.js';
+import { dragOrbit, isDrag, zoomDistance, wheelFactor, clampPitch, fanKey, checkOrbit, listenForInput, pixelUnder, CLICK_SLOP } from '../../lib/p5/scene-view/input.js';
 
 describe('the orbit maths', () => {
   it('a drag turns 0.4° per px: to the right turns the view left, down looks from higher', () => {

@@ -1,11 +1,11 @@
-// Words over the 3D view (lib/p5/scene-view-labels.js): where a label lands on
+// Words over the 3D view (lib/p5/scene-view/labels.js): where a label lands on
 // the canvas for a point of view, and the geometric route's lines and values.
 import { describe, it, expect } from 'vitest';
 import { Vec3 } from '../../lib/math/vec3.js';
 import { Ray } from '../../lib/math/ray.js';
 import { Sphere, intersectGeometric } from '../../lib/shapes/sphere.js';
 import { orbitCamera } from '../../lib/lesson/rays3d.js';
-import { constructionOf, placeLabels, drawLabels } from '../../lib/p5/scene-view-labels.js';
+import { constructionOf, placeLabels, drawLabels } from '../../lib/p5/scene-view/labels.js';
 import { INK, CONSTRUCT, NORMAL } from '../../lib/p5/diagrams/style.js';
 
 const FOVY = Math.PI / 3, W = 480, H = 360;

@@ -1,4 +1,4 @@
-// The 3D view's still part as triangles (lib/p5/scene-view-mesh.js): every
+// The 3D view's still part as triangles (lib/p5/scene-view/mesh.js): every
 // shape, light and the eye; glass apart; colours lit by one fixed light.
 import { describe, it, expect } from 'vitest';
 import { Scene } from '../../lib/scene/scene.js';
@@ -13,7 +13,7 @@ import { PointLight } from '../../lib/lights/point-light.js';
 import { Camera } from '../../lib/math/camera.js';
 import { Vec3 } from '../../lib/math/vec3.js';
 import { sceneBounds } from '../../lib/lesson/rays3d.js';
-import { buildMeshes, shapesKey, shade, glassAlpha, nearestAhead, GLOW } from '../../lib/p5/scene-view-mesh.js';
+import { buildMeshes, shapesKey, shade, glassAlpha, nearestAhead, GLOW } from '../../lib/p5/scene-view/mesh.js';
 
 const SPHERE = 16 * 28 * 6, SMALL_SPHERE = 8 * 12 * 6, BOX = 6 * 6, PATCH = 6; // vertices
 

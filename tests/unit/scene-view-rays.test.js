@@ -1,10 +1,10 @@
-// The rays the 3D view shows for pixels (lib/p5/scene-view-rays.js): read from
+// The rays the 3D view shows for pixels (lib/p5/scene-view/rays.js): read from
 // inspectPixel, so they end where the traced pixel's story says.
 import { describe, it, expect } from 'vitest';
 import { classScene } from '../../lib/scene/examples.js';
 import { Camera } from '../../lib/math/camera.js';
 import { inspectPixel } from '../../lib/lesson/inspect.js';
-import { pixelStory, shotStory, fanRays } from '../../lib/p5/scene-view-rays.js';
+import { pixelStory, shotStory, fanRays } from '../../lib/p5/scene-view/rays.js';
 import { raySegments, primarySegment } from '../../lib/lesson/rays3d.js';
 import { penumbraScene, penumbraCamera, penumbraPixel } from './penumbra-scene.js';
 

@@ -1,6 +1,6 @@
 // A slider field's reading of its text box and the line under it for a bad value.
 import { describe, it, expect } from 'vitest';
-import { fieldMessage } from '../../lib/p5/slider-field.js';
+import { fieldMessage } from '../../lib/p5/controls/slider-field.js';
 import { readNumber } from '../../lib/scene/values.js';
 import { Sphere } from '../../lib/index.js';
 

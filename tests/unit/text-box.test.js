@@ -2,7 +2,7 @@
 // it into a LF), and a text longer than the box can lay out quickly is cut at
 // a line's end, with a note.
 import { describe, it, expect } from 'vitest';
-import { showInBox, BOX_CHARS } from '../../lib/p5/text-box.js';
+import { showInBox, BOX_CHARS } from '../../lib/p5/controls/text-box.js';
 
 /** What a textarea does to its value: every CR and CRLF becomes a LF. */
 function textarea() {

@@ -1,7 +1,7 @@
-// What a tracer view tells its listeners (lib/p5/tracer-events.js): each
+// What a tracer view tells its listeners (lib/p5/tracer/events.js): each
 // listener hears its own event, in the order added, until it is removed.
 import { describe, it, expect } from 'vitest';
-import { createEvents } from '../../lib/p5/tracer-events.js';
+import { createEvents } from '../../lib/p5/tracer/events.js';
 
 describe('createEvents', () => {
   it('calls each listener of an event with what is emitted, in the order they were added', () => {

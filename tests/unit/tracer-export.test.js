@@ -1,7 +1,7 @@
 // The tracer view's PNG export: the file's name, and the download itself (on
 // stand-ins for the canvas and the page's link element).
 import { describe, it, expect, afterEach } from 'vitest';
-import { pngDataURL, pngFilename, download } from '../../lib/p5/tracer-export.js';
+import { pngDataURL, pngFilename, download } from '../../lib/p5/tracer/export.js';
 
 describe('PNG export', () => {
   const realDocument = globalThis.document;

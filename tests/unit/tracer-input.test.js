@@ -1,7 +1,7 @@
 // The tracer view's input: the pixel under a point of the screen, where an
 // arrow key moves the selection, and the events that select (on a stand-in canvas).
 import { describe, it, expect } from 'vitest';
-import { pixelAt, arrowMove, listenForPixels } from '../../lib/p5/tracer-input.js';
+import { pixelAt, arrowMove, listenForPixels } from '../../lib/p5/tracer/input.js';
 
 /** A canvas standing in for the picture: shown at (left, top), w × h on screen; it keeps its listeners. */
 function fakeCanvas(left, top, w, h) {

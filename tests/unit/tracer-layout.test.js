@@ -1,7 +1,7 @@
 // The tracer view's size on screen: screen pixels per traced pixel for a
 // numeric scale and for 'auto', from the page's measures.
 import { describe, it, expect } from 'vitest';
-import { cappedScale, checkScale, fixedScale, fitScale } from '../../lib/p5/tracer-layout.js';
+import { cappedScale, checkScale, fixedScale, fitScale } from '../../lib/p5/tracer/layout.js';
 
 /** The test pages' room: a 1280 × 900 window, 16 px text, a wide parent. */
 const ROOM = { rem: 16, parentWidth: 1200, windowWidth: 1280, windowHeight: 900 };

@@ -1,7 +1,7 @@
 // The tracer view's overlay: where the grid, the pixel outlines and the
 // crosshair go, and what is painted when (into a context that records calls).
 import { describe, it, expect } from 'vitest';
-import { drawOverlay, gridLines, pixelSquare, crosshairArms, markWidth, GRID_MIN_SCALE } from '../../lib/p5/tracer-overlay.js';
+import { drawOverlay, gridLines, pixelSquare, crosshairArms, markWidth, GRID_MIN_SCALE } from '../../lib/p5/tracer/overlay.js';
 
 /** A 2D context standing in for the overlay's: it records the calls that draw something. */
 function recordingContext(width, height) {

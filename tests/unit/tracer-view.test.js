@@ -2,9 +2,9 @@
 // global added, no view registered. A view's work (the stylesheet, the
 // Projector switch, the page's render state) starts with createTracerView.
 import { it, expect } from 'vitest';
-import { pageViews } from '../../lib/p5/page-state.js';
+import { pageViews } from '../../lib/p5/page/page-state.js';
 
-const MODULES = ['tracer-view.js', 'tracer-layout.js', 'tracer-overlay.js', 'tracer-input.js', 'tracer-export.js', 'tracer-events.js'];
+const MODULES = ['tracer/view.js', 'tracer/layout.js', 'tracer/overlay.js', 'tracer/input.js', 'tracer/export.js', 'tracer/events.js'];
 
 it('importing the tracer view and its parts touches no page, adds no global and registers no view', async () => {
   const touched = [];

@@ -19,7 +19,7 @@ describe('syntaxErrorsWhereTheyAre', () => {
 
   it("a page's script with a syntax error becomes a module showing it on that page, at its line and column", () => {
     const code = transform(BROKEN, resolve('sketches/10-playground.js'));
-    expect(code).toContain('import { showMistake } from "/lib/p5/error-panel.js";');
+    expect(code).toContain('import { showMistake } from "/lib/p5/page/error-panel.js";');
     expect(code).toContain('console.error("SyntaxError: Unterminated string (sketches/10-playground.js:4:13)");');
     expect(code).toContain('"file":"sketches/10-playground.js","line":4,"column":13,"source":"  const s = \'abc;","exact":true');
     expect(BROKEN.split('\n')[3][12]).toBe("'"); // column 13 is the quote that opens the string
@@ -42,7 +42,7 @@ describe('swapHooks: which page scripts a save swaps in place', () => {
     const lines = code.split('\n');
     expect(lines[0]).toMatch(/^if \(import\.meta\.hot\) \{ import\.meta\.hot\.accept\(__sketchbookSwap\.swappedIn\); import\.meta\.hot\.dispose\(__sketchbookSwap\.swapOut\); \} import p5 from 'p5';$/);
     expect(lines.slice(1, 4)).toEqual(SKETCH.split('\n').slice(1, 4));
-    expect(code).toContain('import * as __sketchbookSwap from "/lib/p5/hot-swap.js";');
+    expect(code).toContain('import * as __sketchbookSwap from "/lib/p5/page/hot-swap.js";');
   });
 
   it('a sketch importing a module of its own, or a package other than p5, reloads instead', () => {
@@ -90,7 +90,7 @@ describe("syntaxErrorsWhereTheyAre: a page's script importing what the kit does 
   it('every page the dev server serves gets the classic script that reports a module the browser refused', () => {
     const [tag] = plugin.transformIndexHtml();
     expect(tag).toMatchObject({ tag: 'script', injectTo: 'head-prepend' });
-    expect(tag.children).toContain('import("/lib/p5/error-panel.js")');
+    expect(tag.children).toContain('import("/lib/p5/page/error-panel.js")');
     expect(tag.children).toContain('showModuleFailure');
     expect(tag.attrs?.type).toBeUndefined(); // classic: it runs even when every module of the page fails
   });

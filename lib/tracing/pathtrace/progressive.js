@@ -52,7 +52,7 @@ export class PathProgressiveRenderer {
     this.order = 'coarse';
     this.current = null;
     this.problem = null;
-    /** For the tracer view's engines (lib/p5/engines.js): this picture is path traced, on the CPU. */
+    /** For the tracer view's engines (lib/p5/tracer/engines.js): this picture is path traced, on the CPU. */
     this.pathTraced = true;
     /** As a ProgressiveRenderer's slow motion (which a path-traced picture has not): unused. */
     this.slowRaysPerStep = 1;
