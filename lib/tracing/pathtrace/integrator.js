@@ -161,7 +161,8 @@ function directLight(frame, m, entry, metal) {
   const bsdfPdf = metal === 1 ? density[0] : cos / Math.PI; // f·cos is colour × this density for both lobes
   if (!(bsdfPdf > 0)) { if (entry) recordLight(entry, frame, -3, 0, 0); return; } // outside the metal's blur: no shadow ray worth tracing
   path[0] = from[0]; path[1] = from[1]; path[2] = from[2]; path[3] = aim[0]; path[4] = aim[1]; path[5] = aim[2];
-  const target = lights.table[aim[L_SLOT] * LIGHT + SHAPE_INDEX]; // the sky's shape index is −1
+  // `| 0`: a whole number, not a double read from the table, since a double passed to a call not inlined is boxed
+  const target = lights.table[aim[L_SLOT] * LIGHT + SHAPE_INDEX] | 0; // the sky's shape index is −1
   const blocker = shadowBlocker(frame, target);
   if (blocker >= 0) { if (entry) recordLight(entry, frame, nearestBlocker(frame, blocker), 0, 0); return; }
   const weight = (pdf * pdf) / (pdf * pdf + bsdfPdf * bsdfPdf), k = (bsdfPdf * weight) / pdf;
@@ -190,7 +191,7 @@ function shadowBlocker(frame, target) {
     if (shadow[1] < 0 && groups.others.length) apart(otherBlockers, frame, groups.others, target);
     if (shadow[1] < 0 && groups.planes.length) apart(planeBlockers, frame, groups.planes, target);
   }
-  return shadow[1];
+  return shadow[1] | 0; // a whole number, never boxed
 }
 
 /** The shadow ray's reach (its t must stay under it) and the blocker found (−1: none yet). */
