@@ -3,12 +3,13 @@
 // of a geometric series), the cosine sampler's distribution by chi-square,
 // Russian roulette unbiased, and the same bytes however the frame is split.
 import { describe, it, expect } from 'vitest';
-import { Scene, Sphere, Plane, Box, Camera, pathTrace, inspectPath, ParallelRenderer } from '../../lib/index.js';
+import { Scene, Sphere, Plane, Camera, pathTrace, inspectPath, ParallelRenderer } from '../../lib/index.js';
 import { PathRandom, pcgHash } from '../../lib/tracing/pathtrace/random.js';
 import { cosineHemisphere, cosinePdf } from '../../lib/tracing/pathtrace/sampling.js';
 import { readPathOptions, preparePaths, pathTraceRows } from '../../lib/tracing/pathtrace/path-trace.js';
 import { PathProgressiveRenderer } from '../../lib/tracing/pathtrace/progressive.js';
 import { fakeWorkers } from './fake-workers.js';
+import { room } from '../shared/path-room.js';
 
 const L = 0.6; // the sky's light
 
@@ -151,17 +152,6 @@ describe('the cosine-weighted sampler', () => {
     expect(cosinePdf(-0.1)).toBe(0);
   });
 });
-
-/** A small room: a floor, a red box, a mirror ball with fuzz, a glass ball, a lamp. */
-function room() {
-  const scene = new Scene({ background: [0.2, 0.25, 0.35] })
-    .add(new Plane([0, -2, 0], [0, 1, 0], { color: [0.75, 0.75, 0.7] }))
-    .add(new Box([-4, -2, -14], [-1.5, 1, -11], { color: [0.8, 0.2, 0.2] }))
-    .add(new Sphere([1.5, -1, -11], 1, { color: [0.9, 0.9, 0.9], reflection: 1, fuzz: 0.2 }))
-    .add(new Sphere([3.5, -1, -12], 1, { transparency: 1, ior: 1.5 }))
-    .add(new Sphere([0, 5, -12], 1.5, { color: [0, 0, 0], emission: [4, 4, 3.6] }));
-  return { scene, camera: new Camera({ width: 24, height: 18, fov: 40, position: [0, 1, 0], pitch: -5 }) };
-}
 
 describe('the same bytes, however the frame is traced', () => {
   const { scene, camera } = room();
