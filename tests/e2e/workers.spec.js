@@ -36,9 +36,9 @@ const canvasVersusRender = (page) => page.evaluate(async () => {
   return { differ, length: shown.length };
 });
 
-/** Serves a worker that takes its jobs and never answers (with the headers a cross-origin isolated page needs of a worker). */
+/** Serves a worker that loads, takes its jobs and never answers (with the headers a cross-origin isolated page needs of a worker). */
 const silentWorker = (route) => route.fulfill({
-  contentType: 'text/javascript', body: 'self.onmessage = () => {};',
+  contentType: 'text/javascript', body: 'self.postMessage({ ready: true }); self.onmessage = () => {};', // loads, then never answers
   headers: { 'Cross-Origin-Embedder-Policy': 'require-corp', 'Cross-Origin-Resource-Policy': 'same-origin' },
 });
 

@@ -1,7 +1,7 @@
 import { describe, it, expect } from 'vitest';
 import { ParallelRenderer, splitRows, bandHeight, claimHeight } from '../../lib/tracing/workers/parallel.js';
 import { workerHandler, REPORT_MS } from '../../lib/tracing/workers/split.js';
-import { fakeWorkers, silentWorker } from './fake-workers.js';
+import { fakeWorkers, silentWorker, neverLoadedWorker } from './fake-workers.js';
 import { sceneToJSON, cameraToJSON } from '../../lib/scene/json.js';
 import { render, Camera, Scene, Sphere, Plane, Box, PointLight, Material, classScene, classSceneAt } from '../../lib/index.js';
 
@@ -189,6 +189,30 @@ describe('ParallelRenderer', () => {
       expect(problems.length).toBe(1);
     });
 
+    it('a worker still loading its code has startTimeoutMs, not timeoutMs: its rows are its own once it has loaded', async () => {
+      const problems = [];
+      const slow = fakeWorkers(undefined, { loadMs: 150 });
+      const parallel = new ParallelRenderer({ workers: 2, timeoutMs: 40, startTimeoutMs: 2000, createWorker: slow.create, onProblem: (e) => problems.push(e.message) });
+      const started = performance.now();
+      expect(await parallel.render(classScene(), camera)).toEqual(expected);
+      expect(performance.now() - started).toBeGreaterThanOrEqual(149); // longer than timeoutMs: waited for, not given up on
+      expect(problems).toEqual([]);
+      expect(slow.answers.length).toBeGreaterThan(0); // the workers traced it
+      // Loaded now: a silence in a frame counts by timeoutMs again.
+      expect(await parallel.render(classScene(), new Camera({ width: 31, height: 40, yaw: 3 }))).toEqual(render(classScene(), new Camera({ width: 31, height: 40, yaw: 3 })));
+      expect(parallel.usingWorkers).toBe(true);
+    });
+
+    it('a worker whose code never loads is given up on after startTimeoutMs, and says so', async () => {
+      const problems = [];
+      const parallel = new ParallelRenderer({ workers: 2, timeoutMs: 20, startTimeoutMs: 80, createWorker: neverLoadedWorker, onProblem: (e) => problems.push(e.message) });
+      const started = performance.now();
+      expect(await parallel.render(classScene(), camera)).toEqual(expected);
+      expect(performance.now() - started).toBeGreaterThanOrEqual(79);
+      expect(problems).toEqual(['render worker 1 did not start within 0.08 s; rendering on the main thread instead']);
+      expect(() => new ParallelRenderer({ startTimeoutMs: -1 })).toThrow(/startTimeoutMs must be a positive whole number, got -1/);
+    });
+
     it('one silent worker among answering ones: the rows it owed are rendered here, the others kept', async () => {
       const fake = fakeWorkers();
       let n = 0;
@@ -209,6 +233,7 @@ describe('ParallelRenderer', () => {
         },
         terminate() { dying.terminated = true; },
       };
+      setTimeout(() => dying.onmessage?.({ data: { ready: true } })); // it loaded, as render-worker.js says
       let n = 0;
       const parallel = new ParallelRenderer({ workers: 2, shared: true, timeoutMs: 60, createWorker: () => (n++ === 0 ? dying : fake.create()) });
       const arrived = new Array(40).fill(0);

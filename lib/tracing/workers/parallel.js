@@ -11,7 +11,11 @@
  *
  * A worker that fails to start, reports an error or stays silent for
  * `timeoutMs` is stopped: its rows, and every later frame, are rendered on
- * the main thread instead (the same bytes), and `onProblem` hears why.
+ * the main thread instead (the same bytes), and `onProblem` hears why. A
+ * worker still loading its code (it says `{ ready: true }` once loaded, or
+ * answers) has `startTimeoutMs` instead: the first frame on a Chromebook
+ * fetching the worker from the teacher's laptop, or on a busy machine, may
+ * wait longer for it than for a worker that went quiet in the middle of a frame.
  */
 import { render, checkSceneAndCamera } from '../render.js';
 import { pathTrace, pathTraceRows, readPathOptions, preparePaths } from '../pathtrace/path-trace.js';
@@ -27,7 +31,7 @@ function startWorker() {
 }
 
 /** The options a ParallelRenderer takes. */
-const OPTIONS = ['workers', 'rowsPerBand', 'timeoutMs', 'shared', 'fallback', 'onProblem', 'createWorker'];
+const OPTIONS = ['workers', 'rowsPerBand', 'timeoutMs', 'startTimeoutMs', 'shared', 'fallback', 'onProblem', 'createWorker'];
 
 /** True where a SharedArrayBuffer can be handed to a worker: a cross-origin isolated page. */
 function canShare() {
@@ -53,6 +57,7 @@ export class ParallelRenderer {
    * @param {number} [options.workers=navigator.hardwareConcurrency || 2] how many workers
    * @param {'auto'|number} [options.rowsPerBand='auto'] rows per band ('auto': thin bands, see split.js's claimHeight and bandHeight)
    * @param {number} [options.timeoutMs=6000] a worker silent this long during a render is given up on
+   * @param {number} [options.startTimeoutMs=30000] a worker that has not loaded its code (not said it is ready) this long into a render is given up on
    * @param {'auto'|boolean} [options.shared='auto'] share one frame with the workers ('auto': where the page is cross-origin isolated)
    * @param {boolean} [options.fallback=true] when the workers fail, render on the main thread (false: reject)
    * @param {(error: Error) => void} [options.onProblem] told once when the workers fail and the main thread takes over
@@ -64,10 +69,11 @@ export class ParallelRenderer {
    *   .finally(() => workers.terminate());
    */
   constructor(options = {}) {
-    const { workers = globalThis.navigator?.hardwareConcurrency || 2, rowsPerBand = 'auto', timeoutMs = 6000, shared = 'auto', fallback = true, onProblem, createWorker } = checkOptions(options, OPTIONS, 'ParallelRenderer');
+    const { workers = globalThis.navigator?.hardwareConcurrency || 2, rowsPerBand = 'auto', timeoutMs = 6000, startTimeoutMs = 30_000, shared = 'auto', fallback = true, onProblem, createWorker } = checkOptions(options, OPTIONS, 'ParallelRenderer');
     this.workers = positiveInteger(workers, 'workers');
     this.rowsPerBand = rowsPerBand === 'auto' ? rowsPerBand : positiveInteger(rowsPerBand, 'rowsPerBand');
     this.timeoutMs = positiveInteger(timeoutMs, 'timeoutMs');
+    this.startTimeoutMs = positiveInteger(startTimeoutMs, 'startTimeoutMs');
     if (shared !== 'auto' && typeof shared !== 'boolean') throw new TypeError(`shared must be 'auto', true or false, got ${show(shared)}`);
     if (shared === true && typeof SharedArrayBuffer !== 'function') throw new TypeError('shared: this page has no SharedArrayBuffer');
     /** True when the workers write into one SharedArrayBuffer, false when their rows are transferred. */
@@ -181,7 +187,7 @@ export class ParallelRenderer {
         event.preventDefault?.(); // handled here: no uncaught error in the console
         this.#giveUp(`render worker ${i + 1} failed (${event.message || 'it could not start'})`);
       };
-      this.#workers[i] = { worker, version: null };
+      this.#workers[i] = { worker, version: null, ready: false };
     }
     return this.#workers[i];
   }
@@ -204,6 +210,9 @@ export class ParallelRenderer {
 
   /** Copies bands a worker finished into the frame: the main thread's only work. */
   #receive(i, message) {
+    const entry = this.#workers[i];
+    if (entry && !entry.ready) this.#started(i, entry);
+    if (message?.ready) return;
     const job = this.#jobs.get(message.id);
     if (!job || !job.working.has(i)) return; // a render already finished, failed or taken over
     if (message.error) {
@@ -231,19 +240,28 @@ export class ParallelRenderer {
     else this.#finish(job);
   }
 
-  /** Gives up on a worker silent for timeoutMs while it owes rows. */
+  /** Worker i has loaded its code: from now on it has timeoutMs to answer, counted from now. */
+  #started(i, entry) {
+    entry.ready = true;
+    const now = performance.now();
+    for (const job of this.#jobs.values()) if (job.working.has(i)) job.working.set(i, now);
+  }
+
+  /** Gives up on a worker silent for timeoutMs while it owes rows (startTimeoutMs while it is still loading). */
   #watch(job) {
     clearTimeout(job.timer);
     if (!this.#jobs.has(job.id)) return;
     const now = performance.now();
     let wait = this.timeoutMs;
     for (const [i, heard] of job.working) {
+      const started = this.#workers[i]?.ready !== false;
+      const allowed = started ? this.timeoutMs : this.startTimeoutMs;
       const silent = now - heard;
-      if (silent >= this.timeoutMs) {
-        this.#giveUp(`render worker ${i + 1} did not answer within ${this.timeoutMs / 1000} s`);
+      if (silent >= allowed) {
+        this.#giveUp(`render worker ${i + 1} did not ${started ? 'answer' : 'start'} within ${allowed / 1000} s`);
         return;
       }
-      wait = Math.min(wait, this.timeoutMs - silent);
+      wait = Math.min(wait, allowed - silent);
     }
     job.timer = setTimeout(() => this.#watch(job), Math.max(1, wait));
   }

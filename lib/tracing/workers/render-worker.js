@@ -6,3 +6,4 @@ import { workerHandler } from './split.js';
 
 const handle = workerHandler();
 self.onmessage = (event) => handle(event.data, (message, transfer) => self.postMessage(message, { transfer }));
+self.postMessage({ ready: true }); // loaded: ParallelRenderer now counts this worker's silences by timeoutMs, not startTimeoutMs
