@@ -33,7 +33,8 @@ export function findPixels(rgba, width, height, test) {
  * `name` and the attributes `data-<name>` and `data-overlay`:
  * `p.createPixelMarks({ view, name })`.
  * @returns {{ clear: () => void, draw: (pixels: {x: number, y: number}[]) => void }}
- *   clear() sizes the overlay to the picture on screen and empties it; draw() also marks each pixel with a dot
+ *   clear() sizes the overlay to the picture on screen and empties it; draw() also marks each pixel with a dot.
+ *   Both do nothing when the overlay already shows that: pass a new array to draw() for new marks.
  */
 export function createPixelMarks(p, options) {
   const { view, name = 'pixel-marks' } = checkOptions(options, ['view', 'name'], 'createPixelMarks');
@@ -41,19 +42,27 @@ export function createPixelMarks(p, options) {
   // aria-hidden: the marks repeat what the picture and the count say
   p.createCanvas(width, height).parent(view.canvas.parentElement).class(name).attribute(`data-${name}`, '').attribute('data-overlay', '').attribute('aria-hidden', 'true');
   p.pixelDensity(1);
+  // What the overlay shows now: the same marks at the same size are not drawn again, so a sketch
+  // calling draw() every frame leaves the page still (no repaint each frame on a phone's battery).
+  let shown = { pixels: null, k: 0 };
+  const sized = (k) => p.width === view.camera.width * k && p.height === view.camera.height * k;
   const marks = {
     clear() {
       const k = view.scale; // screen pixels per traced pixel: the overlay covers the picture exactly
-      if (p.width !== view.camera.width * k || p.height !== view.camera.height * k) p.resizeCanvas(view.camera.width * k, view.camera.height * k);
+      if (shown.pixels === null && sized(k)) return;
+      if (!sized(k)) p.resizeCanvas(view.camera.width * k, view.camera.height * k);
       p.clear();
+      shown = { pixels: null, k };
     },
     draw(pixels) {
-      marks.clear();
       const k = view.scale;
+      if (pixels === shown.pixels && k === shown.k && sized(k)) return;
+      marks.clear();
       p.stroke(0);
       p.strokeWeight(2);
       p.fill(255);
       for (const { x, y } of pixels) p.circle((x + 0.5) * k, (y + 0.5) * k, k * 0.4);
+      shown = { pixels, k };
     },
   };
   return marks;
