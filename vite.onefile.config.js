@@ -100,7 +100,7 @@ export default defineConfig({
       formats: ['iife', 'es'],
       fileName: (format) => (format === 'es' ? 'raytracing-sketchbook.mjs' : 'raytracing-sketchbook.js'),
     },
-    rollupOptions: {
+    rolldownOptions: {
       external: ['p5'],
       // One file each: the panel's lazily loaded "did you mean" (lib/p5/page/mistake-hints.js) goes inside, not beside.
       output: { globals: { p5: 'p5' }, codeSplitting: false },

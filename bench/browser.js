@@ -106,7 +106,7 @@ async function buildPage() {
   const { build } = await import('vite');
   await build({
     root: ROOT, configFile: false, base: './', logLevel: 'warn',
-    build: { target: 'es2022', outDir, emptyOutDir: true, rollupOptions: { input: [resolve(ROOT, PAGE), resolve(ROOT, VIEW3D_PAGE), resolve(ROOT, GPU_PAGE), resolve(ROOT, PATHS_PAGE)] } },
+    build: { target: 'es2022', outDir, emptyOutDir: true, rolldownOptions: { input: [resolve(ROOT, PAGE), resolve(ROOT, VIEW3D_PAGE), resolve(ROOT, GPU_PAGE), resolve(ROOT, PATHS_PAGE)] } },
     worker: { format: 'es' },
   });
   return outDir;

@@ -37,13 +37,14 @@ export async function buildRuntime(root = process.cwd()) {
     logLevel: 'warn',
     mode: 'production',
     plugins: [p5OfflineI18n(), inlineRenderWorker(), inlineStyle()],
-    worker: { format: 'iife' },
+    // Inlining the render worker and p5 is this build's own work, not a slow plugin to report (as vite.onefile.config.js).
+    worker: { format: 'iife', rolldownOptions: { checks: { bundlerTimings: false } } },
     build: {
       write: false,
       target: 'es2022',
       minify: true,
       lib: { entry: resolve(root, 'editor/frame-runtime.js'), formats: ['es'], fileName: () => RUNTIME_FILE },
-      rollupOptions: { output: { codeSplitting: false } }, // one file: the panel's lazy parts inside
+      rolldownOptions: { output: { codeSplitting: false }, checks: { bundlerTimings: false } }, // one file: the panel's lazy parts inside
     },
   });
   const chunk = [outputs].flat().flatMap((o) => o.output).find((c) => c.fileName === RUNTIME_FILE);

@@ -36,6 +36,9 @@ function printBrowserTests(report, counted) {
   table(`Slowest ${Math.min(top, tests.length)} browser tests`, tests.toSorted((a, b) => b.duration - a.duration).slice(0, top).map((t) => [
     seconds(t.duration), `[${t.project}]`, `${t.file}: ${t.title}`,
   ]));
+  table('Each project (test time, its tests, when its last test ended)', byProject(tests).map((p) => [
+    minutes(p.duration), `${p.count} tests`, `done at ${minutes(p.end)}`, p.project,
+  ]));
   const workers = byWorker(tests);
   if (workers.length > 1) {
     table('Busy time of each worker (an idle worker at the end means one file held the run up)', workers.map((w) => [
@@ -86,6 +89,18 @@ function byFile(tests) {
     files.set(t.file, f);
   }
   return [...files.values()].toSorted((a, b) => b.duration - a.duration);
+}
+
+/** Per Playwright project: its test time and when its last test ended, from the run's start. */
+function byProject(tests) {
+  const start = Math.min(...tests.map((t) => t.start).filter(Number.isFinite));
+  const projects = new Map();
+  for (const t of tests) {
+    const p = projects.get(t.project) ?? { project: t.project, duration: 0, count: 0, end: 0 };
+    p.duration += t.duration; p.count += 1; p.end = Math.max(p.end, t.start + t.duration - start);
+    projects.set(t.project, p);
+  }
+  return [...projects.values()].toSorted((a, b) => b.duration - a.duration);
 }
 
 /** Per parallel slot: its busy time and when its last test ended, from the run's start. */

@@ -6,6 +6,7 @@ import { test, expect } from '@playwright/test';
 import AxeBuilder from '@axe-core/playwright';
 import { readdirSync } from 'node:fs';
 import { expectQuietConsole, waitForDone } from './helpers.js';
+import { ANNOUNCE_DELAY_MS } from '../../lib/p5/page/announce.js';
 
 const SKETCHES = readdirSync(new URL('../../sketches/', import.meta.url)).filter((f) => f.endsWith('.html')).sort();
 const PAGES = ['/', ...SKETCHES.map((f) => `/sketches/${f}`), '/web-editor.html', '/teacher.html', '/api/'];
@@ -51,7 +52,7 @@ async function expectDescribedPictures(page, file) {
 // Each page opened once: axe as it opens and with a pixel selected; on a sketch, its pictures' descriptions as it opens.
 for (const path of PAGES) {
   test(`axe: no serious or critical WCAG 2.2 A/AA violation on ${path}${path.startsWith('/sketches/') ? '; every traced picture an image described by its scene' : ''}`, async ({ page }) => {
-    test.setTimeout(90_000);
+    test.setTimeout(path === '/api/' ? 180_000 : 90_000); // the API reference is one long page: axe reads it twice
     await page.goto(path);
     await settle(page);
     if (path.startsWith('/sketches/')) await expectDescribedPictures(page, path.slice('/sketches/'.length));
@@ -156,17 +157,32 @@ test('a held arrow key is said once, when it rests (debounced)', async ({ page }
   await waitForDone(page);
   const picture = page.locator('[data-tracer]');
   await picture.focus();
-  // a key's own repeat, in the page: a keydown every 40 ms
-  const texts = await liveWords(page, () => page.evaluate(async () => {
-    const picture = document.querySelector('[data-tracer]');
-    for (let i = 0; i < 8; i++) {
-      picture.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowRight', bubbles: true }));
-      await new Promise((resolve) => setTimeout(resolve, 40));
-    }
-  }));
+  // A key's own repeat, in the page: a keydown every 40 ms. A repeat is a held key only if it
+  // comes within the rest time (ANNOUNCE_DELAY_MS, 200 ms): on a machine so busy that the page's
+  // thread stalled longer between two, the burst is made again from where it ended (at most twice).
+  let texts, longestGap, from = 16;
+  for (let tries = 0; tries < 3; tries++) {
+    let gaps;
+    texts = await liveWords(page, async () => {
+      gaps = await page.evaluate(async () => {
+        const picture = document.querySelector('[data-tracer]');
+        const at = [];
+        for (let i = 0; i < 8; i++) {
+          at.push(performance.now());
+          picture.dispatchEvent(new KeyboardEvent('keydown', { key: 'ArrowRight', bubbles: true }));
+          await new Promise((resolve) => setTimeout(resolve, 40));
+        }
+        return at.slice(1).map((t, i) => t - at[i]);
+      });
+    });
+    longestGap = Math.max(...gaps);
+    from += 8;
+    if (longestGap < ANNOUNCE_DELAY_MS) break;
+  }
+  expect(longestGap, 'the repeats came within the rest time').toBeLessThan(ANNOUNCE_DELAY_MS);
   const pixelLines = texts.filter((text) => text.startsWith('Pixel:')); // the page's task list may say a task is done, too
   expect(pixelLines).toHaveLength(1);
-  expect(pixelLines[0]).toMatch(/^Pixel: 23,12;/);
+  expect(pixelLines[0]).toMatch(new RegExp(`^Pixel: ${Math.min(from - 1, 31)},12;`));
 });
 
 test('the 3D view turns with the arrow keys and zooms with + and −, and by its buttons (Enter, Space)', async ({ page }) => {

@@ -8,12 +8,27 @@ import { createServer } from 'node:http';
 import { mkdtempSync, readFileSync, rmSync, statSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { extname, join, normalize, resolve, sep } from 'node:path';
+import { BUILT_SITE, builtSiteIsFresh, builtSiteLog } from '../../scripts/built-site-cache.js';
 
 const TYPES = { '.html': 'text/html; charset=utf-8', '.js': 'text/javascript', '.mjs': 'text/javascript', '.css': 'text/css',
   '.png': 'image/png', '.json': 'application/json', '.svg': 'image/svg+xml', '.zip': 'application/zip' };
 
 /** What the last buildSite() printed (warnings and errors: it builds with --logLevel warn). */
 export let buildOutput = '';
+
+/**
+ * The built site: the build the project `built` is served from (scripts/built-site-cache.js)
+ * when it is up to date with the sources, else a new build into a temporary folder.
+ * Resolves with the folder; `buildOutput` then holds what that build printed.
+ */
+export async function builtSite() {
+  if (!builtSiteIsFresh()) return buildSite();
+  buildOutput = builtSiteLog();
+  return resolve(BUILT_SITE);
+}
+
+/** Removes a folder builtSite() made, never the shared build. */
+export const removeBuiltSite = (folder) => { if (folder !== resolve(BUILT_SITE)) removeFolder(folder); };
 
 /** Builds the site into a new temporary folder; resolves with the folder. */
 export function buildSite() {

@@ -11,7 +11,7 @@ import { classScene } from '../../lib/scene/examples.js';
 import { encodeScene } from '../../lib/scene/codec.js';
 import { encodeSceneLink, readSceneLink } from '../../lib/p5/page/scene-link.js';
 
-const PAGES = ['index.html', ...readdirSync('sketches').filter((f) => f.endsWith('.html')).map((f) => `sketches/${f}`)];
+const PAGES = ['index.html', 'teacher.html', ...readdirSync('sketches').filter((f) => f.endsWith('.html')).map((f) => `sketches/${f}`)];
 const PAYLOADS = [
   '<img src=x onerror="window.__pwned=1;alert(1)">',
   '"><svg onload="window.__pwned=2;alert(2)"></svg>',

@@ -4,6 +4,7 @@
 // the traced picture exactly as it was.
 import { test, expect } from '@playwright/test';
 import { clickPixel, expectQuietConsole, watchConsole, waitForDone } from './helpers.js';
+import { Camera, classScene, inspectPixel, colorName } from '../../lib/index.js';
 
 const PINK = '/sketches/04-find-the-pink-pixel.html';
 const BOXES = '/sketches/05-value-boxes.html';
@@ -26,22 +27,19 @@ async function enter(page, name, value) {
   await box.press('Enter');
 }
 
-/** The colour name of every pixel of the class scene through the sketch's camera (yaw, pitch), computed in the page with the library. */
-function colourNames(page, yaw = 0, pitch = 0) {
-  return page.evaluate(async ([yaw, pitch]) => {
-    const { Camera, classScene, inspectPixel, colorName } = await import('/lib/index.js');
-    const camera = new Camera({ width: 32, height: 24, fov: 30, yaw, pitch });
-    const scene = classScene();
-    const names = [];
-    for (let y = 0; y < 24; y++) for (let x = 0; x < 32; x++) names.push({ x, y, name: colorName(inspectPixel(scene, camera, x, y).color) });
-    return names;
-  }, [yaw, pitch]);
+/** The colour name of every pixel of the class scene through the sketch's camera (yaw, pitch), by the library itself (as the page runs it). */
+function colourNames(yaw = 0, pitch = 0) {
+  const camera = new Camera({ width: 32, height: 24, fov: 30, yaw, pitch });
+  const scene = classScene();
+  const names = [];
+  for (let y = 0; y < 24; y++) for (let x = 0; x < 32; x++) names.push({ x, y, name: colorName(inspectPixel(scene, camera, x, y).color) });
+  return names;
 }
 
 test.describe('04 · Find the pink pixel', () => {
   test('a pink pixel is a right answer; the answer line repeats the values given, the ray\'s own angles are labelled', async ({ page }) => {
     await open(page, PINK);
-    const pink = (await colourNames(page)).filter((p) => p.name === 'pink');
+    const pink = colourNames().filter((p) => p.name === 'pink');
     expect(pink.length).toBeGreaterThan(10);
     const { x, y } = pink[Math.floor(pink.length / 2)];
     await page.locator('input[name="x"]').fill(String(x));
@@ -150,10 +148,7 @@ test.describe('04 · Find the pink pixel', () => {
     await expect(page.locator('input[name="x"]')).toHaveValue('10');
     await expect(page.locator('input[name="y"]')).toHaveValue('12');
     // The verdict is the library's for pixel 10,12 through the camera typed.
-    const expected = await page.evaluate(async () => {
-      const { Camera, classScene, inspectPixel, colorName } = await import('/lib/index.js');
-      return colorName(inspectPixel(classScene(), new Camera({ width: 32, height: 24, fov: 30, yaw: 30, pitch: -82 }), 10, 12).color);
-    });
+    const expected = colorName(inspectPixel(classScene(), new Camera({ width: 32, height: 24, fov: 30, yaw: 30, pitch: -82 }), 10, 12).color);
     await expect(page.locator('[data-result]')).toHaveAttribute('data-color-name', expected);
   });
 
@@ -172,7 +167,7 @@ test.describe('04 · Find the pink pixel', () => {
 
   test('the shaded side of the pink sphere is on the sphere but not pink', async ({ page }) => {
     await open(page, PINK);
-    const names = await colourNames(page);
+    const names = colourNames();
     const dark = names.find((p) => p.name === 'red');
     await page.locator('input[name="x"]').fill(String(dark.x));
     await page.locator('input[name="y"]').fill(String(dark.y));
@@ -206,7 +201,7 @@ test.describe('04 · Find the pink pixel', () => {
     const rayBefore = h(detailBefore), rayAfter = h(await page.locator('[data-answer-detail]').textContent());
     expect(rayAfter - rayBefore).toBeCloseTo(20, 0);
     // What the page draws is what the library traces through that camera.
-    const pink = (await colourNames(page, 20, 0)).filter((p) => p.name === 'pink');
+    const pink = colourNames(20, 0).filter((p) => p.name === 'pink');
     await page.locator('[data-show-pink]').check();
     await expect(page.locator('[data-pink-count]')).toHaveAttribute('data-pink-count', String(pink.length));
   });
@@ -238,7 +233,7 @@ test.describe('04 · Find the pink pixel', () => {
   test('"highlight every pink pixel" marks exactly the pink pixels, over the picture, not in it', async ({ page }) => {
     await open(page, PINK);
     const before = await picture(page);
-    const names = await colourNames(page);
+    const names = colourNames();
     const pink = names.filter((p) => p.name === 'pink');
     await page.locator('[data-show-pink]').check();
     await expect(page.locator('[data-pink-count]')).toHaveAttribute('data-pink-count', String(pink.length));

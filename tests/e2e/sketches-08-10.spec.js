@@ -48,7 +48,7 @@ for (const hw of HOMEWORK) {
       expect(errors).toEqual([]);
     });
 
-    test('the reference solution (?solution=1): the self-check passes every check', async ({ page }) => {
+    test('the reference solution (?solution=1): the self-check passes every check', { tag: '@dev-server' }, async ({ page }) => {
       const errors = watchConsole(page);
       await page.goto(`/sketches/${hw.page}?solution=1`);
       await waitForDone(page);
@@ -77,7 +77,7 @@ for (const hw of HOMEWORK) {
   });
 }
 
-test('the traffic-signal solution: a click on a light says its colour', async ({ page }) => {
+test('the traffic-signal solution: a click on a light says its colour', { tag: '@dev-server' }, async ({ page }) => {
   await page.goto('/sketches/08-homework-traffic-signal.html?solution=1');
   await waitForDone(page);
   const panel = page.locator('[data-inspector]');

@@ -209,7 +209,7 @@ for (const [page08, path, light] of [
   ['08', '/sketches/08-homework-traffic-signal.html', 'r > 200 && g < 90 && b < 90'],
   ['09', '/sketches/09-homework-rear-lights.html', 'r > 200 && g < 90 && b < 90'],
 ]) {
-  test(`${page08}: the self-check run on the starter, then passed, and a light selected`, async ({ page }) => {
+  test(`${page08}: the self-check run on the starter, then passed, and a light selected`, { tag: '@dev-server' }, async ({ page }) => {
     await open(page, path);
     await page.getByRole('button', { name: 'Check my scene' }).click();
     await expectDone(page, 'check');

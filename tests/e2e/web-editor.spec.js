@@ -179,7 +179,7 @@ for (const [file, found] of [['no-p5.html', 'this page has no p5'], ['old-p5.htm
   });
 }
 
-test('the gallery\'s web-editor page shows the steps with the very files tested above', async ({ page }) => {
+test('the gallery\'s web-editor page shows the steps with the very files tested above', { tag: '@dev-server' }, async ({ page }) => {
   const errors = watchConsole(page);
   await page.goto('/');
   await page.getByRole('link', { name: 'Use it in the p5 web editor' }).first().click();

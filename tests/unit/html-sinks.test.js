@@ -1,5 +1,5 @@
 // Nothing that came from outside is parsed as HTML: a static look at the
-// project's code. No innerHTML & co. at all; p5's create* functions that set
+// project's code (lib/, sketches/, site/, editor/). Nothing written to innerHTML & co.; p5's create* functions that set
 // innerHTML (createP, createDiv, createElement(tag, text), createButton, …)
 // only with a plain string literal. And every link parameter the code reads is
 // in the hostile-link test's list (tests/e2e/link-parameters.js).
@@ -14,7 +14,7 @@ function sources(dir) {
     return statSync(path).isDirectory() ? sources(path) : path.endsWith('.js') ? [path] : [];
   });
 }
-const FILES = [...sources('lib'), ...sources('sketches'), 'site/gallery.js'].map((path) => ({ path, text: readFileSync(path, 'utf8') }));
+const FILES = [...sources('lib'), ...sources('sketches'), ...sources('site'), ...sources('editor')].map((path) => ({ path, text: readFileSync(path, 'utf8') }));
 
 /** Lines of code (comments out) matching `pattern`, as "file:line: text". */
 function find(pattern) {
@@ -37,8 +37,16 @@ describe('no HTML parsing of text', () => {
     expect(FILES.some((f) => f.path.endsWith('homework.js'))).toBe(true);
   });
 
-  it('no innerHTML, outerHTML, insertAdjacentHTML, document.write or .html(…)', () => {
-    expect(find(/innerHTML|outerHTML|insertAdjacentHTML|document\.write|createContextualFragment|\.html\(\s*[^)\s]/)).toEqual([]);
+  // Reading a page's own markup (outerHTML, for the code frame's page) parses nothing; writing it does.
+  const SINKS = /(?:innerHTML|outerHTML)\s*(?:=(?!=)|\+=)|insertAdjacentHTML|document\.write|createContextualFragment|\.html\(\s*[^)\s]/;
+
+  it('nothing written to innerHTML or outerHTML; no insertAdjacentHTML, document.write or .html(…)', () => {
+    expect(find(SINKS)).toEqual([]);
+  });
+
+  it('the sink check catches a write and lets a read pass', () => {
+    for (const write of ['el.innerHTML = text', 'el.innerHTML += text', 'el.outerHTML=text', "el.insertAdjacentHTML('beforeend', t)", "p.select('#a').html(t)"]) expect(SINKS.test(write), write).toBe(true);
+    for (const read of ['const markup = main.outerHTML;', 'if (el.innerHTML === "")']) expect(SINKS.test(read), read).toBe(false);
   });
 
   it("p5's HTML-setting create* functions get no text, or a plain literal", () => {
