@@ -80,6 +80,12 @@ export function liveSketch(slug, source, { main = '', folder = 'tests/e2e/pages'
     file: `${folder}/${slug}.js`,
     /** Saves a new version of the script, as an editor does. */
     save: (text) => writeFileSync(resolve(dir, `${slug}.js`), text),
+    /** Saves as an editor whose save reaches the disk in two steps: the file emptied (or written as `first`, a formatter's input), then written `gapMs` later. */
+    saveInTwoSteps: async (text, gapMs, first = '') => {
+      writeFileSync(resolve(dir, `${slug}.js`), first);
+      await new Promise((done) => setTimeout(done, gapMs));
+      writeFileSync(resolve(dir, `${slug}.js`), text);
+    },
     remove: () => {
       rmSync(resolve(dir, `${slug}.js`), { force: true });
       rmSync(resolve(dir, `${slug}.html`), { force: true });
@@ -97,6 +103,9 @@ export function liveSketch(slug, source, { main = '', folder = 'tests/e2e/pages'
 export async function saveAndWaitForUpdate(page, sketch, text, quietMs = 800) {
   let loads = 0;
   const count = () => { loads += 1; };
+  const reasons = []; // hot-swap.js says why it reloads; none said: Vite's own full reload
+  const said = (message) => { if (message.text().startsWith('Reloading the page')) reasons.push(message.text()); };
+  page.on('console', said);
   const swaps = () => page.evaluate(() => window.__sketchbookSwaps ?? 0).catch(() => -1); // -1: the page is going away
   page.on('load', count);
   try {
@@ -109,8 +118,10 @@ export async function saveAndWaitForUpdate(page, sketch, text, quietMs = 800) {
       await page.waitForTimeout(quietMs);
       now = await swaps();
     }
+    if (loads > 0) console.log(`${sketch.file}: the save reloaded the page (${reasons.join(' ') || 'no reason said by hot-swap.js: a full reload from the server'})`); // for a run that expected a swap
     return loads > 0 ? 'reload' : 'swap';
   } finally {
     page.off('load', count);
+    page.off('console', said);
   }
 }

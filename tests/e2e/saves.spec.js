@@ -9,6 +9,28 @@ import { liveSketch, sketchSource, saveAndWaitForUpdate } from './live-sketch.js
 const TIMER = '    setTimeout(() => {}, 0);';
 const GREEN = 'new Sphere([0, 0, -20], 5, { color: [0.2, 0.9, 0.3] })';
 
+// The file watcher passes on one change of a file per 50 ms: the second step of such a save came
+// within it and was dropped, and the page stayed on the empty file (scripts/every-save-arrives.js).
+// The first step of a save its formatter rewrites at once: another picture (a bigger pink sphere), which must not stay.
+const BEFORE_FORMATTING = sketchSource({ sphere: 'new Sphere([0, 0, -20], 4.5, { color: [1, 0.32, 0.36] })' });
+for (const [gapMs, first, how] of [[15, '', 'emptied'], [35, '', 'emptied'], [35, BEFORE_FORMATTING, 'written, then rewritten by a formatter']]) {
+  test(`a save that reaches the disk in two steps, ${gapMs} ms apart (${how}), shows its last version`, async ({ page }) => {
+    const sketch = liveSketch(`live-save-two-steps-${gapMs}-${first ? 'formatted' : 'emptied'}`, sketchSource());
+    try {
+      await page.goto(sketch.url);
+      await waitForDone(page);
+      await sketch.saveInTwoSteps(sketchSource({ sphere: GREEN }), gapMs, first);
+      const green = () => page.locator('[data-tracer]').evaluate((c) => {
+        const [r, g] = c.getContext('2d').getImageData(32, 24, 1, 1).data;
+        return document.body.dataset.render === 'done' && g > r + 40;
+      }).catch(() => false); // between versions the page has no picture
+      await expect.poll(green, { message: 'the new, green sphere', timeout: 15_000 }).toBe(true);
+    } finally {
+      sketch.remove();
+    }
+  });
+}
+
 for (const [how, before] of [['swap', ''], ['reload', TIMER]]) {
   test(`a save (${how}) updates the pages running that sketch, not every page on the server`, async ({ browser }) => {
     const edited = liveSketch(`live-save-edited-${how}`, sketchSource({ before }));
