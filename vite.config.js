@@ -32,6 +32,11 @@ const withSolutions = process.env.SKETCHBOOK_WITH_SOLUTIONS === '1';
 // syntax error there reaches no page of theirs). Each keeps its own optimized dependencies.
 const testServer = process.env.SKETCHBOOK_TEST_SERVER; // 'pages' or 'live', set by playwright.config.js
 const liveTestFiles = testServer === 'pages' ? ['**/tests/e2e/pages/live-*', '**/bench/live/**'] : [];
+// The live tests' pages are written once as a test begins and removed as it ends; only their scripts
+// are saved. Vite keeps a full reload sent while no page is connected and hands it to the next page
+// that connects: the reload for a page just written reached that very page half a second after it
+// loaded, in the middle of the test's first save (a swap seen as a reload).
+const unwatched = testServer === 'live' ? ['**/tests/e2e/pages/live-*.html'] : liveTestFiles;
 
 export default defineConfig(({ command, mode }) => ({
   base: './',
@@ -71,6 +76,6 @@ export default defineConfig(({ command, mode }) => ({
     // The class server answers no other origin: no CORS headers, and its gate refuses their writes and preflights.
     ...(mode === 'class' ? { cors: false } : {}),
     // Test output must not reload pages under test.
-    watch: { ignored: ['**/test-results/**', '**/playwright-report/**', '**/__screenshots__/**', '**/tests/pictures/**', ...liveTestFiles] },
+    watch: { ignored: ['**/test-results/**', '**/playwright-report/**', '**/__screenshots__/**', '**/tests/pictures/**', ...unwatched] },
   },
 }));

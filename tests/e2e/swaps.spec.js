@@ -50,6 +50,23 @@ async function holdings(page, cdp) {
   return { ...counts, listeners: listeners.sort() };
 }
 
+// The test's dev server does not watch the live pages (vite.config.js): Vite would keep the reload a
+// new page's file makes while no page is connected, and hand it to that page once it connects.
+test('a page opened just after its files were written loads once, and stays', async ({ page }) => {
+  await page.waitForTimeout(1000); // the last test's page gone: no page of the server open when the files are written
+  const sketch = liveSketch('live-swap-new-page', sketchSource());
+  try {
+    let loads = 0; // navigations, not load events: the kept reload came before the first load had ended
+    page.on('framenavigated', (frame) => { if (frame === page.mainFrame()) loads += 1; });
+    await page.goto(sketch.url);
+    await waitForDone(page);
+    await page.waitForTimeout(1500);
+    expect(loads).toBe(1);
+  } finally {
+    sketch.remove();
+  }
+});
+
 test('five swaps: no reload, and the page holds what it held after the first load', async ({ page }) => {
   const extra = [
     '    window.view = view;',
