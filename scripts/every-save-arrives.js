@@ -78,9 +78,12 @@ export function everySaveArrives() {
       served.get(id.split('?')[0])?.add(code); // the text as read, before any other plugin changes it
       return null;
     },
-    async hotUpdate({ file, read }) {
-      if (this.environment.name !== 'client' || !/\.[cm]?js$/.test(file)) return undefined;
-      const now = await read();
+    async hotUpdate({ type, file }) {
+      if (this.environment.name !== 'client' || type === 'delete' || !/\.[cm]?js$/.test(file)) return undefined;
+      // Read as it is now, never thrown: a file deleted since the event is Vite's to handle (its read() would throw,
+      // and Vite would show the error on every page, kept for the next page to open when none is).
+      const now = textOf(file);
+      if (now === null) return undefined;
       const texts = served.get(file);
       // Every page that asked since the last update got this very text (it asked after the save's last step): nothing to send.
       if (texts && texts.size > 0 && [...texts].every((text) => text === now)) return [];

@@ -31,6 +31,30 @@ for (const [gapMs, first, how] of [[15, '', 'emptied'], [35, '', 'emptied'], [35
   });
 }
 
+// A script deleted while no page is open: Vite would show an error of the dev server's (a file it could
+// not read) on the next page that opens, and the kit read that page with Vite's error overlay in it.
+test('a script deleted while no page is open leaves the next page quiet, with its picture', async ({ page }) => {
+  const gone = liveSketch('live-save-gone', sketchSource());
+  const sketch = liveSketch('live-save-after-gone', sketchSource());
+  try {
+    const errors = [];
+    page.on('pageerror', (error) => errors.push(error.message));
+    gone.save(sketchSource({ sphere: GREEN })); // a change the dev server reads as it comes
+    await page.waitForTimeout(300);
+    gone.remove();
+    await page.waitForTimeout(500);
+    await page.goto(sketch.url);
+    await waitForDone(page);
+    await page.waitForTimeout(500); // what Vite kept for the next page comes once it connects
+    await expect(page.locator('vite-error-overlay')).toHaveCount(0);
+    await expect(page.locator('[data-error]')).toHaveCount(0);
+    expect(errors).toEqual([]);
+  } finally {
+    sketch.remove();
+    gone.remove();
+  }
+});
+
 for (const [how, before] of [['swap', ''], ['reload', TIMER]]) {
   test(`a save (${how}) updates the pages running that sketch, not every page on the server`, async ({ browser }) => {
     const edited = liveSketch(`live-save-edited-${how}`, sketchSource({ before }));

@@ -40,7 +40,9 @@ const lasting = new Set();
  */
 function pageNow() {
   const markup = new XMLSerializer(); // reads the page as text, parses nothing
-  const body = /** @type {HTMLElement} */ (document.body.cloneNode(true));
+  // Child by child, less Vite's error overlay: cloning that element runs its constructor without an error, which throws.
+  const body = /** @type {HTMLElement} */ (document.body.cloneNode(false));
+  for (const child of document.body.childNodes) if (child.nodeName !== 'VITE-ERROR-OVERLAY') body.append(child.cloneNode(true));
   body.removeAttribute('data-render');
   body.querySelectorAll('[data-error], [data-sketchbook-ghost], [data-projector], [data-code-panel], [data-code-frames], [data-announce="page"], [data-skip-to-picture], [data-class-bar]').forEach((e) => e.remove());
   body.querySelectorAll('[data-sketchbook-named]').forEach((e) => { e.removeAttribute('aria-label'); e.removeAttribute('data-sketchbook-named'); });
