@@ -15,7 +15,9 @@
  *   announced once more.
  * And the other way round: a second change the watcher does pass on, of a
  * save every page already has whole (each asked after its last step), sends
- * no second update: no second swap, no picture traced twice.
+ * no second update: no second swap, no picture traced twice; and a reload
+ * made while no page is open reaches only a page that was loading as it was
+ * made, not one opened later (keepReloadsForLoadingPagesOnly).
  */
 import { readFileSync, statSync } from 'node:fs';
 
@@ -67,7 +69,10 @@ export function everySaveArrives() {
     name: 'sketchbook:every-save-arrives',
     apply: 'serve',
     enforce: 'pre',
-    configureServer(devServer) { server = devServer; },
+    configureServer(devServer) {
+      server = devServer;
+      keepReloadsForLoadingPagesOnly(devServer);
+    },
     async load(id) {
       const file = id.split('?')[0];
       if (!served.has(file) || sizeOf(file) !== 0) return null; // only a file saved while the server runs can be half-saved
@@ -92,4 +97,34 @@ export function everySaveArrives() {
       return undefined;
     },
   };
+}
+
+/**
+ * A reload (or an error) sent while no page is connected: Vite keeps it and hands it to the
+ * next page that connects, whenever that is. For a page that was loading as the file changed,
+ * that is right: it may hold the old version. But a page asked for after the change already
+ * loads the new files, and the kept reload only loaded it twice; a test's page, opened just
+ * after the last test's files were removed, was reloaded in the middle of its first save. So
+ * the message is kept here instead, and let go when the page it is for is asked for again.
+ */
+function keepReloadsForLoadingPagesOnly(server) {
+  const send = server.ws.send;
+  let kept = null;
+  server.ws.send = (...args) => {
+    const [payload] = args;
+    if (payload?.type !== 'full-reload' && payload?.type !== 'error') return send(...args);
+    if (server.ws.clients.size > 0) return send(...args);
+    kept = payload;
+    return undefined;
+  };
+  server.ws.on('vite:client:connect', (_data, client) => {
+    if (kept) client.send(kept);
+    kept = null;
+  });
+  server.middlewares.use((req, _res, next) => {
+    const page = (req.url ?? '').split('?')[0];
+    const isPage = req.headers.accept?.includes('text/html') && !page.startsWith('/@');
+    if (kept && isPage && (kept.type === 'error' || !kept.path?.endsWith('.html') || kept.path === page)) kept = null; // it loads as the files are now
+    next();
+  });
 }

@@ -67,6 +67,33 @@ test('a page opened just after its files were written loads once, and stays', as
   }
 });
 
+// scripts/every-save-arrives.js: Vite would keep the reload a save makes while no page is connected and
+// hand it to the next page that connects, which already loads the saved version.
+test('a save that reloads while its page is closed: the page opened next loads once, the saved version', async ({ context }) => {
+  const timer = sketchSource({ before: '    setTimeout(() => {}, 0);' }); // reaches outside p5: its saves reload
+  const sketch = liveSketch('live-swap-closed', timer);
+  try {
+    const first = await context.newPage();
+    await first.goto(sketch.url);
+    await waitForDone(first);
+    await first.close();
+    await new Promise((done) => setTimeout(done, 500)); // the page's connection gone
+    sketch.save(timer.replace('[1, 0.32, 0.36]', '[0.2, 0.9, 0.3]'));
+    await new Promise((done) => setTimeout(done, 500)); // the reload sent, to no page
+    const page = await context.newPage();
+    let loads = 0;
+    page.on('framenavigated', (frame) => { if (frame === page.mainFrame()) loads += 1; });
+    await page.goto(sketch.url);
+    await waitForDone(page);
+    await page.waitForTimeout(1500);
+    expect(loads).toBe(1);
+    const [r, g] = await page.locator('[data-tracer]').evaluate((c) => [...c.getContext('2d').getImageData(32, 24, 1, 1).data]);
+    expect(g, 'the saved, green sphere').toBeGreaterThan(r + 40);
+  } finally {
+    sketch.remove();
+  }
+});
+
 test('five swaps: no reload, and the page holds what it held after the first load', async ({ page }) => {
   const extra = [
     '    window.view = view;',
