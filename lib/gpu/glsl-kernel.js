@@ -26,7 +26,7 @@
  * tested), y, the sphere it runs inside (its far root only); −1 for none.
  */
 import { SHAPE, KIND } from '../shapes/packed.js';
-import { MATERIAL_NUMBERS, MATERIAL_AT } from '../shapes/material.js';
+import { MATERIAL_LAYOUT } from '../shapes/material.js';
 import { LIGHT, POSITION, LIGHT_EMISSION, LIGHT_SHAPE, ATTENUATION, IS_SPOT, AXIS, COS_OUTER, COS_INNER } from '../lights/packed.js';
 import { OPTICS_GLSL } from './glsl-optics.js';
 import { SHAPES_GLSL } from './glsl-shapes.js';
@@ -47,12 +47,12 @@ const RAY_STACK = 18;
 export const ROW = 1024;
 
 /** The material offsets the shader reads, by their names in lib/shapes/material.js's table. */
-const { emission: EMISSION, reflection: REFLECTION, transparency: TRANSPARENCY, ior: IOR, specular: SPECULAR, shininess: SHININESS, fuzz: FUZZ } = MATERIAL_AT;
+const { MATERIAL, EMISSION, REFLECTION, TRANSPARENCY, IOR, SPECULAR, SHININESS, FUZZ } = MATERIAL_LAYOUT;
 
 /** The #defines of the layout: every offset from the module that owns it. */
 function layout() {
   const defines = {
-    SHAPE, KIND, MATERIAL: MATERIAL_NUMBERS, EMISSION, REFLECTION, TRANSPARENCY, IOR, SPECULAR, SHININESS, FUZZ,
+    SHAPE, KIND, MATERIAL, EMISSION, REFLECTION, TRANSPARENCY, IOR, SPECULAR, SHININESS, FUZZ,
     LIGHT, POSITION, LIGHT_EMISSION, LIGHT_SHAPE, ATTENUATION, IS_SPOT, AXIS, COS_OUTER, COS_INNER, MAX_KINDS, BVH_STACK, RAY_STACK,
     ROW_SHIFT: Math.log2(ROW), ROW_MASK: ROW - 1,
     ...Object.fromEntries(Object.entries(SHAPE_CODES).map(([type, code]) => [type.toUpperCase(), code])),

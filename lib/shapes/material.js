@@ -42,6 +42,12 @@ function readField(name, given) {
 /** Numbers per material in the packed scene, and where each field's first one lies (`MATERIAL_AT.emission` is 3). */
 export const MATERIAL_NUMBERS = MATERIAL_FIELDS.reduce((sum, field) => sum + field.numbers, 0);
 export const MATERIAL_AT = Object.freeze(Object.fromEntries(MATERIAL_FIELDS.map((field, i) => [field.name, MATERIAL_FIELDS.slice(0, i).reduce((sum, f) => sum + f.numbers, 0)])));
+/**
+ * The same layout by the names the tracers' loops use: MATERIAL (numbers per material), COLOR,
+ * EMISSION, … FUZZ. The kernel and the path tracer keep literal copies of the ones they read
+ * (V8 folds a module's own literal, not an imported number) and check them against this at load.
+ */
+export const MATERIAL_LAYOUT = Object.freeze({ MATERIAL: MATERIAL_NUMBERS, ...Object.fromEntries(Object.entries(MATERIAL_AT).map(([name, at]) => [name.toUpperCase(), at])) });
 
 export class Material {
   /**

@@ -21,7 +21,7 @@ import { scratchNumbers, sideTables, checkCopies } from '../shapes/packed.js';
 import * as lightLayout from '../lights/packed.js';
 import { packSource } from '../lights/packed.js';
 import { reflectInto } from '../math/vec3.js';
-import { MATERIAL_NUMBERS, MATERIAL_AT, packMaterial } from '../shapes/material.js';
+import { MATERIAL_LAYOUT, packMaterial } from '../shapes/material.js';
 import { lambert, specular, lightShare, spotShare, falloff, refract, fresnel as fresnelShare, mix } from './optics.js';
 
 /*
@@ -39,12 +39,7 @@ const LIGHT = 14, LIGHT_EMISSION = 3, LIGHT_SHAPE = 6, ATTENUATION = 7, IS_SPOT 
 const MATERIAL = 12, EMISSION = 3, REFLECTION = 6, TRANSPARENCY = 7, IOR = 8, SPECULAR = 9, SHININESS = 10;
 checkCopies({ SHAPE, KIND, P, N }, shapeLayout, 'lib/shapes/packed.js');
 checkCopies({ LIGHT, LIGHT_EMISSION, LIGHT_SHAPE, ATTENUATION, IS_SPOT, AXIS, COS_OUTER, COS_INNER }, lightLayout, 'lib/lights/packed.js');
-checkCopies({ MATERIAL, EMISSION, REFLECTION, TRANSPARENCY, IOR, SPECULAR, SHININESS }, materialLayout(), 'lib/shapes/material.js');
-
-/** lib/shapes/material.js's layout by the names the kernel and the shader use: MATERIAL, EMISSION, … SHININESS. */
-function materialLayout() {
-  return { MATERIAL: MATERIAL_NUMBERS, ...Object.fromEntries(Object.entries(MATERIAL_AT).map(([name, at]) => [name.toUpperCase(), at])) };
-}
+checkCopies({ MATERIAL, EMISSION, REFLECTION, TRANSPARENCY, IOR, SPECULAR, SHININESS }, MATERIAL_LAYOUT, 'lib/shapes/material.js');
 
 /** The deepest bounce a scene allows (Scene's maxDepth is 0–16), plus the primary ray. */
 const LEVELS = 17;

@@ -1,6 +1,7 @@
 import { describe, it, expect } from 'vitest';
 import { Material, Sphere, Plane, Box, PointLight, Scene } from '../../lib/index.js';
-import { MATERIAL_FIELDS, MATERIAL_NUMBERS, MATERIAL_AT, packMaterial } from '../../lib/shapes/material.js';
+import { MATERIAL_FIELDS, MATERIAL_NUMBERS, MATERIAL_AT, MATERIAL_LAYOUT, packMaterial } from '../../lib/shapes/material.js';
+import * as pathMaterials from '../../lib/tracing/pathtrace/materials.js';
 import { materialToJSON } from '../../lib/shapes/json.js';
 import { sceneFromJSON, sceneToCode } from '../../lib/scene/json.js';
 import { packScene } from '../../lib/tracing/kernel.js';
@@ -124,5 +125,14 @@ describe('one table of material fields (MATERIAL_FIELDS)', () => {
     expect([out[MATERIAL_AT.reflection], out[MATERIAL_AT.transparency], out[MATERIAL_AT.ior], out[MATERIAL_AT.specular], out[MATERIAL_AT.shininess]]).toEqual([0.7, 0.8, 1.5, 0.9, 20]);
     const packed = packScene(new Scene().add(new Sphere([0, 0, -5], 1, m)));
     expect([...packed.materials]).toEqual([...out]);
+  });
+
+  it('is the layout the path tracer reads too: its offsets are the table\'s, its numbers the packed scene\'s', () => {
+    const fuzzy = new Material({ color: [0.1, 0.2, 0.3], emission: [0.4, 0.5, 0.6], reflection: 0.7, transparency: 0.2, ior: 1.5, fuzz: 0.25 });
+    const objects = [new Sphere([0, 0, -5], 1, m), new Sphere([0, 2, -5], 1, fuzzy)];
+    expect([...pathMaterials.packMaterials(objects)]).toEqual([...packScene(objects.reduce((scene, o) => scene.add(o), new Scene())).materials]);
+    for (const name of ['MATERIAL', 'COLOR', 'EMISSION', 'REFLECTION', 'TRANSPARENCY', 'IOR', 'FUZZ']) expect(pathMaterials[name], name).toBe(MATERIAL_LAYOUT[name]);
+    const at = MATERIAL_LAYOUT.MATERIAL;
+    expect(pathMaterials.packMaterials(objects)[at + pathMaterials.FUZZ]).toBe(0.25);
   });
 });

@@ -19,6 +19,8 @@
 import { refract, schlick } from '../optics.js';
 import { cosineHemisphere, inUnitBall } from './sampling.js';
 import { apart } from './apart.js';
+import { MATERIAL_LAYOUT, packMaterial } from '../../shapes/material.js';
+import { checkCopies } from '../../shapes/packed.js';
 
 /** Where the hit lies in `surface`: the point P, the unit normal N facing the ray, the ray's direction D, 1 when it came from inside. */
 export const P = 0, N = 3, D = 6, INSIDE = 9, SURFACE = 10;
@@ -37,19 +39,22 @@ export const DIFFUSE = 0, METAL = 1, GLASS_MIRROR = 2, GLASS_THROUGH = 3, ABSORB
 export const LOBE_NAMES = { [DIFFUSE]: 'diffuse', [METAL]: 'metal', [GLASS_MIRROR]: 'glass, mirrored', [GLASS_THROUGH]: 'glass, through', [ABSORBED]: 'absorbed' };
 
 /**
- * The scene's materials in numbers, MATERIAL per shape in scene order: colour
- * r g b, emission r g b, reflection, transparency, ior, fuzz. Read from a
+ * The scene's materials in numbers, MATERIAL per shape in scene order, as the
+ * kernel packs them (lib/shapes/material.js's table: colour r g b, emission
+ * r g b, reflection, transparency, ior, specular, shininess, fuzz). Read from a
  * typed array, every number is a plain double; read from the Material
  * objects, whose fields V8 stores as small integers in one and as doubles in
- * another, they cost an allocation now and then in the hot loop.
+ * another, they cost an allocation now and then in the hot loop. The offsets
+ * are literal copies of the table's (V8 folds them), checked against it at load.
  */
-export const MATERIAL = 10;
-export const COLOR = 0, EMISSION = 3, REFLECTION = 6, TRANSPARENCY = 7, IOR = 8, FUZZ = 9;
+export const MATERIAL = 12;
+export const COLOR = 0, EMISSION = 3, REFLECTION = 6, TRANSPARENCY = 7, IOR = 8, FUZZ = 11;
+checkCopies({ MATERIAL, COLOR, EMISSION, REFLECTION, TRANSPARENCY, IOR, FUZZ }, MATERIAL_LAYOUT, 'lib/shapes/material.js');
 
-/** The materials of `objects`, packed (see MATERIAL). */
+/** The materials of `objects`, packed as the kernel's packScene packs them (see MATERIAL): for tests and tables made without a packed scene. */
 export function packMaterials(objects) {
   const packed = new Float64Array(objects.length * MATERIAL);
-  objects.forEach(({ material: m }, i) => packed.set([...m.color, ...m.emission, m.reflection, m.transparency, m.ior, m.fuzz ?? 0], i * MATERIAL));
+  objects.forEach(({ material }, i) => packMaterial(material, packed, i * MATERIAL));
   return packed;
 }
 
