@@ -92,13 +92,7 @@ export class GpuTracer {
     gl.uniform1f(u.uEpsilon, k.epsilon);
     gl.uniform1i(u.uShadows, k.shadows ? 1 : 0);
     gl.uniform1i(u.uSpecular, k.specular ? 1 : 0);
-    const { position: e, right: r, up, forward: f } = camera;
-    gl.uniform3f(u.uEye, e.x, e.y, e.z);
-    gl.uniform3f(u.uRight, r.x, r.y, r.z);
-    gl.uniform3f(u.uUp, up.x, up.y, up.z);
-    gl.uniform3f(u.uForward, f.x, f.y, f.z);
-    gl.uniform2f(u.uHalf, camera.halfWidth, camera.halfHeight);
-    gl.uniform2i(u.uSize, camera.width, camera.height);
+    setCamera(gl, u, camera, camera.width, camera.height);
     gl.uniform1i(u.uSamples, camera.samples);
     gl.bindVertexArray(this.vertices);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
@@ -172,6 +166,20 @@ export function link(gl, fragmentSource) {
     throw new Error(`the GPU engine's shader did not link: ${gl.getProgramInfoLog(program)}`);
   }
   return program;
+}
+
+/**
+ * The camera's uniforms, the same in both GPU shaders (glsl-kernel.js's primary ray): the eye,
+ * its right, up and forward, the image plane's half size, and the picture's size in pixels.
+ */
+export function setCamera(gl, u, camera, width, height) {
+  const { position: e, right: r, up, forward: f } = camera;
+  gl.uniform3f(u.uEye, e.x, e.y, e.z);
+  gl.uniform3f(u.uRight, r.x, r.y, r.z);
+  gl.uniform3f(u.uUp, up.x, up.y, up.z);
+  gl.uniform3f(u.uForward, f.x, f.y, f.z);
+  gl.uniform2f(u.uHalf, camera.halfWidth, camera.halfHeight);
+  gl.uniform2i(u.uSize, width, height);
 }
 
 /** Every uniform's location, by name. */

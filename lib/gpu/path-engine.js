@@ -8,7 +8,7 @@
 import { pathSource, SHOW_SOURCE } from './glsl-paths.js';
 import { SHAPE_CODES } from './glsl-kernel.js';
 import { gpuScene } from './upload.js';
-import { TEXTURES, webgl2Context, uploadScene, bindScene, link } from './engine.js';
+import { TEXTURES, webgl2Context, uploadScene, bindScene, link, setCamera } from './engine.js';
 
 /** Who asks, in gpuScene's errors. */
 export const PATHS = Object.freeze({ cannot: 'pathTraceGPU cannot path trace', cpu: 'pathTrace() traces it on the CPU' });
@@ -120,13 +120,7 @@ export class GpuPathTracer {
     gl.uniform1i(u.uRoulette, o.roulette ? 1 : 0);
     gl.uniform3f(u.uSkyTop, o.sky[0], o.sky[1], o.sky[2]);
     gl.uniform3f(u.uSkyBottom, o.sky[3], o.sky[4], o.sky[5]);
-    const { position: e, right: r, up, forward: f } = camera;
-    gl.uniform3f(u.uEye, e.x, e.y, e.z);
-    gl.uniform3f(u.uRight, r.x, r.y, r.z);
-    gl.uniform3f(u.uUp, up.x, up.y, up.z);
-    gl.uniform3f(u.uForward, f.x, f.y, f.z);
-    gl.uniform2f(u.uHalf, camera.halfWidth, camera.halfHeight);
-    gl.uniform2i(u.uSize, this.width, this.height);
+    setCamera(gl, u, camera, this.width, this.height);
     gl.bindVertexArray(this.vertices);
     gl.drawArrays(gl.TRIANGLES, 0, 3);
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
