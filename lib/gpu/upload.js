@@ -9,8 +9,7 @@
  * starts (its tree's boxes, nodes and order, its corners in the tree's
  * order, its triangles' normals) followed by those arrays (lib/shapes/bvh.js).
  */
-import { PackedScene } from '../tracing/kernel.js';
-import { plainClassOf, classOf } from '../shapes/index.js';
+import { PackedScene, unpackable } from '../tracing/kernel.js';
 import { SHAPE_CODES, MAX_KINDS, BVH_STACK, ROW } from './glsl-kernel.js';
 import { SHAPE, KIND } from '../shapes/packed.js';
 
@@ -26,11 +25,11 @@ export const WHITTED = Object.freeze({ cannot: 'renderGPU cannot draw', cpu: 're
  * @returns {{ packed: PackedScene, shapes: Float32Array, materials: Float32Array, lights: Float32Array, apart: Float32Array, tables: Float32Array, kindTypes: Int32Array }}
  */
 export function gpuScene(scene, who = WHITTED) {
-  scene.objects.forEach((object, i) => checkShape(object, i, who));
-  const seen = new Set();
+  const problem = unpackable(scene); // the kernel's one answer: the GPU reads the packed scene
+  if (problem) throw new Error(`${who.cannot} ${nameOf(scene.objects[problem.index], problem.index)}: ${problem.why}; ${who.cpu}`);
   scene.objects.forEach((object, i) => {
-    if (seen.has(object)) throw new Error(`${who.cannot} ${nameOf(object, i)}: it is added to the scene twice, and the GPU tells shapes apart by their place in the list (add a copy instead)`);
-    seen.add(object);
+    const { type } = object.constructor;
+    if (!(type in SHAPE_CODES)) throw new Error(`${who.cannot} ${nameOf(object, i)}: the GPU engine has no ${type} (it draws ${Object.keys(SHAPE_CODES).join(', ')})`);
   });
   const packed = new PackedScene(scene);
   const kindTypes = new Int32Array(MAX_KINDS).fill(-1);
@@ -47,17 +46,6 @@ export function gpuScene(scene, who = WHITTED) {
     apart: Float32Array.from(packed.apart, (a) => Math.max(a, -3e38)), // −Infinity: never skipped
     tables: flattenTables(packed.tables, scene, who),
   };
-}
-
-/** An Error unless the shape is one of the listed classes, itself, with a GPU form. */
-function checkShape(object, i, who) {
-  const Shape = plainClassOf(object);
-  if (!Shape?.packed) {
-    const listed = classOf(object);
-    const why = listed ? `its hit or normalAt is not its class's own (a subclass, or a method replaced)` : 'its class has no packed form';
-    throw new Error(`${who.cannot} ${nameOf(object, i)}: ${why}; ${who.cpu}`);
-  }
-  if (!(Shape.type in SHAPE_CODES)) throw new Error(`${who.cannot} ${nameOf(object, i)}: the GPU engine has no ${Shape.type} (it draws ${Object.keys(SHAPE_CODES).join(', ')})`);
 }
 
 /** "shape 3 ("lamp", a Torus)": which shape, for an error. */

@@ -15,7 +15,7 @@
  * render() uses trace.js. Each shape class packs itself and does its own hit
  * and normal in numbers (its static `packed`, layout in lib/shapes/packed.js).
  */
-import { plainClassOf, ballOf } from '../shapes/index.js';
+import { plainClassOf, classOf, ballOf } from '../shapes/index.js';
 import * as shapeLayout from '../shapes/packed.js';
 import { scratchNumbers, sideTables, checkCopies } from '../shapes/packed.js';
 import * as lightLayout from '../lights/packed.js';
@@ -160,21 +160,29 @@ function kindIndex(Shape) {
   return KIND_OF.get(Shape);
 }
 
-/** True when trace.js would ask this shape exactly what the kernel computes: a listed class's own methods, with a packed form. */
-function plain(shape) {
-  return Boolean(plainClassOf(shape)?.packed);
+/**
+ * Why the scene cannot be packed: the first shape that stops it, `{ index, why }`,
+ * or null when it packs. A shape must be a plain listed shape with a packed form,
+ * so that trace.js would ask it exactly what the kernel computes (not a subclass,
+ * nor a `hit` or `normalAt` of its own, on the shape or its class); and added
+ * once (trace.js tells shapes apart by identity, the packed scene by their place
+ * in the list). The one answer for the kernel, the GPU engines and the path tracer.
+ */
+export function unpackable(scene) {
+  const seen = new Set();
+  for (const [index, shape] of scene.objects.entries()) {
+    if (!plainClassOf(shape)?.packed) {
+      return { index, why: classOf(shape) ? "its hit or normalAt is not its class's own (a subclass, or a method replaced)" : 'its class has no packed form' };
+    }
+    if (seen.has(shape)) return { index, why: 'it is added to the scene twice, and the packed scene tells shapes apart by their place in the list (add a copy instead)' };
+    seen.add(shape);
+  }
+  return null;
 }
 
-/**
- * The scene packed, or null for trace.js to handle: when a shape is not a
- * plain listed shape with a packed form (a subclass, or a `hit` or `normalAt`
- * of its own, on the shape or its class), or when one shape was added twice (trace.js
- * tells shapes apart by identity, the kernel by their place in the list).
- */
+/** The scene packed, or null for trace.js to handle (unpackable says why). */
 export function packScene(scene) {
-  const { objects } = scene;
-  const packs = objects.every(plain) && new Set(objects).size === objects.length;
-  return packs ? new PackedScene(scene) : null;
+  return unpackable(scene) === null ? new PackedScene(scene) : null;
 }
 
 /**

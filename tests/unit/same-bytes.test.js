@@ -10,7 +10,7 @@ import { describe, it, expect } from 'vitest';
 import fc from 'fast-check';
 import { Camera, Scene, Sphere, Plane, Box, Cylinder, Mesh, PointLight, render, inspectPixel } from '../../lib/index.js';
 import { renderPixel, prepareFrame } from '../../lib/tracing/render.js';
-import { packScene, tracePrimary, outOfReach } from '../../lib/tracing/kernel.js';
+import { packScene, unpackable, tracePrimary, outOfReach } from '../../lib/tracing/kernel.js';
 import { trace } from '../../lib/tracing/trace.js';
 import { Ray } from '../../lib/math/ray.js';
 import { Vec3 } from '../../lib/math/vec3.js';
@@ -154,6 +154,7 @@ describe('a shape of its own class (a subclass with its own hit test)', () => {
   it('is not packed for the fast path: render() asks the shape itself, as trace.js does', () => {
     const scene = new Scene({ background: [0, 0, 1] }).add(new HalfSeen([0, 0, -10], 3, { color: [1, 0, 0], emission: [1, 0, 0] }));
     expect(packScene(scene)).toBeNull();
+    expect(unpackable(scene)).toEqual({ index: 0, why: "its hit or normalAt is not its class's own (a subclass, or a method replaced)" });
     const seen = render(scene, new Camera({ width: 8, height: 8, position: [1, 0, 0] }));
     const hidden = render(scene, new Camera({ width: 8, height: 8, position: [-1, 0, 0] }));
     const middle = (4 * 8 + 4) * 4;
@@ -167,6 +168,8 @@ describe('a shape of its own class (a subclass with its own hit test)', () => {
     const scene = new Scene({ background: [0, 0, 1] }).add(ball);
     const camera = new Camera({ width: 8, height: 8 });
     expect(packScene(scene)).not.toBeNull();
+    expect(unpackable(scene)).toBeNull();
+    expect(unpackable(new Scene().add(ball).add(new Sphere([0, 0, -5], 1)).add(ball))).toMatchObject({ index: 2, why: expect.stringContaining('added to the scene twice') });
     ball.hit = () => Infinity; // the ball no longer meets any ray
     expect(packScene(scene)).toBeNull();
     expect(render(scene, camera).every((v, i) => v === [0, 0, 255, 255][i % 4])).toBe(true); // every pixel the background's blue
