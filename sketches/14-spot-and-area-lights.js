@@ -17,7 +17,7 @@
  * it, whether it is outside the spot's cone, and the spot's falloff there.
  */
 import p5 from 'p5';
-import { Scene, Sphere, Plane, Cylinder, PointLight, AreaLight, SpotLight, Camera, inspectPixel } from '../lib/index.js';
+import { Scene, Sphere, Plane, Cylinder, PointLight, AreaLight, SpotLight, Camera } from '../lib/index.js';
 import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
 
 const WIDTH = 96, HEIGHT = 72, SCALE = 4;
@@ -37,9 +37,9 @@ function makeScene({ lamp, samples, angle }) {
   return scene;
 }
 
-/** The page's key line for the selected pixel: how many of the disc's shadow rays reached it. */
+/** The page's key line for the selected pixel `s`: how many of the disc's shadow rays reached it (from the view's record of that pixel). */
 function shadowRaysLine(view, s) {
-  const hit = s && inspectPixel(view.scene, view.camera, s.x, s.y).hit, disc = hit?.areaLights?.[0];
+  const hit = s && view.record?.hit, disc = hit?.areaLights?.[0];
   if (!s || !disc) return s ? `Pixel ${s.x},${s.y}: ${hit ? 'no shadow ray to the disc (it faces away)' : 'its ray hits nothing'}.` : '';
   const rays = `${disc.reached} of ${disc.samples} shadow ray${disc.samples === 1 ? '' : 's'}`;
   return `Pixel ${s.x},${s.y}: ${rays} reached it (${Math.round((100 * disc.reached) / disc.samples)} % of the disc seen).`;
