@@ -46,6 +46,7 @@ export const MATERIAL_AT = Object.freeze(Object.fromEntries(MATERIAL_FIELDS.map(
  * The same layout by the names the tracers' loops use: MATERIAL (numbers per material), COLOR,
  * EMISSION, … FUZZ. The kernel and the path tracer keep literal copies of the ones they read
  * (V8 folds a module's own literal, not an imported number) and check them against this at load.
+ * @type {Readonly<Record<string, number>>}
  */
 export const MATERIAL_LAYOUT = Object.freeze({ MATERIAL: MATERIAL_NUMBERS, ...Object.fromEntries(Object.entries(MATERIAL_AT).map(([name, at]) => [name.toUpperCase(), at])) });
 
