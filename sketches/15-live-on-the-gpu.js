@@ -20,16 +20,15 @@ import { orbit } from '../lib/p5/index.js'; // the sketchbook's p5 addon: p.crea
 const WIDTH = 160, HEIGHT = 120, SCALE = 4;
 
 new p5((p) => {
-  let view, finished = 0, counted = 0, since = 0;
+  let view, counted = 0, since = 0;
   /** Frames so far: drawn by the GPU, or pictures the CPU finished. */
-  const frames = () => (view.engine === 'gpu' ? view.renderer.frames : finished);
+  const frames = () => view.picturesDone;
 
   p.setup = () => {
     p.noCanvas(); // the tracer view brings its own canvas
     const camera = new Camera({ width: WIDTH, height: HEIGHT, fov: 40, position: [0, 3, 6], pitch: -8 });
     view = p.createTracerView({ scene: classScene({ full: true }), camera, engine: 'gpu', scale: SCALE, parent: 'views', label: 'The class scene, mirrors and glass' });
     view.orbitDistance = 26; // orbit about the pink glass sphere
-    view.on('progress', ({ done }) => { if (done) finished++; });
     p.createInspector({ view, parent: 'sketch' });
     for (const input of document.querySelectorAll('input[name="engine"]')) {
       input.checked = input.value === view.engine; // the CPU, when the GPU could not be had

@@ -51,9 +51,14 @@ test('the render order is order / setOrder; renderMode / setRenderMode still wor
   expect(await page.evaluate(() => window.view.order)).toBe('slow'); // a bad order changes nothing
 });
 
-test('what a sketch needs is the view\'s own: the picture\'s bytes and the slow-motion speed', async ({ page }) => {
+test('what a sketch needs is the view\'s own: the picture\'s bytes, the slow-motion speed and the pictures done', async ({ page }) => {
   await page.goto(PAGE);
   await waitForDone(page);
+  expect(await page.evaluate(() => window.view.picturesDone)).toBe(1); // one picture traced to its end
+  await page.evaluate(() => { window.view.draw(); window.view.draw(); }); // drawing a whole picture again is no new picture
+  expect(await page.evaluate(() => window.view.picturesDone)).toBe(1);
+  await page.evaluate(() => window.view.restart());
+  await expect.poll(() => page.evaluate(() => window.view.picturesDone)).toBe(2); // traced again to its end
   expect(await page.evaluate(() => {
     const { view, lib } = window;
     const expected = lib.render(view.scene, view.camera);

@@ -92,7 +92,7 @@ const EVENTS = ['select', 'restart', 'progress'];
  * view.on('progress', ({ progress }) => console.log(`${Math.round(progress * 100)}%`));
  */
 export class TracerView {
-  /** @type {any} a WorkerProgressiveRenderer, or the GPU engine's (lib/p5/tracer/engines.js) */ #renderer; #page; #imageData = null; #raf = 0; #destroyed = false;
+  /** @type {any} a WorkerProgressiveRenderer, or the GPU engine's (lib/p5/tracer/engines.js) */ #renderer; #page; #imageData = null; #raf = 0; #destroyed = false; #pictures = 0;
   #scale; #grid; #mode; #selected = null; #events = createEvents(EVENTS);
   /** The selected pixel's inspectPixel record (null: none selected; undefined: not made yet for this selection and scene). */
   #record;
@@ -143,6 +143,8 @@ export class TracerView {
   get done() { return this.#renderer.done; }
   /** Share of the picture traced, 0–1. */
   get progress() { return this.#renderer.progress; }
+  /** Whole pictures shown since the view was made: on the GPU every frame it draws, on the CPU every picture traced to its end (frames per second: count them over a time). */
+  get picturesDone() { return this.#pictures; }
   /** The selected pixel `{ x, y }` in traced-image coordinates, or null. */
   get selected() { return this.#selected && { ...this.#selected }; }
   /**
@@ -303,6 +305,7 @@ export class TracerView {
     const r = this.#renderer;
     if (r.lost) { this.setEngine('cpu'); return; } // the GPU cannot go on (its context lost, a visual mode): engineRenderer says why
     const { changed, done } = r.step(this.budgetMs);
+    if (changed && done) this.#pictures++;
     if (reducedMotion() ? done : changed) this.#blit(); // reduced motion: no passes, the picture once it is done
     this.#progress.show(r); // the bar, and the note when the workers failed
     if (this.#events.heard('progress')) this.#events.emit('progress', { progress: done ? 1 : r.progress, done, current: this.current }, this);
