@@ -47,6 +47,20 @@ describe('WorkerProgressiveRenderer', () => {
     expect(r.raysPerSecond).toBeGreaterThan(0);
   });
 
+  it('starts no worker before its first step: a renderer made and thrown away (a view that starts on the GPU) costs no worker', async () => {
+    const fake = fakeWorkers();
+    const r = new WorkerProgressiveRenderer({ scene: classScene(), camera: LARGE, workers: 2, createWorker: fake.create, ...MIN });
+    expect(r.usingWorkers).toBe(true);
+    r.restart({ scene: classSceneAt(1) });
+    expect(fake.started.length).toBe(0);
+    r.terminate();
+    const used = new WorkerProgressiveRenderer({ scene: classScene(), camera: LARGE, workers: 2, createWorker: fake.create, ...MIN });
+    used.step(8);
+    expect(fake.started.length).toBe(2);
+    await runToDone(used);
+    expect(used.buffer).toEqual(render(classScene(), LARGE));
+  });
+
   it('a change while the workers are busy: only the newest frame is posted next, and it ends as render()\'s', async () => {
     const fake = fakeWorkers();
     const r = new WorkerProgressiveRenderer({ scene: classScene(), camera: LARGE, workers: 2, createWorker: fake.create, ...MIN });

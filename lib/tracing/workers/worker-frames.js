@@ -35,6 +35,8 @@ export class WorkerProgressiveRenderer {
   #useWorkers = false;
   #inFlight = false;
   #waiting = false;
+  /** This frame went out to the workers: at its first step, not before, so a renderer thrown away unused (a view that starts on the GPU) starts no worker. */
+  #posted = false;
   /** Bands [y0, y1) that arrived since the last step, in #frame, the workers' frame so far; rows shown. */
   #arrived = [];
   #frame = null;
@@ -88,6 +90,10 @@ export class WorkerProgressiveRenderer {
    */
   step(budgetMs) {
     if (!this.#useWorkers) return this.#inner.step(budgetMs);
+    if (!this.#posted) {
+      this.#posted = true;
+      this.#post();
+    }
     const inner = this.#inner;
     if (this.#complete) return { changed: false, done: true };
     if (this.#finished) {
@@ -169,7 +175,7 @@ export class WorkerProgressiveRenderer {
     this.#complete = false;
     this.#startedAt = this.#inner.now();
     this.#useWorkers = this.#helps();
-    if (this.#useWorkers) this.#post();
+    this.#posted = false; // posted at the next step
   }
 
   /** Would workers help with this frame? */
