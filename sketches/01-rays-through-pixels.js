@@ -10,7 +10,7 @@
  * watch each ray fly from the eye through its pixel to what it hits.
  */
 import p5 from 'p5';
-import { Camera, Scene, Sphere, PointLight, inspectPixel } from '../lib/index.js';
+import { Camera, Scene, Sphere, PointLight } from '../lib/index.js';
 import '../lib/p5/index.js'; // the sketchbook's p5 addon: p.createTracerView, p.createInspector, …
 
 // Try other numbers: the screen's size in pixels, how wide the eye sees, the spheres.
@@ -65,7 +65,7 @@ new p5((p) => {
     const shownKey = pixel ? `${pixel.x},${pixel.y}` : 'none';
     if (shownKey === shown) return; // nothing new to draw
     shown = shownKey;
-    const record = pixel ? inspectPixel(view.scene, view.camera, pixel.x, pixel.y) : null;
+    const record = pixel ? view.recordAt(pixel.x, pixel.y) : null; // the selected pixel's record is the view's own, shared with the inspector
     p.background('#f6f7f9');
     p.drawSideView({ scene: view.scene, camera: view.camera, record, x: 0, y: 0, w: 600, h: 315 });
     p.drawTopView({ scene: view.scene, camera: view.camera, record, x: 0, y: 325, w: 600, h: 315 });

@@ -95,3 +95,17 @@ for (const [sketch, panels] of [['06-lights-shadows-reflections', 'the inspector
     }
   });
 }
+
+test('one record per key press: the inspector and the side and top views of sketch 01 share the pixel\'s one inspectPixel', async ({ page }) => {
+  await countInspections(page);
+  await page.goto('/sketches/01-rays-through-pixels.html');
+  await waitForDone(page);
+  await page.locator('[data-tracer]').focus(); // by keyboard: no pixel under a pointer, the views draw the selected one
+  for (const key of ['ArrowRight', 'ArrowDown']) {
+    await page.evaluate(() => { window.inspections = 0; });
+    await page.keyboard.press(key);
+    await expect(page.locator('[data-inspector] [data-field="hit-object"]').first()).toBeAttached();
+    await page.waitForTimeout(200); // the diagrams' draw() has run
+    expect(await page.evaluate(() => window.inspections)).toBe(1);
+  }
+});
