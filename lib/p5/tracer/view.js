@@ -156,16 +156,8 @@ export class TracerView {
     if (this.#record === undefined) this.#record = this.#selected ? inspectPixel(this.scene, this.camera, this.#selected.x, this.#selected.y) : null;
     return this.#record;
   }
-  /**
-   * The record of pixel (x, y): the selected pixel's own `record`, shared with every
-   * listener, or for another pixel (one the pointer is over) one made now.
-   * @param {number} x
-   * @param {number} y
-   */
-  recordAt(x, y) {
-    const s = this.#selected;
-    return s && s.x === x && s.y === y ? this.record : inspectPixel(this.scene, this.camera, x, y);
-  }
+  /** The record of pixel (x, y): the selected one's `record`, shared with every listener; for another (a pixel pointed at), one made now. */
+  recordAt(/** @type {number} */ x, /** @type {number} */ y) { return this.#selected?.x === x && this.#selected?.y === y ? this.record : inspectPixel(this.scene, this.camera, x, y); }
   /** On-screen pixels per traced pixel right now. */
   get scale() { return this.#screenScale(); }
   /** The `<canvas data-tracer>` holding the traced image (and nothing else). */
