@@ -205,6 +205,19 @@ describe('the same bytes, however the frame is traced', () => {
   });
 });
 
+describe('a scene the kernel cannot pack', () => {
+  it('is path traced too, with its materials in the same layout: a subclass with its own hit test, lamp and all', () => {
+    class OwnHit extends Sphere { hit(ray, tMin) { return super.hit(ray, tMin); } }
+    const lamp = new OwnHit([0, 0, -5], 1, { color: [1, 0, 0], emission: [1, 1, 1] });
+    const scene = new Scene().add(lamp).add(new Plane([0, -1, 0], [0, 1, 0], { color: [0.5, 0.5, 0.5] }));
+    const frame = preparePaths(scene, new Camera({ width: 8, height: 8 }), readPathOptions({ samples: 2 }, scene, new Camera({ width: 8, height: 8 })));
+    expect(frame.packed).toBeNull();
+    expect(frame.materials[3]).toBe(1); // the lamp's emission at EMISSION, as packScene would place it
+    const picture = pathTrace(scene, new Camera({ width: 8, height: 8 }), { samples: 2, blocking: true });
+    expect([...picture.subarray((4 * 8 + 4) * 4, (4 * 8 + 4) * 4 + 3)]).toEqual([255, 255, 255]); // the lamp, seen straight
+  });
+});
+
 describe('the story of one path', () => {
   const { scene, camera } = room();
   it('bounce by bounce: point, normal, direction drawn and its density, throughput, light gathered', () => {

@@ -12,6 +12,7 @@ import { packScene } from '../kernel.js';
 import { checkPathWork } from '../budget.js';
 import { PathRandom } from './random.js';
 import { readSky } from './sky.js';
+import { packMaterials } from './materials.js';
 import { tracePath, radiance, shapeGroups, shapeKinds } from './integrator.js';
 import { lightTable } from './lights.js';
 
@@ -51,7 +52,7 @@ export function readPathOptions(options, scene, camera, where = 'pathTrace') {
  * @param {ReturnType<typeof readPathOptions>} options
  */
 export function preparePaths(scene, camera, options) {
-  const packed = packScene(scene), materials = packed.materials; // the kernel's packing: one material layout (lib/shapes/material.js)
+  const packed = packScene(scene), materials = packed?.materials ?? packMaterials(scene.objects); // the kernel's packing, or for a scene that does not pack the same layout (lib/shapes/material.js)
   return {
     scene, camera, objects: scene.objects, materials, packed, groups: shapeGroups(scene.objects, packed), kinds: shapeKinds(scene.objects), random: new PathRandom(),
     lights: lightTable(scene.objects, materials, options.sky, camera.position), ...options,
